@@ -1,0 +1,73 @@
+//! Materials: a color or a checkerboard, and the coefficients of the lecture's
+//! local model and recursion.
+
+use glam::DVec3;
+
+/// Where a material's color comes from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Pattern {
+    /// One color.
+    Solid(DVec3),
+    /// Alternating cubes of side `size`, in object space (squares on a plane).
+    Checker {
+        /// The two colors; `colors[0]` holds the cell at the origin.
+        colors: [DVec3; 2],
+        /// The side of a cell.
+        size: f64,
+    },
+}
+
+impl Pattern {
+    /// The color at `p` (a surface's `pattern_point`).
+    pub fn color_at(&self, p: DVec3) -> DVec3 {
+        match *self {
+            Pattern::Solid(c) => c,
+            Pattern::Checker { colors, size } => {
+                let cell = (p / size).floor();
+                let parity = (cell.x + cell.y + cell.z).rem_euclid(2.0);
+                colors[usize::from(parity != 0.0)]
+            }
+        }
+    }
+}
+
+/// A surface's material. Colors are linear RGB; coefficients are plain factors.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Material {
+    /// Its name in the scene file.
+    pub name: String,
+    /// The surface color.
+    pub pattern: Pattern,
+    /// `k_a`: share of the ambient light reflected.
+    pub ambient: f64,
+    /// `k_d`: Lambertian (diffuse) reflection.
+    pub diffuse: f64,
+    /// `k_s`: Phong highlight strength.
+    pub specular: f64,
+    /// Phong exponent: larger is a smaller, sharper highlight.
+    pub shininess: f64,
+    /// `k_rfl`: weight of the reflected ray.
+    pub reflective: f64,
+    /// `k_rfa`: weight of the refracted ray; also the share of light a shadow ray
+    /// keeps when it passes through this object.
+    pub transparent: f64,
+    /// Refractive index of the object's inside.
+    pub ior: f64,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn checker_alternates_and_handles_negative_cells() {
+        let c = Pattern::Checker {
+            colors: [DVec3::X, DVec3::Y],
+            size: 2.0,
+        };
+        assert_eq!(c.color_at(DVec3::new(0.5, 0.0, 0.5)), DVec3::X);
+        assert_eq!(c.color_at(DVec3::new(2.5, 0.0, 0.5)), DVec3::Y);
+        assert_eq!(c.color_at(DVec3::new(-0.5, 0.0, 0.5)), DVec3::Y);
+        assert_eq!(c.color_at(DVec3::new(-2.5, 0.0, -2.5)), DVec3::X);
+    }
+}

@@ -1,0 +1,125 @@
+//! The full renderer: every pixel, in parallel on all cores.
+//!
+//! Each pixel depends on nothing but the scene, so the image is the same bit for
+//! bit whatever the number of threads or the order rows finish in.
+
+use glam::DVec3;
+use indicatif::ProgressBar;
+use rayon::prelude::*;
+
+use crate::camera::{Camera, stratum_offset};
+use crate::recorder::{NoRecorder, RayCounter, Recorder};
+use crate::scene::Scene;
+use crate::tracer::Tracer;
+
+/// A rendered image in linear RGB, rows top first (image coordinates).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    /// Width in pixels.
+    pub width: u32,
+    /// Height in pixels.
+    pub height: u32,
+    /// `width × height` colors, row by row from the top.
+    pub pixels: Vec<DVec3>,
+}
+
+impl Image {
+    /// The color at image coordinates `(x, y)`.
+    pub fn get(&self, x: u32, y: u32) -> DVec3 {
+        self.pixels[y as usize * self.width as usize + x as usize]
+    }
+}
+
+/// The color of pixel `(x, y)` (image coordinates): the mean of its `n × n`
+/// stratified samples (see [`crate::camera`] for where they fall). The renderer
+/// and a recorded trace both call this, so they agree bit for bit.
+pub fn pixel_color<R: Recorder>(
+    tracer: &Tracer,
+    camera: &Camera,
+    x: u32,
+    y: u32,
+    rec: &mut R,
+) -> DVec3 {
+    let n = tracer.scene().settings.grid();
+    let mut sum = DVec3::ZERO;
+    for j in 0..n {
+        for i in 0..n {
+            let ray = camera.pixel_ray(
+                f64::from(x) + stratum_offset(i, n),
+                f64::from(y) + stratum_offset(j, n),
+            );
+            sum += tracer.trace_primary(ray, rec);
+        }
+    }
+    sum / f64::from(n * n)
+}
+
+/// Renders the scene at its settings' size, reporting finished rows to `progress`.
+/// Fails only if the image's memory cannot be had.
+pub fn render(
+    scene: &Scene,
+    progress: &ProgressBar,
+) -> Result<Image, std::collections::TryReserveError> {
+    render_with::<NoRecorder>(scene, progress).map(|(image, _)| image)
+}
+
+/// Renders and counts every ray cast, by kind.
+pub fn render_counting(
+    scene: &Scene,
+    progress: &ProgressBar,
+) -> Result<(Image, RayCounter), std::collections::TryReserveError> {
+    render_with::<RayCounter>(scene, progress)
+}
+
+/// Renders with a fresh recorder of type `R` per row; the rows' recorders are
+/// merged by `RayCounter::add` when `R` counts.
+fn render_with<R: Recorder + Default + Send + Tally>(
+    scene: &Scene,
+    progress: &ProgressBar,
+) -> Result<(Image, R), std::collections::TryReserveError> {
+    let (width, height) = (scene.settings.width, scene.settings.height);
+    let mut pixels = Vec::new();
+    pixels.try_reserve_exact(width as usize * height as usize)?;
+    pixels.resize(width as usize * height as usize, DVec3::ZERO);
+    let tracer = Tracer::new(scene);
+    let camera = scene.camera();
+    progress.set_length(u64::from(height));
+    let tally = pixels
+        .par_chunks_mut(width as usize)
+        .enumerate()
+        .map(|(y, row)| {
+            let mut rec = R::default();
+            for (x, pixel) in row.iter_mut().enumerate() {
+                *pixel = pixel_color(&tracer, &camera, x as u32, y as u32, &mut rec);
+            }
+            progress.inc(1);
+            rec
+        })
+        .reduce(R::default, R::merge);
+    Ok((
+        Image {
+            width,
+            height,
+            pixels,
+        },
+        tally,
+    ))
+}
+
+/// Recorders whose per-row results can be combined.
+trait Tally {
+    fn merge(self, other: Self) -> Self;
+}
+
+impl Tally for NoRecorder {
+    fn merge(self, _: Self) -> Self {
+        self
+    }
+}
+
+impl Tally for RayCounter {
+    fn merge(mut self, other: Self) -> Self {
+        self.add(&other);
+        self
+    }
+}
