@@ -1,0 +1,77 @@
+//! `cargo bench`: intersection tests and a whole render of the Whitted scene.
+//!
+//! Throughput is in rays (or tests) per second: divan prints it next to the time.
+//! A render's ray count (primary, shadow, reflected, refracted) is deterministic,
+//! so it is counted once with the counting recorder and given to divan.
+
+use divan::Bencher;
+use divan::counter::ItemsCount;
+use glam::DVec3;
+use indicatif::ProgressBar;
+use raytree::plane::Plane;
+use raytree::ray::Ray;
+use raytree::render;
+use raytree::sphere::Sphere;
+
+fn main() {
+    divan::main();
+}
+
+/// Rays from a grid of origins toward the origin: about half hit a unit sphere.
+fn rays() -> Vec<Ray> {
+    (0..1024)
+        .map(|i| {
+            let (x, y) = (
+                f64::from(i % 32) / 16.0 - 1.0,
+                f64::from(i / 32) / 16.0 - 1.0,
+            );
+            Ray::new(
+                DVec3::new(0.0, 0.0, 5.0),
+                DVec3::new(1.5 * x, 1.5 * y, -5.0),
+            )
+        })
+        .collect()
+}
+
+#[divan::bench]
+fn ray_sphere(bencher: Bencher) {
+    let sphere = Sphere {
+        center: DVec3::ZERO,
+        radius: 1.0,
+    };
+    let rays = rays();
+    bencher.counter(ItemsCount::new(rays.len())).bench(|| {
+        for ray in &rays {
+            divan::black_box(sphere.roots(divan::black_box(ray)));
+        }
+    });
+}
+
+#[divan::bench]
+fn ray_plane(bencher: Bencher) {
+    let plane = Plane {
+        point: DVec3::new(0.0, -0.5, 0.0),
+        normal: DVec3::Y,
+    };
+    let rays = rays();
+    bencher.counter(ItemsCount::new(rays.len())).bench(|| {
+        for ray in &rays {
+            divan::black_box(plane.roots(divan::black_box(ray)));
+        }
+    });
+}
+
+/// The Whitted scene at 640×480, 1 sample per pixel, max depth 8, on all cores.
+#[divan::bench(sample_count = 30, sample_size = 1)]
+fn whitted_640x480(bencher: Bencher) {
+    let mut scene = raytree::scene_file::whitted();
+    scene.settings.width = 640;
+    scene.settings.height = 480;
+    scene.settings.spp = 1;
+    scene.settings.max_depth = 8;
+    let hidden = ProgressBar::hidden();
+    let (_, rays) = render::render_counting(&scene, &hidden).unwrap();
+    bencher
+        .counter(ItemsCount::new(rays.total()))
+        .bench(|| render::render(&scene, &hidden).unwrap());
+}

@@ -1,0 +1,333 @@
+//! The `raytree` binary on good and bad input: every bad input ends with exit
+//! code 1, one line on stderr starting `error:`, no panic, and no output file.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn raytree(args: &[&str], dir: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the binary runs")
+}
+
+fn scenes() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
+}
+
+/// A fresh empty folder for one test.
+fn workdir(name: &str) -> PathBuf {
+    let dir = std::env::temp_dir().join(format!("raytree-cli-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
+}
+
+/// Runs `render` on `scene_text` (written to `bad.json`) with extra arguments and
+/// checks the failure contract; returns the error line.
+fn fails(name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
+    let dir = workdir(name);
+    let mut args = vec!["render"];
+    if let Some(text) = scene_text {
+        std::fs::write(dir.join("bad.json"), text).unwrap();
+        args.push("bad.json");
+    }
+    args.extend_from_slice(extra);
+    let out = raytree(&args, &dir);
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{name}: exit code; stderr: {stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{name}: panicked: {stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(
+        lines.len(),
+        1,
+        "{name}: stderr must be one line: {stderr:?}"
+    );
+    assert!(lines[0].starts_with("error: "), "{name}: {stderr}");
+    let left: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .filter(|f| f != "bad.json")
+        .collect();
+    assert!(left.is_empty(), "{name}: files left behind: {left:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+    lines[0].to_owned()
+}
+
+const GOOD_OBJECTS: &str = r#""objects": [{"sphere": {"radius": 1}}]"#;
+
+#[test]
+fn missing_scene_file() {
+    let e = fails("missing", None, &["nowhere.json"]);
+    assert_eq!(e, "error: cannot read nowhere.json: no such file");
+}
+
+#[test]
+fn malformed_json_names_line_and_column() {
+    let e = fails(
+        "malformed",
+        Some("{\n  \"objects\": [\n    {\"sphere\": {\"radius\": 1}\n  ]\n}"),
+        &[],
+    );
+    assert!(e.starts_with("error: bad.json:4:3: "), "{e}");
+}
+
+#[test]
+fn unknown_field_names_its_path_and_the_expected_fields() {
+    let e = fails(
+        "unknown",
+        Some("{\"objects\": [\n  {\"sphere\": {\"radus\": 1}}\n]}"),
+        &[],
+    );
+    assert!(e.starts_with("error: bad.json:2:21: objects[0].sphere.radus: unknown field `radus`, expected `center` or `radius`"), "{e}");
+}
+
+#[test]
+fn trailing_text_after_the_scene() {
+    let e = fails("trailing", Some(&format!("{{{GOOD_OBJECTS}}} x")), &[]);
+    assert!(e.contains("trailing characters"), "{e}");
+}
+
+#[test]
+fn out_of_range_number() {
+    let e = fails(
+        "huge",
+        Some(r#"{"objects": [{"sphere": {"radius": 1e999}}]}"#),
+        &[],
+    );
+    assert!(
+        e.contains("objects[0].sphere.radius") && e.contains("out of range"),
+        "{e}"
+    );
+}
+
+#[test]
+fn each_validation_error_names_its_field() {
+    let cases: &[(&str, &str, &str)] = &[
+        (
+            "negative-radius",
+            r#"{"objects": [{"sphere": {"radius": -1}}]}"#,
+            "objects[0].sphere.radius: must be > 0, got -1",
+        ),
+        (
+            "zero-radius",
+            r#"{"objects": [{"sphere": {"radius": 0}}]}"#,
+            "objects[0].sphere.radius: must be > 0, got 0",
+        ),
+        (
+            "zero-normal",
+            r#"{"objects": [{"plane": {"normal": [0, 0, 0]}}]}"#,
+            "objects[0].plane.normal: must not be zero",
+        ),
+        (
+            "singular",
+            r#"{"objects": [{"sphere": {}, "transform": [{"scale": [1, 0, 1]}]}]}"#,
+            "objects[0].transform: is singular",
+        ),
+        (
+            "zero-axis",
+            r#"{"objects": [{"sphere": {}, "transform": [{"rotate": {"axis": [0, 0, 0], "degrees": 5}}]}]}"#,
+            "objects[0].transform[0].rotate.axis: must not be zero",
+        ),
+        (
+            "ior",
+            r#"{"materials": {"m": {"ior": 0}}, "objects": [{"sphere": {}, "material": "m"}]}"#,
+            "materials.m.ior: a refractive index must be > 0, got 0",
+        ),
+        (
+            "negative-ior",
+            r#"{"materials": {"m": {"ior": -1.5}}, "objects": [{"sphere": {}, "material": "m"}]}"#,
+            "materials.m.ior: a refractive index must be > 0",
+        ),
+        (
+            "zero-width",
+            r#"{"render": {"width": 0}}"#,
+            "render.width: must be 1 to 32768, got 0",
+        ),
+        (
+            "too-large",
+            r#"{"render": {"width": 30000, "height": 30000}}"#,
+            "render.width: 30000×30000 is 900000000 pixels",
+        ),
+        (
+            "spp",
+            r#"{"render": {"spp": 3}}"#,
+            "render.spp: must be a square number",
+        ),
+        (
+            "no-shape",
+            r#"{"objects": [{"name": "x"}]}"#,
+            "objects[0]: give exactly one shape",
+        ),
+        (
+            "two-shapes",
+            r#"{"objects": [{"sphere": {}, "plane": {}}]}"#,
+            "objects[0]: give exactly one shape",
+        ),
+        (
+            "unknown-material",
+            r#"{"materials": {"glass": {}}, "objects": [{"sphere": {}, "material": "glas"}]}"#,
+            "objects[0].material: no material named 'glas' (defined: glass)",
+        ),
+        (
+            "color-and-checker",
+            r#"{"materials": {"m": {"color": [1, 1, 1], "checker": {"colors": [[0,0,0],[1,1,1]]}}}}"#,
+            "materials.m: give color or checker, not both",
+        ),
+        (
+            "negative-color",
+            r#"{"background": [0, -1, 0]}"#,
+            "background: a color's components must be finite and ≥ 0",
+        ),
+        (
+            "reflective",
+            r#"{"materials": {"m": {"reflective": 1.5}}}"#,
+            "materials.m.reflective: must be from 0 to 1, got 1.5",
+        ),
+        (
+            "checker-size",
+            r#"{"materials": {"m": {"checker": {"colors": [[0,0,0],[1,1,1]], "size": 0}}}}"#,
+            "materials.m.checker.size: must be > 0",
+        ),
+        (
+            "eye-is-target",
+            r#"{"camera": {"eye": [1, 2, 3], "look_at": [1, 2, 3]}}"#,
+            "camera.look_at: must differ from camera.eye",
+        ),
+        (
+            "fov",
+            r#"{"camera": {"fov": 180}}"#,
+            "camera.fov: must be between 0 and 180 degrees",
+        ),
+        (
+            "mixed-camera",
+            r#"{"camera": {"fov": 40, "u": [1, 0, 0]}}"#,
+            "camera: give either look_at/up/fov or u/v/n",
+        ),
+        (
+            "skewed-frame",
+            r#"{"camera": {"u": [1, 0, 0], "v": [1, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 1}}"#,
+            "camera: u, v and n must be mutually perpendicular",
+        ),
+    ];
+    for (name, text, expected) in cases {
+        let e = fails(name, Some(text), &[]);
+        assert!(
+            e.starts_with(&format!("error: bad.json: {expected}")),
+            "{name}: {e}"
+        );
+    }
+}
+
+#[test]
+fn bad_command_line_settings() {
+    let scene = scenes().join("whitted.json");
+    let scene = scene.to_str().unwrap();
+    assert_eq!(
+        fails("cli-spp", None, &[scene, "--spp", "5"]),
+        "error: --spp: must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got 5"
+    );
+    assert!(
+        fails("cli-size", None, &[scene, "--width", "0"])
+            .starts_with("error: --width: must be 1 to 32768")
+    );
+    assert!(
+        fails("cli-cutoff", None, &[scene, "--cutoff", "NaN"])
+            .starts_with("error: --cutoff: must be a number from 0")
+    );
+    assert!(
+        fails("cli-depth", None, &[scene, "--max-depth", "0"])
+            .starts_with("error: --max-depth: must be 1 to 1000")
+    );
+    assert_eq!(
+        fails("cli-threads", None, &[scene, "--threads", "0"]),
+        "error: --threads: must be at least 1"
+    );
+}
+
+#[test]
+fn unwritable_or_unsupported_output() {
+    let e = fails("unwritable", None, &["-o", "no/such/folder/out.png"]);
+    assert_eq!(
+        e,
+        "error: cannot write no/such/folder/out.png: No such file or directory"
+    );
+    let e = fails("jpeg", None, &["-o", "out.jpg"]);
+    assert_eq!(
+        e,
+        "error: cannot write out.jpg: the output must end in .png or .ppm"
+    );
+}
+
+#[test]
+fn usage_errors_exit_2_and_help_explains_every_flag() {
+    let dir = workdir("usage");
+    let out = raytree(&["render", "--bogus"], &dir);
+    assert_eq!(out.status.code(), Some(2));
+    let out = raytree(&["render", "--help"], &dir);
+    assert_eq!(out.status.code(), Some(0));
+    let help = String::from_utf8(out.stdout).unwrap();
+    for flag in [
+        "--output",
+        "--width",
+        "--height",
+        "--spp",
+        "--max-depth",
+        "--cutoff",
+        "--threads",
+        "--quiet",
+    ] {
+        assert!(help.contains(flag), "--help lacks {flag}:\n{help}");
+    }
+}
+
+#[test]
+fn renders_the_builtin_scene_and_a_shipped_one() {
+    let dir = workdir("good");
+    let out = raytree(&["render", "--width", "64", "--height", "48"], &dir);
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = std::fs::read(dir.join("whitted.png")).unwrap();
+    assert_eq!(&png[..8], b"\x89PNG\r\n\x1a\n");
+    let decoded = image::load_from_memory(&png).unwrap();
+    assert_eq!((decoded.width(), decoded.height()), (64, 48));
+
+    let scene = scenes().join("nested.json");
+    let out = raytree(
+        &[
+            "render",
+            scene.to_str().unwrap(),
+            "--width",
+            "32",
+            "--height",
+            "24",
+            "--spp",
+            "4",
+            "-o",
+            "n.ppm",
+            "--quiet",
+        ],
+        &dir,
+    );
+    assert!(
+        out.status.success() && out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let ppm = std::fs::read(dir.join("n.ppm")).unwrap();
+    assert!(ppm.starts_with(b"P6\n32 24\n255\n") && ppm.len() == 13 + 32 * 24 * 3);
+    let names: Vec<_> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(names.len(), 2, "no temporary files left: {names:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -1,0 +1,72 @@
+//! Helpers shared by the integration tests.
+#![allow(dead_code)]
+
+use glam::DVec3;
+use raytree::recorder::{HitInfo, RayKind, RayStart, Recorder, ShadowInfo};
+use raytree::scene::Scene;
+
+/// Parses a scene written inline in a test.
+pub fn scene(json: &str) -> Scene {
+    raytree::scene_file::parse(json, "test.json").unwrap_or_else(|e| panic!("{e}"))
+}
+
+/// The shipped scenes, by file name.
+pub fn shipped() -> Vec<(&'static str, Scene)> {
+    ["whitted.json", "nested.json", "ellipsoids.json"]
+        .into_iter()
+        .map(|name| {
+            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+                .join("scenes")
+                .join(name);
+            (
+                name,
+                raytree::scene_file::load(&path).unwrap_or_else(|e| panic!("{e}")),
+            )
+        })
+        .collect()
+}
+
+/// Keeps every event of interest, flat, in the order the tracer sent them.
+#[derive(Default)]
+pub struct Log {
+    pub rays: Vec<RayStart>,
+    pub hits: Vec<HitInfo>,
+    pub shadows: Vec<ShadowInfo>,
+    pub branches: Vec<raytree::recorder::BranchInfo>,
+    pub colors: Vec<raytree::recorder::ColorSum>,
+}
+
+impl Recorder for Log {
+    const ENABLED: bool = true;
+    fn ray_started(&mut self, start: &RayStart) {
+        self.rays.push(*start);
+    }
+    fn hit(&mut self, hit: &HitInfo) {
+        self.hits.push(*hit);
+    }
+    fn shadow_ray(&mut self, shadow: &ShadowInfo) {
+        self.shadows.push(*shadow);
+    }
+    fn branch(&mut self, branch: &raytree::recorder::BranchInfo) {
+        self.branches.push(*branch);
+    }
+    fn ray_finished(&mut self, sum: &raytree::recorder::ColorSum) {
+        self.colors.push(*sum);
+    }
+}
+
+impl Log {
+    /// The rays of one kind.
+    pub fn of_kind(&self, kind: RayKind) -> Vec<RayStart> {
+        self.rays
+            .iter()
+            .filter(|r| r.kind == kind)
+            .copied()
+            .collect()
+    }
+}
+
+/// Whether two colors agree to `tol` in every channel.
+pub fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
+    (a - b).abs().max_element() <= tol
+}
