@@ -1,17 +1,21 @@
 //! The `raytree` command line.
 
+use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
-use clap::{Args, Parser, Subcommand};
+use clap::{ArgGroup, Args, Parser, Subcommand};
+use glam::DVec3;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
 use raytree::image_file::{self, PendingFile};
+use raytree::ray::Ray;
 use raytree::render;
 use raytree::scene::Scene;
 use raytree::scene_file;
+use raytree::trace::{SceneRef, Trace};
 
 /// A Whitted-style ray tracer that shows its work.
 #[derive(Parser)]
@@ -25,6 +29,8 @@ struct Cli {
 enum Command {
     /// Render a scene to a PNG or PPM image on all cores.
     Render(RenderArgs),
+    /// Trace one pixel (or one ray) and print every ray it spawns, with every number.
+    Trace(TraceArgs),
 }
 
 /// A scene and the settings that override its `render` block.
@@ -50,11 +56,22 @@ struct SceneArgs {
 }
 
 impl SceneArgs {
-    /// The scene with the command line's settings applied and checked.
-    fn load(&self) -> Result<Scene> {
-        let mut scene = match &self.scene {
-            Some(path) => scene_file::load(path)?,
-            None => scene_file::whitted(),
+    /// The scene with the command line's settings applied and checked, and
+    /// what names it in a trace.
+    fn load(&self) -> Result<(Scene, SceneRef)> {
+        let (mut scene, source) = match &self.scene {
+            Some(path) => {
+                let text = scene_file::read(path)?;
+                let name = path.display().to_string();
+                (
+                    scene_file::parse(&text, &name)?,
+                    SceneRef::new(&name, &text),
+                )
+            }
+            None => (
+                scene_file::whitted(),
+                SceneRef::new("whitted.json (built in)", scene_file::WHITTED),
+            ),
         };
         let s = &mut scene.settings;
         s.width = self.width.unwrap_or(s.width);
@@ -65,7 +82,7 @@ impl SceneArgs {
         if let Err((field, message)) = s.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }
-        Ok(scene)
+        Ok((scene, source))
     }
 
     /// The scene's file stem, or "whitted" for the built-in scene.
@@ -92,10 +109,77 @@ struct RenderArgs {
     quiet: bool,
 }
 
+#[derive(Args)]
+#[command(group(ArgGroup::new("target").required(true).args(["pixel", "ray"])))]
+struct TraceArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pixel: Option<(u32, u32)>,
+    /// Trace one ray instead of a pixel: its origin and direction in world coordinates.
+    #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
+    ray: Option<Ray>,
+    /// With several samples per pixel, keep only sample K (0-based, row by row from the top-left).
+    #[arg(long, value_name = "K", conflicts_with = "ray")]
+    sample: Option<u32>,
+    /// Print the JSON trace document (book/src/trace-format.md) instead of the text tree.
+    #[arg(long)]
+    json: bool,
+    /// Number the steps, in the order the algorithm runs them.
+    #[arg(long, conflicts_with = "json")]
+    steps: bool,
+    /// Write to this file (atomically) instead of standard output; a .json name implies --json.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+}
+
+fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != N {
+        return Err(format!(
+            "expected {N} comma-separated numbers, got {}",
+            parts.len()
+        ));
+    }
+    let mut out = [0.0; N];
+    for (o, p) in out.iter_mut().zip(parts) {
+        *o = p
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("'{p}' is not a finite number"))?;
+    }
+    Ok(out)
+}
+
+fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s.split_once(',').ok_or("expected X,Y, e.g. 320,240")?;
+    let coord = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{v}' is not a pixel coordinate (a whole number ≥ 0)"))
+    };
+    Ok((coord(x)?, coord(y)?))
+}
+
+fn parse_ray(s: &str) -> Result<Ray, String> {
+    let (o, d) = s
+        .split_once(':')
+        .ok_or("expected OX,OY,OZ:DX,DY,DZ, e.g. 0,1,5:0,0,-1")?;
+    let [ox, oy, oz] = parse_numbers::<3>(o)?;
+    let [dx, dy, dz] = parse_numbers::<3>(d)?;
+    if dx == 0.0 && dy == 0.0 && dz == 0.0 {
+        return Err("the direction must not be zero".to_owned());
+    }
+    Ok(Ray::new(DVec3::new(ox, oy, oz), DVec3::new(dx, dy, dz)))
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
         Command::Render(args) => run_render(&args),
+        Command::Trace(args) => run_trace(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -106,8 +190,46 @@ fn main() -> ExitCode {
     }
 }
 
+fn run_trace(args: &TraceArgs) -> Result<()> {
+    let (scene, source) = args.scene.load()?;
+    let json = args.json
+        || args.output.as_ref().is_some_and(|p| {
+            p.extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+        });
+    let pending = args
+        .output
+        .as_deref()
+        .map(PendingFile::create)
+        .transpose()?;
+    let trace = match (args.pixel, args.ray) {
+        (Some((x, y)), _) => Trace::pixel(&scene, source, x, y, args.sample)?,
+        (_, Some(ray)) => Trace::ray(&scene, source, ray)?,
+        _ => unreachable!("clap requires --pixel or --ray"),
+    };
+    let text = if json {
+        trace.to_json()
+    } else {
+        raytree::trace_text::render(&trace, args.steps)
+    };
+    match pending {
+        Some(file) => file.commit(text.as_bytes()),
+        None => write_stdout(text.as_bytes()),
+    }
+}
+
+/// Writes to standard output; a closed pipe (`| head`) is not an error.
+fn write_stdout(bytes: &[u8]) -> Result<()> {
+    match std::io::stdout().lock().write_all(bytes) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
+            Err(e).context("cannot write to standard output")
+        }
+        _ => Ok(()),
+    }
+}
+
 fn run_render(args: &RenderArgs) -> Result<()> {
-    let scene = args.scene.load()?;
+    let (scene, _) = args.scene.load()?;
     let output = args
         .output
         .clone()

@@ -8,6 +8,20 @@
 use glam::DVec3;
 
 use crate::hit::Roots;
+
+/// Calls a recorder hook. Built with `RUSTFLAGS="--cfg raytree_no_hooks"`, every
+/// hook disappears from the source, which gives the baseline the benchmark
+/// compares the no-op recorder against (see the README's performance section).
+#[macro_export]
+#[doc(hidden)]
+macro_rules! record {
+    ($($call:tt)*) => {
+        #[cfg(not(raytree_no_hooks))]
+        {
+            $($call)*;
+        }
+    };
+}
 use crate::ray::Ray;
 
 /// Why a ray was cast.
@@ -129,8 +143,9 @@ pub enum Branch {
 pub struct BranchInfo {
     /// Reflected or refracted.
     pub kind: RayKind,
-    /// The coefficient its color is multiplied by (`k_rfl`, or `k_rfa`; after total
-    /// internal reflection, `k_rfl + k_rfa` for the reflected and 0 for the refracted).
+    /// The coefficient its color is multiplied by: `k_rfl` or `k_rfa`. After total
+    /// internal reflection the reflected branch has `k_rfl + k_rfa`, and the
+    /// refracted branch records the `k_rfa` it handed over (its color counts 0).
     pub coefficient: f64,
     /// What happened.
     pub branch: Branch,

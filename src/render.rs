@@ -42,16 +42,23 @@ pub fn pixel_color<R: Recorder>(
 ) -> DVec3 {
     let n = tracer.scene().settings.grid();
     let mut sum = DVec3::ZERO;
-    for j in 0..n {
-        for i in 0..n {
-            let ray = camera.pixel_ray(
-                f64::from(x) + stratum_offset(i, n),
-                f64::from(y) + stratum_offset(j, n),
-            );
-            sum += tracer.trace_primary(ray, rec);
-        }
+    for (sx, sy) in sample_points(x, y, n) {
+        sum += tracer.trace_primary(camera.pixel_ray(sx, sy), rec);
     }
     sum / f64::from(n * n)
+}
+
+/// Where pixel `(x, y)`'s `n × n` samples fall, in image coordinates, in the
+/// order they are traced (row by row from the top, left to right).
+pub fn sample_points(x: u32, y: u32, n: u32) -> impl Iterator<Item = (f64, f64)> {
+    (0..n).flat_map(move |j| {
+        (0..n).map(move |i| {
+            (
+                f64::from(x) + stratum_offset(i, n),
+                f64::from(y) + stratum_offset(j, n),
+            )
+        })
+    })
 }
 
 /// Renders the scene at its settings' size, reporting finished rows to `progress`.

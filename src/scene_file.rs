@@ -62,16 +62,20 @@ pub enum SceneError {
 
 /// Reads and validates the scene file at `path`.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    let file = path.display().to_string();
-    let text = std::fs::read_to_string(path).map_err(|e| SceneError::Read {
+    parse(&read(path)?, &path.display().to_string())
+}
+
+/// Reads a scene file's text.
+pub fn read(path: &Path) -> Result<String, SceneError> {
+    std::fs::read_to_string(path).map_err(|e| SceneError::Read {
         reason: match e.kind() {
             std::io::ErrorKind::NotFound => "no such file".to_owned(),
             std::io::ErrorKind::InvalidData => "not UTF-8 text".to_owned(),
+            std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
             _ => e.to_string(),
         },
-        file: file.clone(),
-    })?;
-    parse(&text, &file)
+        file: path.display().to_string(),
+    })
 }
 
 /// The built-in Whitted scene.

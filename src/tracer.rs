@@ -20,6 +20,8 @@
 //! - **Recursion** stops at `max_depth` or when a branch's weight falls below the
 //!   cutoff (Hall & Greenberg, "A Testbed for Realistic Image Synthesis", 1983).
 
+#![cfg_attr(raytree_no_hooks, allow(unused_variables, unused_imports))]
+
 use glam::DVec3;
 
 use crate::float::offset_ray_origin;
@@ -76,20 +78,20 @@ impl<'s> Tracer<'s> {
 
     /// The lecture's `raytrace(ray)`.
     pub fn trace<R: Recorder>(&self, start: &RayStart, media: &Media, rec: &mut R) -> DVec3 {
-        rec.ray_started(start);
+        crate::record!(rec.ray_started(start));
         let Some((object, t)) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec) else {
-            rec.missed();
+            crate::record!(rec.missed());
             let sum = ColorSum {
                 local: self.scene.background,
                 color: self.scene.background,
                 ..ColorSum::default()
             };
-            rec.ray_finished(&sum);
+            crate::record!(rec.ray_finished(&sum));
             return sum.color;
         };
         let surface = self.scene.objects[object].surface(&start.ray, t);
         let hit = self.hit_info(&start.ray, object, t, &surface, media);
-        rec.hit(&hit);
+        crate::record!(rec.hit(&hit));
         let material = self.scene.material_of(object);
         let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
 
@@ -120,11 +122,11 @@ impl<'s> Tracer<'s> {
             rec,
         );
         let refracted = if total_internal {
-            rec.branch(&BranchInfo {
+            crate::record!(rec.branch(&BranchInfo {
                 kind: RayKind::Refracted,
-                coefficient: 0.0,
+                coefficient: material.transparent,
                 branch: Branch::TotalInternalReflection,
-            });
+            }));
             DVec3::ZERO
         } else {
             let inside = if hit.entering {
@@ -143,7 +145,7 @@ impl<'s> Tracer<'s> {
             )
         };
         let color = local + k_rfl * reflected + k_rfa * refracted;
-        rec.ray_finished(&ColorSum {
+        crate::record!(rec.ray_finished(&ColorSum {
             ambient,
             local,
             k_rfl,
@@ -151,7 +153,7 @@ impl<'s> Tracer<'s> {
             k_rfa,
             refracted,
             color,
-        });
+        }));
         color
     }
 
@@ -169,7 +171,7 @@ impl<'s> Tracer<'s> {
         for (i, object) in self.scene.objects.iter().enumerate() {
             let roots = object.roots(ray);
             if R::ENABLED {
-                rec.object_tested(i, &roots);
+                crate::record!(rec.object_tested(i, &roots));
             }
             if let Some(t) = roots.first_in(t_min, t_closest) {
                 closest = Some(i);
@@ -229,7 +231,7 @@ impl<'s> Tracer<'s> {
         let mut local = ambient;
         for (i, light) in self.scene.lights.iter().enumerate() {
             let shadow = self.shadow_ray(i, hit, surface);
-            rec.shadow_ray(&shadow);
+            crate::record!(rec.shadow_ray(&shadow));
             let terms = match shadow.outcome {
                 ShadowOutcome::Reaches { transmitted } => {
                     let to_light = (light.position - surface.point).normalize();
@@ -245,11 +247,11 @@ impl<'s> Tracer<'s> {
                 _ => phong::Direct::default(),
             };
             if R::ENABLED {
-                rec.light_term(&LightTerm {
+                crate::record!(rec.light_term(&LightTerm {
                     light: i,
                     diffuse: terms.diffuse,
                     specular: terms.specular,
-                });
+                }));
             }
             local += terms.diffuse + terms.specular;
         }
@@ -326,11 +328,11 @@ impl<'s> Tracer<'s> {
         } else {
             Branch::Traced
         };
-        rec.branch(&BranchInfo {
+        crate::record!(rec.branch(&BranchInfo {
             kind,
             coefficient: k,
             branch,
-        });
+        }));
         if branch != Branch::Traced {
             return DVec3::ZERO;
         }

@@ -47,30 +47,3 @@ fn default_cutoff_changes_no_pixel_by_more_than_one_level() {
         "the cutoff should at least halve the rays over the shipped scenes: {all_adaptive} vs {all_fixed}"
     );
 }
-
-#[test]
-fn default_depth_and_cutoff_stay_within_one_level_of_depth_32() {
-    for (name, mut scene) in common::shipped() {
-        scene.settings.width = 320;
-        scene.settings.height = 240;
-        let defaults = RenderSettings::default();
-        scene.settings.max_depth = defaults.max_depth;
-        scene.settings.cutoff = defaults.cutoff;
-        let (default, default_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
-        scene.settings.max_depth = 32;
-        scene.settings.cutoff = 0.0;
-        let (deep, deep_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
-        let worst = to_rgb8(&deep)
-            .iter()
-            .zip(to_rgb8(&default))
-            .map(|(&a, b)| a.abs_diff(b))
-            .max()
-            .unwrap();
-        println!(
-            "{name}: defaults trace {} rays, depth 32 without cutoff {}; worst 8-bit difference {worst}",
-            default_rays.total(),
-            deep_rays.total()
-        );
-        assert!(worst <= 1, "{name}: a pixel moved by {worst} levels");
-    }
-}

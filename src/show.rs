@@ -1,0 +1,45 @@
+//! How numbers are written for a learner: short enough to read, precise enough
+//! to follow the arithmetic, and readable at any scene scale. The JSON trace
+//! keeps every digit; the text views use these.
+
+use glam::DVec3;
+
+/// Four significant digits; scientific notation outside 0.001–99999.
+pub fn num(x: f64) -> String {
+    let a = x.abs();
+    if x == 0.0 {
+        "0".to_owned()
+    } else if !(1e-3..1e5).contains(&a) {
+        format!("{x:.3e}")
+    } else {
+        let decimals = (3 - a.log10().floor() as i32).clamp(0, 6) as usize;
+        let s = format!("{x:.decimals$}");
+        if s.contains('.') {
+            s.trim_end_matches('0').trim_end_matches('.').to_owned()
+        } else {
+            s
+        }
+    }
+}
+
+/// A vector or color as `(x, y, z)`.
+pub fn vec3(v: DVec3) -> String {
+    format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn numbers_keep_four_significant_digits() {
+        assert_eq!(num(3.11849), "3.118");
+        assert_eq!(num(0.5), "0.5");
+        assert_eq!(num(12.0), "12");
+        assert_eq!(num(-0.012345), "-0.01235");
+        assert_eq!(num(1234.567), "1235");
+        assert_eq!(num(2.5e-7), "2.500e-7");
+        assert_eq!(num(0.0), "0");
+        assert_eq!(vec3(DVec3::new(1.0, 0.25, -2.0)), "(1, 0.25, -2)");
+    }
+}
