@@ -118,7 +118,7 @@ pub struct ShadowRay {
 
 /// What a shadow ray found.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "outcome", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum Outcome {
     /// The light is behind the surface: no ray was cast.
     FacesAway,

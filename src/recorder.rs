@@ -78,8 +78,7 @@ pub struct HitInfo {
 }
 
 /// What a shadow ray found.
-#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
-#[serde(tag = "outcome", rename_all = "snake_case")]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub enum ShadowOutcome {
     /// The light is behind the surface as seen from the viewer: no ray is cast.
     FacesAway,

@@ -1,0 +1,386 @@
+//! The recorded ray tree: its arithmetic adds up, it agrees with the renderer bit
+//! for bit, its JSON reads back, every field is documented, and its steps follow
+//! the algorithm's order.
+
+mod common;
+
+use std::collections::BTreeSet;
+
+use glam::DVec3;
+use indicatif::ProgressBar;
+use raytree::ray::Ray;
+use raytree::ray_tree::RayTree;
+use raytree::recorder::Branch;
+use raytree::render::render;
+use raytree::scene::Scene;
+use raytree::steps::StepKind;
+use raytree::trace::{SceneRef, Trace};
+
+fn source(name: &str) -> SceneRef {
+    SceneRef::new(&format!("scenes/{name}"), "")
+}
+
+/// Traces of a coarse grid of pixels of every shipped scene at 160×120.
+fn grid_traces() -> Vec<(String, Scene, Trace)> {
+    let mut out = Vec::new();
+    for (name, mut scene) in common::shipped() {
+        scene.settings.width = 160;
+        scene.settings.height = 120;
+        for y in (3..120).step_by(9) {
+            for x in (5..160).step_by(11) {
+                let trace = Trace::pixel(&scene, source(name), x, y, None).unwrap();
+                out.push((format!("{name} pixel {x},{y}"), scene.clone(), trace));
+            }
+        }
+    }
+    out
+}
+
+/// Tolerance for the sum check: the recorded parts are the very values the
+/// tracer added, so the sums agree to a few ULPs of colors near 1.
+const SUM_TOL: f64 = 1e-12;
+
+fn check_sums(label: &str, scene: &Scene, tree: &RayTree) {
+    for (i, node) in tree.nodes.iter().enumerate() {
+        let s = &node.sum;
+        let at = format!("{label}, node {i}");
+        assert!(
+            common::close(
+                s.color,
+                s.local + s.k_rfl * s.reflected + s.k_rfa * s.refracted,
+                SUM_TOL
+            ),
+            "{at}: color ≠ local + k_rfl·reflected + k_rfa·refracted"
+        );
+        match (&node.hit, &node.local) {
+            (None, None) => assert!(
+                s.color == scene.background && s.k_rfl == 0.0 && s.k_rfa == 0.0,
+                "{at}: a miss returns the background"
+            ),
+            (Some(_), Some(local)) => {
+                let lights: DVec3 = local.lights.iter().map(|l| l.diffuse + l.specular).sum();
+                assert!(
+                    common::close(local.total, local.ambient + lights, SUM_TOL),
+                    "{at}: local ≠ ambient + Σ(diffuse + specular)"
+                );
+                assert_eq!(local.total, s.local, "{at}");
+                assert_eq!(
+                    (local.lights.len(), node.shadow_rays.len()),
+                    (scene.lights.len(), scene.lights.len()),
+                    "{at}: one term and one shadow ray per light"
+                );
+            }
+            _ => panic!("{at}: a hit has local terms, a miss none"),
+        }
+        for (branch, k, color) in [
+            (&node.reflected, s.k_rfl, s.reflected),
+            (&node.refracted, s.k_rfa, s.refracted),
+        ] {
+            let Some(branch) = branch else { continue };
+            match branch.node {
+                Some(c) => {
+                    let child = &tree.nodes[c];
+                    assert_eq!(branch.outcome, Branch::Traced, "{at}");
+                    assert_eq!(
+                        child.color(),
+                        color,
+                        "{at}: the child's color is what the parent added"
+                    );
+                    assert_eq!(
+                        (child.parent, child.depth),
+                        (Some(i), node.depth + 1),
+                        "{at}"
+                    );
+                    assert_eq!(
+                        child.weight,
+                        node.weight * k,
+                        "{at}: weight is the product of coefficients"
+                    );
+                }
+                None => assert_eq!(color, DVec3::ZERO, "{at}: an untraced branch adds nothing"),
+            }
+        }
+    }
+}
+
+#[test]
+fn every_color_is_the_sum_of_its_recorded_parts() {
+    let traces = grid_traces();
+    let mut nodes = 0;
+    let mut outcomes = BTreeSet::new();
+    for (label, scene, trace) in &traces {
+        for sample in &trace.samples {
+            check_sums(label, scene, &sample.tree);
+            nodes += sample.tree.nodes.len();
+            for n in &sample.tree.nodes {
+                outcomes.extend(
+                    [&n.reflected, &n.refracted]
+                        .into_iter()
+                        .flatten()
+                        .map(|b| format!("{:?}", b.outcome)),
+                );
+            }
+        }
+    }
+    println!(
+        "checked {nodes} nodes in {} trees; branch outcomes seen: {outcomes:?}",
+        traces.len()
+    );
+    for expected in [
+        "Traced",
+        "NoCoefficient",
+        "WeightCutoff",
+        "TotalInternalReflection",
+    ] {
+        assert!(
+            outcomes.contains(expected),
+            "the trees should include a {expected} branch"
+        );
+    }
+}
+
+#[test]
+fn traced_color_equals_rendered_color_bit_for_bit() {
+    for (name, mut scene) in common::shipped() {
+        for (width, height, spp) in [(64, 48, 1), (24, 18, 4)] {
+            scene.settings.width = width;
+            scene.settings.height = height;
+            scene.settings.spp = spp;
+            let image = render(&scene, &ProgressBar::hidden()).unwrap();
+            for y in 0..height {
+                for x in 0..width {
+                    let trace = Trace::pixel(&scene, source(name), x, y, None).unwrap();
+                    assert_eq!(
+                        trace.color,
+                        image.get(x, y),
+                        "{name} {width}×{height} spp {spp}: pixel {x},{y}"
+                    );
+                    assert_eq!(trace.samples.len(), spp as usize);
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn json_reads_back_exactly() {
+    let scene = raytree::scene_file::whitted();
+    let pixel = Trace::pixel(&scene, source("whitted.json"), 416, 209, None).unwrap();
+    let ray = Trace::ray(
+        &scene,
+        source("whitted.json"),
+        Ray::new(DVec3::new(0.0, 1.6, 7.0), DVec3::new(0.1, -0.1, -1.0)),
+    )
+    .unwrap();
+    for trace in [pixel, ray] {
+        // Compared as values so a failure names the field rather than printing two trees.
+        let back: Trace = serde_json::from_str(&trace.to_json()).unwrap();
+        assert!(
+            back == trace,
+            "pretty JSON changed a value: {:?}",
+            first_difference(&back, &trace)
+        );
+        let compact: Trace = serde_json::from_str(&serde_json::to_string(&trace).unwrap()).unwrap();
+        assert!(
+            compact == trace,
+            "compact JSON changed a value: {:?}",
+            first_difference(&compact, &trace)
+        );
+    }
+}
+
+/// The path and values of the first field where two traces differ.
+fn first_difference(a: &Trace, b: &Trace) -> Option<String> {
+    fn walk(a: &serde_json::Value, b: &serde_json::Value, path: String) -> Option<String> {
+        use serde_json::Value::{Array, Object};
+        match (a, b) {
+            (Object(x), Object(y)) => x
+                .iter()
+                .find_map(|(k, v)| walk(v, &y[k], format!("{path}.{k}"))),
+            (Array(x), Array(y)) => x
+                .iter()
+                .zip(y)
+                .enumerate()
+                .find_map(|(i, (v, w))| walk(v, w, format!("{path}[{i}]"))),
+            _ => (a != b).then(|| format!("{path}: {a} vs {b}")),
+        }
+    }
+    walk(
+        &serde_json::to_value(a).unwrap(),
+        &serde_json::to_value(b).unwrap(),
+        String::new(),
+    )
+}
+
+#[test]
+fn reading_rejects_unknown_fields() {
+    let scene = raytree::scene_file::whitted();
+    let trace = Trace::pixel(&scene, source("whitted.json"), 100, 100, None).unwrap();
+    let text = trace
+        .to_json()
+        .replacen("\"version\": 1,", "\"version\": 1, \"extra\": 0,", 1);
+    let err = serde_json::from_str::<Trace>(&text)
+        .unwrap_err()
+        .to_string();
+    assert!(err.contains("unknown field `extra`"), "{err}");
+}
+
+/// Every key and every tag value a trace can hold is documented in the book.
+#[test]
+fn every_field_is_documented() {
+    let doc = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/book/src/trace-format.md"
+    ))
+    .unwrap();
+    let scene = raytree::scene_file::whitted();
+    let src = source("whitted.json");
+    let mut traces: Vec<Trace> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
+        .iter()
+        .map(|&(x, y)| Trace::pixel(&scene, src.clone(), x, y, None).unwrap())
+        .collect();
+    traces.push(
+        Trace::ray(
+            &scene,
+            src.clone(),
+            Ray::new(DVec3::new(0.0, 1.6, 7.0), DVec3::new(0.1, -0.1, -1.0)),
+        )
+        .unwrap(),
+    );
+    let mut shallow = scene.clone();
+    shallow.settings.max_depth = 2;
+    traces.push(Trace::pixel(&shallow, src, 416, 209, None).unwrap());
+    let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
+    for t in &traces {
+        collect(&serde_json::to_value(t).unwrap(), &mut keys, &mut tags);
+    }
+    let missing: Vec<_> = keys
+        .iter()
+        .filter(|k| !doc.contains(&format!("`{k}`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "fields missing from book/src/trace-format.md: {missing:?}"
+    );
+    let missing: Vec<_> = tags
+        .iter()
+        .filter(|v| !doc.contains(&format!("`\"{v}\"`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "values missing from book/src/trace-format.md: {missing:?}"
+    );
+    for tag in [
+        "faces_away",
+        "max_depth",
+        "total_internal_reflection",
+        "weight_cutoff",
+    ] {
+        assert!(tags.contains(tag), "the sample traces should show {tag}");
+    }
+}
+
+/// Collects object keys, and the string values of the enum-like fields.
+fn collect(v: &serde_json::Value, keys: &mut BTreeSet<String>, tags: &mut BTreeSet<String>) {
+    match v {
+        serde_json::Value::Object(map) => {
+            for (k, v) in map {
+                keys.insert(k.clone());
+                if let (Some(s), true) = (v.as_str(), ["kind", "outcome"].contains(&k.as_str())) {
+                    tags.insert(s.to_owned());
+                }
+                collect(v, keys, tags);
+            }
+        }
+        serde_json::Value::Array(items) => items.iter().for_each(|i| collect(i, keys, tags)),
+        _ => {}
+    }
+}
+
+#[test]
+fn steps_follow_the_algorithm() {
+    for (label, _, trace) in grid_traces().iter().step_by(7) {
+        let tree = &trace.samples[0].tree;
+        let steps = trace.steps(0);
+        // Rays are spawned in the order the nodes were recorded.
+        let spawned: Vec<usize> = steps
+            .iter()
+            .filter(|s| s.kind == StepKind::Spawn)
+            .map(|s| s.node)
+            .collect();
+        assert_eq!(
+            spawned,
+            (0..tree.nodes.len()).collect::<Vec<_>>(),
+            "{label}"
+        );
+        // Each ray's steps run spawn → tests → hit or miss → shadows → local → … → return.
+        for (i, node) in tree.nodes.iter().enumerate() {
+            let own: Vec<StepKind> = steps
+                .iter()
+                .filter(|s| s.node == i)
+                .map(|s| s.kind)
+                .collect();
+            let tests = node.tests.len();
+            assert_eq!(own[0], StepKind::Spawn, "{label}");
+            assert!(
+                own[1..=tests].iter().all(|&k| k == StepKind::Test),
+                "{label}: node {i}: {own:?}"
+            );
+            assert_eq!(*own.last().unwrap(), StepKind::Return, "{label}");
+            if node.hit.is_some() {
+                let after = &own[tests + 1..];
+                let shadows = node.shadow_rays.len();
+                assert_eq!(after[0], StepKind::Hit, "{label}");
+                assert!(
+                    after[1..=shadows].iter().all(|&k| k == StepKind::Shadow),
+                    "{label}"
+                );
+                assert_eq!(
+                    &after[shadows + 1..],
+                    &[
+                        StepKind::Local,
+                        StepKind::Reflect,
+                        StepKind::Refract,
+                        StepKind::Combine,
+                        StepKind::Return
+                    ],
+                    "{label}"
+                );
+            } else {
+                assert_eq!(
+                    &own[tests + 1..],
+                    &[StepKind::Miss, StepKind::Return],
+                    "{label}"
+                );
+            }
+        }
+        assert_eq!(
+            steps.last().unwrap().node,
+            0,
+            "{label}: the last step returns the pixel's color"
+        );
+    }
+}
+
+#[test]
+fn step_texts_carry_their_numbers() {
+    let scene = raytree::scene_file::whitted();
+    let trace = Trace::pixel(&scene, source("whitted.json"), 168, 296, None).unwrap();
+    let steps = trace.steps(0);
+    let texts: Vec<&str> = steps.iter().map(|s| s.text.as_str()).collect();
+    let blocked = texts
+        .iter()
+        .find(|t| t.starts_with("shadow ray to light 'key': blocked by 'mirror' at t = "))
+        .expect("the key light is blocked by the mirror");
+    let t = match &trace.samples[0].tree.nodes[0].shadow_rays[0].outcome {
+        raytree::ray_tree::Outcome::Blocked { t, .. } => *t,
+        other => panic!("{other:?}"),
+    };
+    assert!(blocked.ends_with(&raytree::show::num(t)), "{blocked}");
+    assert!(
+        texts
+            .iter()
+            .any(|t| t.starts_with("test plane 'floor': t = ")),
+        "{texts:?}"
+    );
+}
