@@ -27,8 +27,13 @@ fn workdir(name: &str) -> PathBuf {
 /// Runs `render` on `scene_text` (written to `bad.json`) with extra arguments and
 /// checks the failure contract; returns the error line.
 fn fails(name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
+    fails_in("render", name, scene_text, extra)
+}
+
+/// As [`fails`], for any subcommand.
+fn fails_in(command: &str, name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
     let dir = workdir(name);
-    let mut args = vec!["render"];
+    let mut args = vec![command];
     if let Some(text) = scene_text {
         std::fs::write(dir.join("bad.json"), text).unwrap();
         args.push("bad.json");
@@ -329,5 +334,172 @@ fn renders_the_builtin_scene_and_a_shipped_one() {
         .map(|e| e.unwrap().file_name())
         .collect();
     assert_eq!(names.len(), 2, "no temporary files left: {names:?}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn trace_prints_the_tree_of_a_glass_pixel() {
+    let dir = workdir("trace-text");
+    let scene = scenes().join("whitted.json");
+    let out = raytree(
+        &["trace", scene.to_str().unwrap(), "--pixel", "416,209"],
+        &dir,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    for expected in [
+        "pixel 416,209 of ",
+        "spawn primary ray (depth 1",
+        "closest hit: 'glass'",
+        "spawn refracted ray (depth 2",
+        "spawn reflected ray (depth 2",
+        "shadow ray to light 'key'",
+        "total internal reflection",
+        "return ",
+    ] {
+        assert!(text.contains(expected), "missing {expected:?} in:\n{text}");
+    }
+    let numbered = raytree(
+        &[
+            "trace",
+            scene.to_str().unwrap(),
+            "--pixel",
+            "416,209",
+            "--steps",
+        ],
+        &dir,
+    );
+    assert!(
+        String::from_utf8(numbered.stdout)
+            .unwrap()
+            .lines()
+            .any(|l| l.trim_start().starts_with("1. spawn primary ray"))
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn trace_json_reads_back_and_output_file_matches_stdout() {
+    let dir = workdir("trace-json");
+    let scene = scenes().join("whitted.json");
+    let scene = scene.to_str().unwrap();
+    let out = raytree(
+        &[
+            "trace", scene, "--pixel", "100,100", "--json", "--width", "200", "--height", "150",
+            "--spp", "4",
+        ],
+        &dir,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let trace: raytree::trace::Trace = serde_json::from_slice(&out.stdout).unwrap();
+    assert_eq!((trace.format.as_str(), trace.version), ("raytree-trace", 1));
+    assert_eq!(
+        (
+            trace.settings.width,
+            trace.settings.height,
+            trace.samples.len()
+        ),
+        (200, 150, 4)
+    );
+    assert!(trace.scene.hash.starts_with("fnv1a64:"));
+
+    let one = raytree(
+        &[
+            "trace", scene, "--pixel", "100,100", "--width", "200", "--height", "150", "--spp",
+            "4", "--sample", "2", "-o", "t.json",
+        ],
+        &dir,
+    );
+    assert!(one.status.success() && one.stdout.is_empty());
+    let picked: raytree::trace::Trace =
+        serde_json::from_str(&std::fs::read_to_string(dir.join("t.json")).unwrap()).unwrap();
+    assert_eq!(picked.samples.len(), 1);
+    assert_eq!(picked.samples[0], trace.samples[2]);
+    assert_eq!(
+        picked.color, trace.color,
+        "the pixel's color stays the mean of all samples"
+    );
+
+    let ray = raytree(
+        &["trace", scene, "--ray", "0,1.6,7:0.1,-0.1,-1", "--json"],
+        &dir,
+    );
+    let ray: raytree::trace::Trace = serde_json::from_slice(&ray.stdout).unwrap();
+    assert!(ray.pixel.is_none() && ray.ray.is_some() && ray.samples.len() == 1);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn trace_refuses_pixels_and_samples_that_do_not_exist() {
+    assert_eq!(
+        fails_in("trace", "trace-x", None, &["--pixel", "640,0"]),
+        "error: pixel 640,0 is outside the 640×480 image (x is 0 to 639, y is 0 to 479)"
+    );
+    assert_eq!(
+        fails_in(
+            "trace",
+            "trace-y",
+            None,
+            &["--pixel", "0,480", "--width", "100", "--height", "480"]
+        ),
+        "error: pixel 0,480 is outside the 100×480 image (x is 0 to 99, y is 0 to 479)"
+    );
+    assert_eq!(
+        fails_in(
+            "trace",
+            "trace-sample",
+            None,
+            &["--pixel", "1,1", "--spp", "4", "--sample", "4"]
+        ),
+        "error: sample 4 does not exist: a pixel has 4 samples (0 to 3)"
+    );
+    assert_eq!(
+        fails_in(
+            "trace",
+            "trace-out",
+            None,
+            &["--pixel", "1,1", "-o", "missing/t.json"]
+        ),
+        "error: cannot write missing/t.json: No such file or directory"
+    );
+    let e = fails_in(
+        "trace",
+        "trace-scene",
+        Some(r#"{"objects": [{"sphere": {"radius": -2}}]}"#),
+        &["--pixel", "1,1"],
+    );
+    assert_eq!(
+        e,
+        "error: bad.json: objects[0].sphere.radius: must be > 0, got -2"
+    );
+}
+
+#[test]
+fn trace_usage_errors_exit_2() {
+    let dir = workdir("trace-usage");
+    for args in [
+        &["trace"][..],
+        &["trace", "--pixel", "a,b"],
+        &["trace", "--pixel", "1,2", "--ray", "0,0,0:0,0,1"],
+        &["trace", "--ray", "0,0,0:0,0,0"],
+        &["trace", "--ray", "1,2:3,4,5"],
+    ] {
+        let out = raytree(args, &dir);
+        assert_eq!(
+            out.status.code(),
+            Some(2),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(!String::from_utf8_lossy(&out.stderr).contains("panicked"));
+    }
     std::fs::remove_dir_all(&dir).unwrap();
 }
