@@ -12,6 +12,7 @@ use raytree::plane::Plane;
 use raytree::ray::Ray;
 use raytree::render;
 use raytree::sphere::Sphere;
+use raytree::trace::{SceneRef, Trace};
 
 fn main() {
     divan::main();
@@ -74,4 +75,18 @@ fn whitted_640x480(bencher: Bencher) {
     bencher
         .counter(ItemsCount::new(rays.total()))
         .bench(|| render::render(&scene, &hidden).unwrap());
+}
+
+/// Recording a whole pixel's ray tree (`raytree trace`, the inspector): the mean
+/// over a 16 × 12 grid of pixels of the Whitted scene, glass and mirror included.
+#[divan::bench(sample_count = 30)]
+fn record_pixel(bencher: Bencher) {
+    let scene = raytree::scene_file::whitted();
+    let pixels: Vec<(u32, u32)> = (0..12).flat_map(|j| (0..16).map(move |i| (20 + 40 * i, 20 + 40 * j))).collect();
+    let source = SceneRef::new("whitted.json", "");
+    bencher.counter(ItemsCount::new(pixels.len())).bench(|| {
+        for &(x, y) in &pixels {
+            divan::black_box(Trace::pixel(&scene, source.clone(), x, y, None).unwrap());
+        }
+    });
 }
