@@ -82,7 +82,9 @@ fn whitted_640x480(bencher: Bencher) {
 #[divan::bench(sample_count = 30)]
 fn record_pixel(bencher: Bencher) {
     let scene = raytree::scene_file::whitted();
-    let pixels: Vec<(u32, u32)> = (0..12).flat_map(|j| (0..16).map(move |i| (20 + 40 * i, 20 + 40 * j))).collect();
+    let pixels: Vec<(u32, u32)> = (0..12)
+        .flat_map(|j| (0..16).map(move |i| (20 + 40 * i, 20 + 40 * j)))
+        .collect();
     let source = SceneRef::new("whitted.json", "");
     bencher.counter(ItemsCount::new(pixels.len())).bench(|| {
         for &(x, y) in &pixels {

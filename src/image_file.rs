@@ -78,6 +78,11 @@ impl PendingFile {
         })
     }
 
+    /// Where the temporary file is, until it is committed.
+    pub fn temp_path(&self) -> &Path {
+        self.temp.path()
+    }
+
     /// Writes `bytes` and renames the file into place.
     pub fn commit(self, bytes: &[u8]) -> Result<()> {
         let Self { target, mut temp } = self;

@@ -3,6 +3,7 @@
 use std::io::Write;
 use std::path::PathBuf;
 use std::process::ExitCode;
+use std::sync::Mutex;
 use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
@@ -178,8 +179,28 @@ fn parse_ray(s: &str) -> Result<Ray, String> {
     Ok(Ray::new(DVec3::new(ox, oy, oz), DVec3::new(dx, dy, dz)))
 }
 
+/// Temporary output files not yet renamed into place: removed if the user
+/// interrupts, since a signal skips the destructors that would remove them.
+static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
+
+fn create_output(path: &std::path::Path) -> Result<PendingFile> {
+    let file = PendingFile::create(path)?;
+    PENDING
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .push(file.temp_path().to_owned());
+    Ok(file)
+}
+
 fn main() -> ExitCode {
     let cli = Cli::parse();
+    let _ = ctrlc::set_handler(|| {
+        for path in PENDING.lock().unwrap_or_else(|e| e.into_inner()).drain(..) {
+            let _ = std::fs::remove_file(path);
+        }
+        eprintln!("\ninterrupted: no output written");
+        std::process::exit(130);
+    });
     let result = match cli.command {
         Command::Render(args) => run_render(&args),
         Command::Trace(args) => run_trace(&args),
@@ -238,7 +259,7 @@ fn run_render(args: &RenderArgs) -> Result<()> {
         .clone()
         .unwrap_or_else(|| PathBuf::from(format!("{}.png", args.scene.stem())));
     let format = image_file::format_of(&output)?;
-    let pending = PendingFile::create(&output)?;
+    let pending = create_output(&output)?;
     let threads = match args.threads {
         Some(0) => bail!("--threads: must be at least 1"),
         Some(n) => n,
@@ -250,18 +271,37 @@ fn run_render(args: &RenderArgs) -> Result<()> {
         .context("cannot start worker threads")?;
     let progress = progress_bar(args.quiet);
     let started = Instant::now();
-    let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", scene.settings.width, scene.settings.height);
+    let no_memory = |_| {
+        anyhow::anyhow!(
+            "not enough memory for a {}×{} image",
+            scene.settings.width,
+            scene.settings.height
+        )
+    };
     let (image, rays) = if args.stats {
-        pool.install(|| render::render_counting(&scene, &progress)).map(|(image, rays)| (image, Some(rays))).map_err(no_memory)?
+        pool.install(|| render::render_counting(&scene, &progress))
+            .map(|(image, rays)| (image, Some(rays)))
+            .map_err(no_memory)?
     } else {
-        (pool.install(|| render::render(&scene, &progress)).map_err(no_memory)?, None)
+        (
+            pool.install(|| render::render(&scene, &progress))
+                .map_err(no_memory)?,
+            None,
+        )
     };
     let seconds = started.elapsed().as_secs_f64();
     progress.finish_and_clear();
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
         let s = &scene.settings;
-        eprintln!("wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.2} s on {threads} threads", output.display(), s.width, s.height, s.spp, s.max_depth);
+        eprintln!(
+            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.2} s on {threads} threads",
+            output.display(),
+            s.width,
+            s.height,
+            s.spp,
+            s.max_depth
+        );
     }
     if let Some(r) = rays {
         eprintln!(

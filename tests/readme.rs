@@ -11,16 +11,31 @@ fn readme_trace_example_is_current() {
     let marker = "<!-- trace: ";
     let start = readme.find(marker).expect("the README shows a trace");
     let args_end = readme[start..].find(" -->").unwrap() + start;
-    let args: Vec<&str> = readme[start + marker.len()..args_end].split_whitespace().collect();
+    let args: Vec<&str> = readme[start + marker.len()..args_end]
+        .split_whitespace()
+        .collect();
     let block_start = readme[args_end..].find("```text\n").unwrap() + args_end + "```text\n".len();
     let block_end = readme[block_start..].find("```").unwrap() + block_start;
 
-    let out = Command::new(env!("CARGO_BIN_EXE_raytree")).arg("trace").args(&args).current_dir(root).output().unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .arg("trace")
+        .args(&args)
+        .current_dir(root)
+        .output()
+        .unwrap();
     assert!(out.status.success());
     let now = String::from_utf8(out.stdout).unwrap();
     if std::env::var_os("RAYTREE_BLESS").is_some() {
-        std::fs::write(&path, format!("{}{now}{}", &readme[..block_start], &readme[block_end..])).unwrap();
+        std::fs::write(
+            &path,
+            format!("{}{now}{}", &readme[..block_start], &readme[block_end..]),
+        )
+        .unwrap();
         return;
     }
-    assert_eq!(&readme[block_start..block_end], now, "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --test readme");
+    assert_eq!(
+        &readme[block_start..block_end],
+        now,
+        "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --test readme"
+    );
 }
