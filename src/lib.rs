@@ -10,6 +10,8 @@
 #![warn(missing_docs)]
 
 pub mod camera;
+pub mod diagram;
+pub mod draw;
 pub mod float;
 pub mod hit;
 pub mod image_file;
@@ -19,6 +21,7 @@ pub mod object;
 pub mod optics;
 pub mod phong;
 pub mod plane;
+pub mod projection;
 pub mod ray;
 pub mod ray_tree;
 pub mod recorder;

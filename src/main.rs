@@ -32,6 +32,8 @@ enum Command {
     Render(RenderArgs),
     /// Trace one pixel (or one ray) and print every ray it spawns, with every number.
     Trace(TraceArgs),
+    /// Draw one pixel's (or one ray's) ray tree over the scene as a 2D figure (PNG).
+    Diagram(DiagramArgs),
 }
 
 /// A scene and the settings that override its `render` block.
@@ -113,11 +115,10 @@ struct RenderArgs {
     stats: bool,
 }
 
+/// What to trace: a pixel or a ray.
 #[derive(Args)]
 #[command(group(ArgGroup::new("target").required(true).args(["pixel", "ray"])))]
-struct TraceArgs {
-    #[command(flatten)]
-    scene: SceneArgs,
+struct TargetArgs {
     /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
@@ -127,6 +128,24 @@ struct TraceArgs {
     /// With several samples per pixel, keep only sample K (0-based, row by row from the top-left).
     #[arg(long, value_name = "K", conflicts_with = "ray")]
     sample: Option<u32>,
+}
+
+impl TargetArgs {
+    fn trace(&self, scene: &Scene, source: SceneRef) -> Result<Trace> {
+        Ok(match (self.pixel, self.ray) {
+            (Some((x, y)), _) => Trace::pixel(scene, source, x, y, self.sample)?,
+            (_, Some(ray)) => Trace::ray(scene, source, ray)?,
+            _ => unreachable!("clap requires --pixel or --ray"),
+        })
+    }
+}
+
+#[derive(Args)]
+struct TraceArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    #[command(flatten)]
+    target: TargetArgs,
     /// Print the JSON trace document (book/src/trace-format.md) instead of the text tree.
     #[arg(long)]
     json: bool,
@@ -136,6 +155,46 @@ struct TraceArgs {
     /// Write to this file (atomically) instead of standard output; a .json name implies --json.
     #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
+}
+
+#[derive(Args)]
+struct DiagramArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    #[command(flatten)]
+    target: TargetArgs,
+    /// Output PNG [default: the scene's name, "diagram" and the pixel, e.g. whitted-diagram-320-240.png].
+    #[arg(short, long, value_name = "FIG.png")]
+    output: Option<PathBuf>,
+    /// The plane drawn: the plane of incidence at the first hit (auto), or the scene's axes.
+    #[arg(long, value_enum, default_value = "auto")]
+    view: raytree::projection::View,
+    /// Figure size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
+    size: (u32, u32),
+    /// Draw only the first D levels of rays (1: the primary ray).
+    #[arg(long, value_name = "D")]
+    depth: Option<u32>,
+    /// Leave out the shadow rays.
+    #[arg(long)]
+    no_shadows: bool,
+    /// Which labels to write.
+    #[arg(long, value_enum, default_value = "all")]
+    labels: raytree::diagram::Labels,
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or("expected WxH, e.g. 1200x800")?;
+    let side = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (64..=8192).contains(&n))
+            .ok_or_else(|| format!("'{v}' is not a size from 64 to 8192 pixels"))
+    };
+    Ok((side(w)?, side(h)?))
 }
 
 fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
@@ -204,6 +263,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Render(args) => run_render(&args),
         Command::Trace(args) => run_trace(&args),
+        Command::Diagram(args) => run_diagram(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -226,11 +286,7 @@ fn run_trace(args: &TraceArgs) -> Result<()> {
         .as_deref()
         .map(PendingFile::create)
         .transpose()?;
-    let trace = match (args.pixel, args.ray) {
-        (Some((x, y)), _) => Trace::pixel(&scene, source, x, y, args.sample)?,
-        (_, Some(ray)) => Trace::ray(&scene, source, ray)?,
-        _ => unreachable!("clap requires --pixel or --ray"),
-    };
+    let trace = args.target.trace(&scene, source)?;
     let text = if json {
         trace.to_json()
     } else {
@@ -240,6 +296,33 @@ fn run_trace(args: &TraceArgs) -> Result<()> {
         Some(file) => file.commit(text.as_bytes()),
         None => write_stdout(text.as_bytes()),
     }
+}
+
+fn run_diagram(args: &DiagramArgs) -> Result<()> {
+    let (scene, source) = args.scene.load()?;
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| match args.target.pixel {
+            Some((x, y)) => PathBuf::from(format!("{}-diagram-{x}-{y}.png", args.scene.stem())),
+            None => PathBuf::from(format!("{}-diagram-ray.png", args.scene.stem())),
+        });
+    if image_file::format_of(&output)? != image_file::Format::Png {
+        bail!("cannot write {}: a diagram is a .png", output.display());
+    }
+    let pending = create_output(&output)?;
+    let trace = args.target.trace(&scene, source)?;
+    let options = raytree::diagram::Options {
+        width: args.size.0,
+        height: args.size.1,
+        view: args.view,
+        depth: args.depth,
+        shadows: !args.no_shadows,
+        labels: args.labels,
+        sample: 0,
+    };
+    let figure = raytree::diagram::draw(&trace, &scene, &options).map_err(anyhow::Error::msg)?;
+    pending.commit(&figure.png())
 }
 
 /// Writes to standard output; a closed pipe (`| head`) is not an error.

@@ -543,3 +543,86 @@ fn trace_usage_errors_exit_2() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn diagram_writes_a_png_of_the_asked_size() {
+    let dir = workdir("diagram");
+    let scene = scenes().join("whitted.json");
+    let out = raytree(
+        &[
+            "diagram",
+            scene.to_str().unwrap(),
+            "--pixel",
+            "416,209",
+            "--size",
+            "640x400",
+            "--depth",
+            "2",
+            "--no-shadows",
+            "--labels",
+            "objects",
+            "--view",
+            "side",
+        ],
+        &dir,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = image::open(dir.join("whitted-diagram-416-209.png")).unwrap();
+    assert_eq!((png.width(), png.height()), (640, 400));
+    let out = raytree(
+        &["diagram", "--ray", "0,1.6,7:0.1,-0.1,-1", "-o", "ray.png"],
+        &dir,
+    );
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(dir.join("ray.png").exists());
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn diagram_refuses_bad_requests() {
+    assert_eq!(
+        fails_in(
+            "diagram",
+            "diagram-jpg",
+            None,
+            &["--pixel", "1,1", "-o", "fig.jpg"]
+        ),
+        "error: cannot write fig.jpg: the output must end in .png or .ppm"
+    );
+    assert_eq!(
+        fails_in(
+            "diagram",
+            "diagram-ppm",
+            None,
+            &["--pixel", "1,1", "-o", "fig.ppm"]
+        ),
+        "error: cannot write fig.ppm: a diagram is a .png"
+    );
+    assert_eq!(
+        fails_in(
+            "diagram",
+            "diagram-px",
+            None,
+            &["--pixel", "9999,1", "-o", "fig.png"]
+        ),
+        "error: pixel 9999,1 is outside the 640×480 image (x is 0 to 639, y is 0 to 479)"
+    );
+    let dir = workdir("diagram-usage");
+    for args in [
+        &["diagram", "--pixel", "1,1", "--size", "10x10"][..],
+        &["diagram", "--pixel", "1,1", "--view", "up"],
+        &["diagram", "--pixel", "1,1", "--labels", "some"],
+    ] {
+        let out = raytree(args, &dir);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -39,3 +39,25 @@ fn readme_trace_example_is_current() {
         "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --test readme"
     );
 }
+
+#[test]
+fn readme_image_is_the_builtin_scene_as_rendered_today() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/whitted.png");
+    let scene = raytree::scene_file::whitted();
+    let image = raytree::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+    let now = raytree::image_file::to_rgb8(&image);
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::write(
+            path,
+            raytree::image_file::encode(&image, raytree::image_file::Format::Png).unwrap(),
+        )
+        .unwrap();
+        return;
+    }
+    let shown = image::open(path).unwrap().to_rgb8();
+    assert_eq!((shown.width(), shown.height()), (image.width, image.height));
+    assert!(
+        shown.as_raw() == &now,
+        "docs/whitted.png is stale: RAYTREE_BLESS=1 cargo test --test readme"
+    );
+}

@@ -1,0 +1,625 @@
+//! The drawing toolkit for figures: a canvas in diagram coordinates (y up) fitted
+//! into a frame on a PNG, with arrows, dashes, ellipses, dots, labels in an
+//! embedded font, a legend and a caption. Ray diagrams use it, and later figures
+//! (lesson concept figures, the speed/accuracy chart) are meant to.
+//!
+//! tiny-skia draws the shapes; fontdue rasterizes DejaVu Sans (in `src/fonts/`,
+//! with its license), so a figure has the same bytes on every machine.
+
+use std::sync::OnceLock;
+
+use glam::DVec2;
+use tiny_skia::{
+    Color, FillRule, Mask, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform,
+};
+
+/// An sRGB color.
+pub type Rgb = [u8; 3];
+
+/// The colors every ray diagram uses (the inspector's diagram pane too).
+pub mod palette {
+    use super::Rgb;
+    /// Primary rays.
+    pub const PRIMARY: Rgb = [31, 119, 180];
+    /// Reflected rays.
+    pub const REFLECTED: Rgb = [44, 160, 44];
+    /// Refracted rays.
+    pub const REFRACTED: Rgb = [214, 39, 40];
+    /// Shadow rays that reach their light.
+    pub const SHADOW_REACHES: Rgb = [230, 159, 0];
+    /// Shadow rays that are blocked.
+    pub const SHADOW_BLOCKED: Rgb = [127, 127, 127];
+    /// Surface normals.
+    pub const NORMAL: Rgb = [148, 103, 189];
+    /// Object outlines.
+    pub const OBJECT: Rgb = [60, 60, 60];
+    /// Object fill.
+    pub const OBJECT_FILL: Rgb = [232, 232, 232];
+    /// Lights.
+    pub const LIGHT: Rgb = [255, 200, 0];
+    /// Text, the eye, the image plane.
+    pub const INK: Rgb = [20, 20, 20];
+    /// The page.
+    pub const PAPER: Rgb = [255, 255, 255];
+}
+
+/// How a line is drawn.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pen {
+    /// Its color.
+    pub color: Rgb,
+    /// Width in pixels.
+    pub width: f32,
+    /// Dash length and gap in pixels, or solid.
+    pub dash: Option<(f32, f32)>,
+}
+
+impl Pen {
+    /// A solid pen.
+    pub const fn solid(color: Rgb, width: f32) -> Self {
+        Self {
+            color,
+            width,
+            dash: None,
+        }
+    }
+
+    /// A dashed pen.
+    pub const fn dashed(color: Rgb, width: f32) -> Self {
+        Self {
+            color,
+            width,
+            dash: Some((7.0, 5.0)),
+        }
+    }
+}
+
+fn font() -> &'static fontdue::Font {
+    static FONT: OnceLock<fontdue::Font> = OnceLock::new();
+    FONT.get_or_init(|| {
+        fontdue::Font::from_bytes(
+            &include_bytes!("fonts/DejaVuSans.ttf")[..],
+            fontdue::FontSettings::default(),
+        )
+        .expect("the embedded font parses")
+    })
+}
+
+/// Where a label sits relative to its point.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Anchor {
+    /// The text starts at the point (baseline).
+    Left,
+    /// The text is centered on the point.
+    Center,
+    /// The text ends at the point.
+    Right,
+}
+
+/// A figure: a page with a frame, and a view from diagram coordinates into it.
+pub struct Figure {
+    pixmap: Pixmap,
+    frame: Rect,
+    clip: Mask,
+    scale: f64,
+    offset: DVec2,
+}
+
+impl Figure {
+    /// A white page of `width × height` pixels whose plot frame leaves `top`
+    /// pixels above it (for a caption) and `margin` around the other sides.
+    pub fn new(width: u32, height: u32, top: f32, margin: f32) -> Option<Self> {
+        let mut pixmap = Pixmap::new(width, height)?;
+        pixmap.fill(color(palette::PAPER));
+        let frame = Rect::from_xywh(
+            margin,
+            top,
+            width as f32 - 2.0 * margin,
+            height as f32 - top - margin,
+        )?;
+        let mut clip = Mask::new(width, height)?;
+        clip.fill_path(
+            &PathBuilder::from_rect(frame),
+            FillRule::Winding,
+            false,
+            Transform::identity(),
+        );
+        Some(Self {
+            pixmap,
+            frame,
+            clip,
+            scale: 1.0,
+            offset: DVec2::ZERO,
+        })
+    }
+
+    /// The plot frame, in pixels.
+    pub fn frame(&self) -> Rect {
+        self.frame
+    }
+
+    /// Fits the diagram box `lo..hi` into the frame with equal scale on both axes,
+    /// centered, leaving `margin` (a share of the box) around it.
+    pub fn fit(&mut self, lo: DVec2, hi: DVec2, margin: f64) {
+        let size = (hi - lo).max(DVec2::splat(1e-9));
+        let (lo, size) = (lo - size * margin, size * (1.0 + 2.0 * margin));
+        let f = self.frame;
+        self.scale = (f64::from(f.width()) / size.x).min(f64::from(f.height()) / size.y);
+        let used = size * self.scale;
+        self.offset = DVec2::new(
+            f64::from(f.left()) + (f64::from(f.width()) - used.x) / 2.0,
+            f64::from(f.bottom()) - (f64::from(f.height()) - used.y) / 2.0,
+        ) - DVec2::new(lo.x, -lo.y) * self.scale;
+    }
+
+    /// Pixels per diagram unit.
+    pub fn scale(&self) -> f64 {
+        self.scale
+    }
+
+    /// Diagram coordinates to pixel coordinates (y down).
+    pub fn to_px(&self, p: DVec2) -> DVec2 {
+        DVec2::new(
+            p.x * self.scale + self.offset.x,
+            -p.y * self.scale + self.offset.y,
+        )
+    }
+
+    /// Pixel coordinates to diagram coordinates.
+    pub fn from_px(&self, p: DVec2) -> DVec2 {
+        DVec2::new(
+            (p.x - self.offset.x) / self.scale,
+            -(p.y - self.offset.y) / self.scale,
+        )
+    }
+
+    /// The frame in diagram coordinates: `(lo, hi)`.
+    pub fn visible(&self) -> (DVec2, DVec2) {
+        let f = self.frame;
+        let a = self.from_px(DVec2::new(f64::from(f.left()), f64::from(f.bottom())));
+        let b = self.from_px(DVec2::new(f64::from(f.right()), f64::from(f.top())));
+        (a, b)
+    }
+
+    fn stroke_px(&mut self, points: &[DVec2], pen: Pen, close: bool) {
+        let mut pb = PathBuilder::new();
+        for (i, p) in points.iter().enumerate() {
+            if i == 0 {
+                pb.move_to(p.x as f32, p.y as f32)
+            } else {
+                pb.line_to(p.x as f32, p.y as f32)
+            }
+        }
+        if close {
+            pb.close();
+        }
+        let Some(path) = pb.finish() else { return };
+        let mut stroke = Stroke {
+            width: pen.width,
+            ..Stroke::default()
+        };
+        stroke.dash = pen
+            .dash
+            .and_then(|(on, off)| StrokeDash::new(vec![on, off], 0.0));
+        self.pixmap.stroke_path(
+            &path,
+            &paint(pen.color, 255),
+            &stroke,
+            Transform::identity(),
+            Some(&self.clip),
+        );
+    }
+
+    fn fill_px(&mut self, points: &[DVec2], fill: Rgb, alpha: u8) {
+        let mut pb = PathBuilder::new();
+        for (i, p) in points.iter().enumerate() {
+            if i == 0 {
+                pb.move_to(p.x as f32, p.y as f32)
+            } else {
+                pb.line_to(p.x as f32, p.y as f32)
+            }
+        }
+        pb.close();
+        if let Some(path) = pb.finish() {
+            self.pixmap.fill_path(
+                &path,
+                &paint(fill, alpha),
+                FillRule::Winding,
+                Transform::identity(),
+                Some(&self.clip),
+            );
+        }
+    }
+
+    /// A line from `a` to `b` (diagram coordinates), clipped to the frame.
+    pub fn line(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        let (a, b) = (self.to_px(a), self.to_px(b));
+        self.stroke_px(&[a, b], pen, false);
+    }
+
+    /// A line from `a` to `b` with an arrowhead at `b`.
+    pub fn arrow(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        let (pa, pb) = (self.to_px(a), self.to_px(b));
+        let Some(dir) = (pb - pa).try_normalize() else {
+            return;
+        };
+        let head = (4.0 * f64::from(pen.width)).max(9.0);
+        let base = pb - dir * head;
+        self.stroke_px(&[pa, base], pen, false);
+        let side = dir.perp() * head * 0.4;
+        self.fill_px(&[pb, base + side, base - side], pen.color, 255);
+    }
+
+    /// A closed polygon through `points`, filled and outlined.
+    pub fn polygon(&mut self, points: &[DVec2], fill: Option<(Rgb, u8)>, pen: Option<Pen>) {
+        let px: Vec<DVec2> = points.iter().map(|&p| self.to_px(p)).collect();
+        if let Some((c, a)) = fill {
+            self.fill_px(&px, c, a);
+        }
+        if let Some(pen) = pen {
+            self.stroke_px(&px, pen, true);
+        }
+    }
+
+    /// The ellipse `center + cos θ·axes[0] + sin θ·axes[1]`.
+    pub fn ellipse(
+        &mut self,
+        center: DVec2,
+        axes: [DVec2; 2],
+        fill: Option<(Rgb, u8)>,
+        pen: Option<Pen>,
+    ) {
+        let points: Vec<DVec2> = (0..256)
+            .map(|i| {
+                let t = std::f64::consts::TAU * f64::from(i) / 256.0;
+                center + t.cos() * axes[0] + t.sin() * axes[1]
+            })
+            .collect();
+        self.polygon(&points, fill, pen);
+    }
+
+    /// A filled dot of `radius` pixels at `p`, with an outline.
+    pub fn dot(&mut self, p: DVec2, radius: f32, fill: Rgb, outline: Option<Rgb>) {
+        let c = self.to_px(p);
+        if let Some(path) = PathBuilder::from_circle(c.x as f32, c.y as f32, radius) {
+            self.pixmap.fill_path(
+                &path,
+                &paint(fill, 255),
+                FillRule::Winding,
+                Transform::identity(),
+                Some(&self.clip),
+            );
+            if let Some(o) = outline {
+                let stroke = Stroke {
+                    width: 1.2,
+                    ..Stroke::default()
+                };
+                self.pixmap.stroke_path(
+                    &path,
+                    &paint(o, 255),
+                    &stroke,
+                    Transform::identity(),
+                    Some(&self.clip),
+                );
+            }
+        }
+    }
+
+    /// A light: a small sun at `p`.
+    pub fn light(&mut self, p: DVec2) {
+        let c = self.to_px(p);
+        for k in 0..8 {
+            let a = std::f64::consts::TAU * f64::from(k) / 8.0;
+            let d = DVec2::new(a.cos(), a.sin());
+            self.stroke_px(
+                &[c + d * 8.0, c + d * 13.0],
+                Pen::solid(palette::INK, 1.5),
+                false,
+            );
+        }
+        self.dot(p, 6.0, palette::LIGHT, Some(palette::INK));
+    }
+
+    /// The width of `text` at `size` pixels.
+    pub fn text_width(text: &str, size: f32) -> f32 {
+        text.chars()
+            .map(|c| font().metrics(c, size).advance_width)
+            .sum()
+    }
+
+    /// Text at pixel position `at` (baseline), white-haloed so it reads over lines;
+    /// clipped to the frame when `clip`.
+    pub fn text_px(
+        &mut self,
+        at: DVec2,
+        text: &str,
+        size: f32,
+        color: Rgb,
+        anchor: Anchor,
+        clip: bool,
+    ) {
+        let width = Self::text_width(text, size);
+        let x0 = match anchor {
+            Anchor::Left => at.x as f32,
+            Anchor::Center => at.x as f32 - width / 2.0,
+            Anchor::Right => at.x as f32 - width,
+        };
+        for (halo, c) in [(true, palette::PAPER), (false, color)] {
+            let mut x = x0;
+            for ch in text.chars() {
+                let (m, bitmap) = font().rasterize(ch, size);
+                let left = (x + m.xmin as f32).round() as i32;
+                let top = (at.y as f32 - m.height as f32 - m.ymin as f32).round() as i32;
+                let offsets: &[(i32, i32)] = if halo {
+                    &[
+                        (-1, -1),
+                        (0, -1),
+                        (1, -1),
+                        (-1, 0),
+                        (1, 0),
+                        (-1, 1),
+                        (0, 1),
+                        (1, 1),
+                    ]
+                } else {
+                    &[(0, 0)]
+                };
+                for &(dx, dy) in offsets {
+                    self.blend_coverage(left + dx, top + dy, m.width, &bitmap, c, clip);
+                }
+                x += m.advance_width;
+            }
+        }
+    }
+
+    /// Text next to diagram point `p`, offset by `offset` pixels (y down).
+    pub fn label(
+        &mut self,
+        p: DVec2,
+        offset: DVec2,
+        text: &str,
+        size: f32,
+        color: Rgb,
+        anchor: Anchor,
+    ) {
+        let at = self.to_px(p) + offset;
+        self.text_px(at, text, size, color, anchor, true);
+    }
+
+    fn blend_coverage(
+        &mut self,
+        left: i32,
+        top: i32,
+        width: usize,
+        coverage: &[u8],
+        c: Rgb,
+        clip: bool,
+    ) {
+        let (w, h) = (self.pixmap.width() as i32, self.pixmap.height() as i32);
+        let f = self.frame;
+        for (i, &a) in coverage.iter().enumerate() {
+            if a == 0 {
+                continue;
+            }
+            let (x, y) = (
+                left + (i % width.max(1)) as i32,
+                top + (i / width.max(1)) as i32,
+            );
+            if x < 0 || y < 0 || x >= w || y >= h {
+                continue;
+            }
+            if clip
+                && !(x as f32 >= f.left()
+                    && (x as f32) < f.right()
+                    && y as f32 >= f.top()
+                    && (y as f32) < f.bottom())
+            {
+                continue;
+            }
+            let idx = (y * w + x) as usize * 4;
+            let data = self.pixmap.data_mut();
+            for k in 0..3 {
+                let old = u32::from(data[idx + k]);
+                data[idx + k] =
+                    ((old * (255 - u32::from(a)) + u32::from(c[k]) * u32::from(a) + 127) / 255)
+                        as u8;
+            }
+        }
+    }
+
+    /// A thin border around the frame.
+    pub fn frame_border(&mut self) {
+        let f = self.frame;
+        let path = PathBuilder::from_rect(f);
+        self.pixmap.stroke_path(
+            &path,
+            &paint([180, 180, 180], 255),
+            &Stroke {
+                width: 1.0,
+                ..Stroke::default()
+            },
+            Transform::identity(),
+            None,
+        );
+    }
+
+    /// The caption above the frame.
+    pub fn caption(&mut self, text: &str, size: f32) {
+        let at = DVec2::new(
+            f64::from(self.frame.left()),
+            f64::from(self.frame.top()) - f64::from(size) * 0.6,
+        );
+        self.text_px(at, text, size, palette::INK, Anchor::Left, false);
+    }
+
+    /// The legend box for `entries` in each corner of the frame, in pixels
+    /// (top-left `(x, y)`, then `(w, h)`): top right, top left, bottom right, bottom left.
+    pub fn legend_boxes(&self, entries: &[(Pen, &str)], size: f32) -> [(DVec2, DVec2); 4] {
+        let line = f64::from(size) * 1.5;
+        let text_w = entries
+            .iter()
+            .map(|(_, t)| Self::text_width(t, size))
+            .fold(0.0, f32::max) as f64;
+        let wh = DVec2::new(
+            LEGEND_SAMPLE + 18.0 + text_w + 12.0,
+            line * entries.len() as f64 + 10.0,
+        );
+        let f = self.frame;
+        let (l, r, t, b) = (
+            f64::from(f.left()) + 8.0,
+            f64::from(f.right()) - wh.x - 8.0,
+            f64::from(f.top()) + 8.0,
+            f64::from(f.bottom()) - wh.y - 8.0,
+        );
+        [
+            (DVec2::new(r, t), wh),
+            (DVec2::new(l, t), wh),
+            (DVec2::new(r, b), wh),
+            (DVec2::new(l, b), wh),
+        ]
+    }
+
+    /// A legend: one line per entry, a pen sample then its text, in the box
+    /// `corner` of [`Figure::legend_boxes`].
+    pub fn legend(&mut self, entries: &[(Pen, &str)], size: f32, corner: usize) {
+        let line = f64::from(size) * 1.5;
+        let sample = LEGEND_SAMPLE;
+        let (origin, wh) = self.legend_boxes(entries, size)[corner.min(3)];
+        let (x0, y0, w, h) = (origin.x, origin.y, wh.x, wh.y);
+        let bx = [
+            DVec2::new(x0, y0),
+            DVec2::new(x0 + w, y0),
+            DVec2::new(x0 + w, y0 + h),
+            DVec2::new(x0, y0 + h),
+        ];
+        self.fill_px(&bx, palette::PAPER, 235);
+        self.stroke_px(&bx, Pen::solid([190, 190, 190], 1.0), true);
+        for (i, (pen, text)) in entries.iter().enumerate() {
+            let y = y0 + 5.0 + line * (i as f64 + 0.5);
+            self.stroke_px(
+                &[DVec2::new(x0 + 8.0, y), DVec2::new(x0 + 8.0 + sample, y)],
+                *pen,
+                false,
+            );
+            self.text_px(
+                DVec2::new(x0 + 8.0 + sample + 10.0, y + f64::from(size) * 0.35),
+                text,
+                size,
+                palette::INK,
+                Anchor::Left,
+                false,
+            );
+        }
+    }
+
+    /// The figure as 8-bit RGB, rows top first.
+    pub fn rgb(&self) -> Vec<u8> {
+        // Everything is drawn on an opaque page, so premultiplied equals straight RGB.
+        self.pixmap
+            .data()
+            .chunks_exact(4)
+            .flat_map(|p| [p[0], p[1], p[2]])
+            .collect()
+    }
+
+    /// The figure's size in pixels.
+    pub fn size(&self) -> (u32, u32) {
+        (self.pixmap.width(), self.pixmap.height())
+    }
+
+    /// The figure as PNG bytes.
+    pub fn png(&self) -> Vec<u8> {
+        let mut out = Vec::new();
+        let encoder = image::codecs::png::PngEncoder::new(&mut out);
+        image::ImageEncoder::write_image(
+            encoder,
+            &self.rgb(),
+            self.pixmap.width(),
+            self.pixmap.height(),
+            image::ExtendedColorType::Rgb8,
+        )
+        .expect("PNG encoding into memory cannot fail");
+        out
+    }
+}
+
+const LEGEND_SAMPLE: f64 = 36.0;
+
+fn color(c: Rgb) -> Color {
+    Color::from_rgba8(c[0], c[1], c[2], 255)
+}
+
+fn paint(c: Rgb, alpha: u8) -> Paint<'static> {
+    let mut p = Paint::default();
+    p.set_color_rgba8(c[0], c[1], c[2], alpha);
+    p.anti_alias = true;
+    p
+}
+
+/// Clips the line `p + s·d` (any s) to the box `lo..hi`: the two ends, if it crosses it.
+pub fn clip_line(p: DVec2, d: DVec2, lo: DVec2, hi: DVec2) -> Option<(DVec2, DVec2)> {
+    clip_ray(p, d, lo, hi, f64::NEG_INFINITY)
+}
+
+/// Clips the ray `p + s·d`, `s ≥ s_min`, to the box (Liang–Barsky).
+pub fn clip_ray(p: DVec2, d: DVec2, lo: DVec2, hi: DVec2, s_min: f64) -> Option<(DVec2, DVec2)> {
+    clip(p, d, lo, hi, s_min, f64::INFINITY)
+}
+
+/// Clips the segment `a..b` to the box.
+pub fn clip_segment(a: DVec2, b: DVec2, lo: DVec2, hi: DVec2) -> Option<(DVec2, DVec2)> {
+    clip(a, b - a, lo, hi, 0.0, 1.0)
+}
+
+fn clip(
+    p: DVec2,
+    d: DVec2,
+    lo: DVec2,
+    hi: DVec2,
+    s_min: f64,
+    s_max: f64,
+) -> Option<(DVec2, DVec2)> {
+    let (mut s0, mut s1) = (s_min, s_max);
+    for (pi, di, l, h) in [(p.x, d.x, lo.x, hi.x), (p.y, d.y, lo.y, hi.y)] {
+        if di == 0.0 {
+            if pi < l || pi > h {
+                return None;
+            }
+            continue;
+        }
+        let (a, b) = ((l - pi) / di, (h - pi) / di);
+        s0 = s0.max(a.min(b));
+        s1 = s1.min(a.max(b));
+    }
+    (s0 <= s1 && s1.is_finite() && s0.is_finite()).then(|| (p + s0 * d, p + s1 * d))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fit_maps_the_box_into_the_frame_with_y_up() {
+        let mut fig = Figure::new(400, 300, 40.0, 10.0).unwrap();
+        fig.fit(DVec2::new(0.0, 0.0), DVec2::new(10.0, 5.0), 0.0);
+        // The frame is 380 × 250; the box's aspect 2:1 limits the scale to 38.
+        assert_eq!(fig.scale(), 38.0);
+        let a = fig.to_px(DVec2::new(0.0, 0.0));
+        let b = fig.to_px(DVec2::new(10.0, 5.0));
+        assert!((a.x - 10.0).abs() < 1e-9 && b.y < a.y, "{a} {b}");
+        assert!(
+            fig.from_px(fig.to_px(DVec2::new(3.0, 4.0)))
+                .abs_diff_eq(DVec2::new(3.0, 4.0), 1e-12)
+        );
+    }
+
+    #[test]
+    fn clipping_keeps_the_part_inside() {
+        let (lo, hi) = (DVec2::ZERO, DVec2::splat(10.0));
+        let (a, b) = clip_ray(DVec2::new(5.0, 5.0), DVec2::X, lo, hi, 0.0).unwrap();
+        assert_eq!((a, b), (DVec2::new(5.0, 5.0), DVec2::new(10.0, 5.0)));
+        let (a, b) = clip_line(DVec2::new(5.0, 5.0), DVec2::new(1.0, 1.0), lo, hi).unwrap();
+        assert_eq!((a, b), (DVec2::ZERO, DVec2::splat(10.0)));
+        assert!(clip_ray(DVec2::new(20.0, 5.0), DVec2::X, lo, hi, 0.0).is_none());
+    }
+}
