@@ -74,18 +74,68 @@ const NORMAL: Pen = Pen::solid(palette::NORMAL, 2.0);
 const TEXT: f32 = 15.0;
 
 /// One segment of the drawing, in diagram coordinates.
-struct Segment {
-    from: DVec2,
-    /// `None`: the ray leaves the scene and is drawn to the frame's edge.
-    to: Option<DVec2>,
-    dir: DVec2,
-    pen: Pen,
-    arrow: bool,
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Segment {
+    /// Where it starts.
+    pub from: DVec2,
+    /// Where it ends; `None`: the ray leaves the scene and runs to the frame's edge.
+    pub to: Option<DVec2>,
+    /// Its direction.
+    pub dir: DVec2,
+    /// How it is drawn.
+    pub pen: Pen,
+    /// A ray (with an arrowhead), or a shadow ray.
+    pub arrow: bool,
+    /// The tree node it belongs to.
+    pub node: usize,
 }
 
-/// Draws sample `options.sample` of `trace` over `scene` (the scene it was traced
-/// in, with the same settings).
-pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, String> {
+/// A hit point, drawn as a dot with its normal.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct HitMark {
+    /// The tree node whose hit it is.
+    pub node: usize,
+    /// Where.
+    pub at: DVec2,
+    /// The shading normal's direction in the drawing.
+    pub normal: DVec2,
+    /// The kind of the ray that hit.
+    pub kind: RayKind,
+}
+
+/// Everything a diagram shows, projected, with the box to fit: what the PNG
+/// figure and the inspector's diagram pane both draw.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    /// The projection.
+    pub proj: Projection,
+    /// Rays and shadow rays; shadow rays first.
+    pub segments: Vec<Segment>,
+    /// Hit points in the order they were found.
+    pub hits: Vec<HitMark>,
+    /// Every object's outline, by object index.
+    pub outlines: Vec<Outline>,
+    /// The objects the tree touches (hit, or blocking a shadow ray).
+    pub touched: Vec<usize>,
+    /// The eye.
+    pub eye: DVec2,
+    /// The image plane's cut (two ends) and the pixel on it.
+    pub image_plane: Option<(DVec2, DVec2, DVec2)>,
+    /// The lights.
+    pub lights: Vec<DVec2>,
+    /// The box the drawing should fit.
+    pub lo: DVec2,
+    /// See `lo`.
+    pub hi: DVec2,
+}
+
+/// Projects sample `options.sample` of `trace` (and `scene`) for drawing.
+///
+/// The box to fit holds a core (the eye, the image plane, the first hit and the
+/// bounded objects the tree touches); farther points join it only when near,
+/// and rays to the others run to the frame's edge, so one far bounce does not
+/// shrink the interesting part to a speck.
+pub fn layout(trace: &Trace, scene: &Scene, options: &Options) -> Result<Layout, String> {
     let sample = trace
         .samples
         .get(options.sample)
@@ -93,25 +143,22 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
     let camera = scene.camera();
     let proj = Projection::new(options.view, trace, options.sample, &camera);
     let shown = |depth: u32| options.depth.is_none_or(|d| depth <= d);
-    let nodes: Vec<_> = sample
-        .tree
-        .nodes
-        .iter()
-        .filter(|n| shown(n.depth))
-        .collect();
-
-    // Everything the tree draws, and what the frame must hold.
-    // The frame is fitted to a core (the eye, the image plane, the first hit and
-    // the bounded objects the tree touches); farther points join it only when
-    // near, and rays to the others run to the frame's edge.
     let mut segments = Vec::new();
-    let mut core = vec![proj.point(camera.eye)];
+    let mut hits = Vec::new();
+    let eye = proj.point(camera.eye);
+    let mut core = vec![eye];
     let mut points = Vec::new();
     let mut touched = Vec::new();
     if let Some(hit) = &sample.tree.nodes[0].hit {
         core.push(proj.point(hit.point));
     }
-    for node in &nodes {
+    for (i, node) in sample
+        .tree
+        .nodes
+        .iter()
+        .enumerate()
+        .filter(|(_, n)| shown(n.depth))
+    {
         let from = proj.point(node.origin);
         let to = node.hit.as_ref().map(|h| proj.point(h.point));
         segments.push(Segment {
@@ -120,10 +167,19 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
             dir: proj.vector(node.direction),
             pen: ray_pen(node.kind),
             arrow: true,
+            node: i,
         });
         points.push(from);
         points.extend(to);
-        touched.extend(node.hit.as_ref().map(|h| h.object));
+        if let Some(h) = &node.hit {
+            touched.push(h.object);
+            hits.push(HitMark {
+                node: i,
+                at: proj.point(h.point),
+                normal: proj.vector(h.shading_normal),
+                kind: node.kind,
+            });
+        }
         if !options.shadows {
             continue;
         }
@@ -144,9 +200,11 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
                 dir: to - from,
                 pen,
                 arrow: false,
+                node: i,
             });
         }
     }
+    segments.sort_by_key(|s| s.arrow);
     let image_plane = image_plane_segment(&proj, trace, options.sample, &camera);
     core.extend(image_plane.map(|(a, b, _)| [a, b]).into_iter().flatten());
     let outlines: Vec<Outline> = scene.objects.iter().map(|o| proj.outline(o)).collect();
@@ -171,7 +229,41 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
         .filter(|p| p.cmpge(core_lo - reach).all() && p.cmple(core_hi + reach).all())
         .collect();
     let (lo, hi) = bounds(&[core, near].concat());
+    let lights = scene
+        .lights
+        .iter()
+        .map(|l| proj.point(l.position))
+        .collect();
+    Ok(Layout {
+        proj,
+        segments,
+        hits,
+        outlines,
+        touched,
+        eye,
+        image_plane,
+        lights,
+        lo,
+        hi,
+    })
+}
 
+/// Draws sample `options.sample` of `trace` over `scene` (the scene it was traced
+/// in, with the same settings).
+pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, String> {
+    let Layout {
+        proj,
+        segments,
+        hits,
+        outlines,
+        touched,
+        eye,
+        image_plane,
+        lights,
+        lo,
+        hi,
+    } = layout(trace, scene, options)?;
+    let sample = &trace.samples[options.sample];
     let mut fig = Figure::new(options.width, options.height, 44.0, 12.0)
         .ok_or("the figure size must be at least 40×60 pixels")?;
     if fig.frame().width() < 40.0 || fig.frame().height() < 20.0 {
@@ -258,7 +350,6 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
             );
         }
     }
-    let eye = proj.point(camera.eye);
     fig.dot(eye, 5.0, palette::INK, None);
     if options.labels != Labels::None {
         fig.label(
@@ -270,8 +361,7 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
             Anchor::Center,
         );
     }
-    for light in &scene.lights {
-        let p = proj.point(light.position);
+    for (light, &p) in scene.lights.iter().zip(&lights) {
         fig.light(p);
         if options.labels != Labels::None {
             fig.label(
@@ -286,7 +376,6 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
     }
 
     // Shadow rays first, then the rays, then hits and normals on top.
-    segments.sort_by_key(|s| s.arrow);
     for s in &segments {
         let end = match s.to {
             Some(to) => clip_segment(s.from, to, vlo, vhi),
@@ -301,12 +390,11 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
         }
     }
     let normal_length = 45.0 / fig.scale();
-    for (k, node) in nodes.iter().filter(|n| n.hit.is_some()).enumerate() {
-        let hit = node.hit.as_ref().expect("filtered");
-        let p = proj.point(hit.point);
-        let tip = p + proj.vector(hit.shading_normal) * normal_length;
+    for (k, hit) in hits.iter().enumerate() {
+        let p = hit.at;
+        let tip = p + hit.normal * normal_length;
         fig.arrow(p, tip, NORMAL);
-        fig.dot(p, 4.0, ray_pen(node.kind).color, Some(palette::INK));
+        fig.dot(p, 4.0, ray_pen(hit.kind).color, Some(palette::INK));
         if options.labels == Labels::All {
             fig.label(
                 p,
