@@ -15,6 +15,7 @@ pub mod draw;
 pub mod float;
 pub mod hit;
 pub mod image_file;
+pub mod inspector;
 pub mod light;
 pub mod material;
 pub mod object;

@@ -34,6 +34,20 @@ enum Command {
     Trace(TraceArgs),
     /// Draw one pixel's (or one ray's) ray tree over the scene as a 2D figure (PNG).
     Diagram(DiagramArgs),
+    /// Explore a scene in the terminal: pick a pixel, walk its ray tree step by step.
+    Inspect(InspectArgs),
+}
+
+#[derive(Args)]
+struct InspectArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Start at this pixel (image coordinates) [default: the image's center].
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pixel: Option<(u32, u32)>,
+    /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff"])]
+    trace: Option<PathBuf>,
 }
 
 /// A scene and the settings that override its `render` block.
@@ -254,6 +268,7 @@ fn create_output(path: &std::path::Path) -> Result<PendingFile> {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let _ = ctrlc::set_handler(|| {
+        raytree::inspector::restore();
         for path in PENDING.lock().unwrap_or_else(|e| e.into_inner()).drain(..) {
             let _ = std::fs::remove_file(path);
         }
@@ -264,6 +279,7 @@ fn main() -> ExitCode {
         Command::Render(args) => run_render(&args),
         Command::Trace(args) => run_trace(&args),
         Command::Diagram(args) => run_diagram(&args),
+        Command::Inspect(args) => run_inspect(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -323,6 +339,84 @@ fn run_diagram(args: &DiagramArgs) -> Result<()> {
     };
     let figure = raytree::diagram::draw(&trace, &scene, &options).map_err(anyhow::Error::msg)?;
     pending.commit(&figure.png())
+}
+
+fn run_inspect(args: &InspectArgs) -> Result<()> {
+    let app = match &args.trace {
+        None => {
+            let (scene, source) = args.scene.load()?;
+            if let Some((x, y)) = args.pixel {
+                let s = &scene.settings;
+                if x >= s.width || y >= s.height {
+                    bail!(
+                        "--pixel {x},{y} is outside the {}×{} image",
+                        s.width,
+                        s.height
+                    );
+                }
+            }
+            raytree::inspector::App::new(scene, source, args.pixel, true)
+        }
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| anyhow::anyhow!("cannot read {}: {}", path.display(), e.kind()))?;
+            let trace: Trace = serde_json::from_str(&text).map_err(|e| {
+                anyhow::anyhow!(
+                    "{}:{}:{}: not a raytree trace: {}",
+                    path.display(),
+                    e.line(),
+                    e.column(),
+                    strip_position(&e.to_string())
+                )
+            })?;
+            if trace.format != raytree::trace::FORMAT || trace.version != raytree::trace::VERSION {
+                bail!(
+                    "{}: a {} version {} document; this raytree reads {} version {}",
+                    path.display(),
+                    trace.format,
+                    trace.version,
+                    raytree::trace::FORMAT,
+                    raytree::trace::VERSION
+                );
+            }
+            let scene = scene_of(&trace);
+            let mut app = raytree::inspector::App::from_trace(trace, scene.map(|(s, _)| s), true);
+            if let Some((_, false)) = scene_of(app.trace.as_ref().expect("just set")) {
+                app.message = format!("{} changed since the trace was saved", app.source.file);
+            }
+            app
+        }
+    };
+    raytree::inspector::run(app).context("the terminal failed")
+}
+
+/// The scene a saved trace names, with its settings, if the file is found; and
+/// whether its contents still hash the same.
+fn scene_of(trace: &Trace) -> Option<(Scene, bool)> {
+    let (mut scene, text) = if trace.scene.file == "whitted.json (built in)" {
+        (scene_file::whitted(), scene_file::WHITTED.to_owned())
+    } else {
+        let text = std::fs::read_to_string(&trace.scene.file).ok()?;
+        (scene_file::parse(&text, &trace.scene.file).ok()?, text)
+    };
+    let t = trace.settings;
+    scene.settings = raytree::scene::RenderSettings {
+        width: t.width,
+        height: t.height,
+        spp: t.spp,
+        max_depth: t.max_depth,
+        cutoff: t.cutoff,
+    };
+    scene.settings.validate().ok()?;
+    let same = SceneRef::new(&trace.scene.file, &text).hash == trace.scene.hash;
+    Some((scene, same))
+}
+
+/// serde_json's message without its " at line L column C".
+fn strip_position(message: &str) -> &str {
+    message
+        .rfind(" at line ")
+        .map_or(message, |i| &message[..i])
 }
 
 /// Writes to standard output; a closed pipe (`| head`) is not an error.

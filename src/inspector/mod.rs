@@ -1,0 +1,91 @@
+//! `raytree inspect`: pick a pixel, walk its ray tree step by step, in the terminal.
+//!
+//! [`App`] holds the state and handles keys without a terminal (tested
+//! directly); [`ui`] draws it; this module owns the terminal: raw mode, the
+//! alternate screen and mouse capture are switched on here and restored on every
+//! way out (quit, error, panic, SIGINT).
+
+mod app;
+mod preview;
+mod ui;
+
+use std::io::{IsTerminal, Stdout, stdout};
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::time::Duration;
+
+use ratatui::Terminal;
+use ratatui::backend::CrosstermBackend;
+use ratatui::crossterm::event::{
+    self, DisableMouseCapture, EnableMouseCapture, Event, KeyEventKind,
+};
+use ratatui::crossterm::execute;
+use ratatui::crossterm::terminal::{
+    EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
+};
+
+pub use app::{App, Areas, Focus, Item};
+pub use preview::{Picture, Window, trace_picture};
+pub use ui::{KEYS, draw, truecolor};
+
+static ACTIVE: AtomicBool = AtomicBool::new(false);
+
+/// Runs the inspector until the user quits.
+pub fn run(mut app: App) -> std::io::Result<()> {
+    if !stdout().is_terminal() {
+        return Err(std::io::Error::other(
+            "raytree inspect needs a terminal (standard output is not one)",
+        ));
+    }
+    app.truecolor = ui::truecolor();
+    let mut terminal = setup()?;
+    let result = event_loop(&mut terminal, &mut app);
+    restore();
+    result
+}
+
+fn setup() -> std::io::Result<Terminal<CrosstermBackend<Stdout>>> {
+    let previous = std::panic::take_hook();
+    std::panic::set_hook(Box::new(move |info| {
+        restore();
+        previous(info);
+    }));
+    enable_raw_mode()?;
+    ACTIVE.store(true, Ordering::SeqCst);
+    execute!(stdout(), EnterAlternateScreen, EnableMouseCapture)?;
+    Terminal::new(CrosstermBackend::new(stdout()))
+}
+
+/// Gives the terminal back (mouse capture off, main screen, cooked mode, cursor
+/// shown) if the inspector has it; safe to call more than once.
+pub fn restore() {
+    if ACTIVE.swap(false, Ordering::SeqCst) {
+        let _ = execute!(
+            stdout(),
+            DisableMouseCapture,
+            LeaveAlternateScreen,
+            ratatui::crossterm::cursor::Show
+        );
+        let _ = disable_raw_mode();
+    }
+}
+
+fn event_loop(
+    terminal: &mut Terminal<CrosstermBackend<Stdout>>,
+    app: &mut App,
+) -> std::io::Result<()> {
+    loop {
+        terminal.draw(|frame| draw(frame, app))?;
+        if app.quit {
+            return Ok(());
+        }
+        // Wake up often enough to show the picture as it refines.
+        if event::poll(Duration::from_millis(30))? {
+            match event::read()? {
+                Event::Key(key) if key.kind == KeyEventKind::Press => app.on_key(key),
+                Event::Mouse(m) => app.on_mouse(m),
+                _ => {} // A resize: the next draw lays out again.
+            }
+        }
+        app.receive_picture();
+    }
+}

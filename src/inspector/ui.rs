@@ -1,0 +1,565 @@
+//! Drawing the inspector: the image pane (half-block cells, two dots each),
+//! the ray tree, the selected ray's numbers, the diagram (Braille canvas, the
+//! same projection and colors as `raytree diagram`), the step and status lines.
+
+use glam::{DVec2, DVec3};
+use ratatui::Frame;
+use ratatui::buffer::Buffer;
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::style::{Color, Modifier, Style};
+use ratatui::symbols::Marker;
+use ratatui::text::{Line, Span};
+use ratatui::widgets::canvas::{Canvas, Context, Line as CanvasLine, Points};
+use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
+
+use super::app::{App, Areas, Focus, Item};
+use crate::diagram::{Options, layout};
+use crate::draw::{Rgb, clip_line, clip_ray, clip_segment, palette};
+use crate::image_file::rgb8;
+use crate::projection::Outline;
+use crate::ray_tree::{Outcome, RayNode};
+use crate::show::{num, vec3};
+use crate::steps::kind_name;
+
+/// Every key, for the help overlay and the README.
+pub const KEYS: &[(&str, &str)] = &[
+    (
+        "←↑↓→ / hjkl",
+        "move the pixel cursor (image pane) or through the tree (tree pane)",
+    ),
+    ("click", "select a pixel (image pane) or a line (tree pane)"),
+    ("+ / -", "zoom in / out around the cursor"),
+    ("g", "go to a pixel: type x,y and Enter"),
+    ("Tab", "switch between the image and the tree pane"),
+    (
+        "Enter / →",
+        "expand the selected ray (tree pane); from the image, go to the tree",
+    ),
+    ("←", "collapse the selected ray, or go to its parent"),
+    ("e", "expand the whole tree"),
+    ("n / space", "next step of the algorithm"),
+    ("p / Backspace", "previous step"),
+    ("?", "this help"),
+    ("q / Esc", "quit"),
+];
+
+/// Whether the terminal takes 24-bit color (else the 256-color palette).
+pub fn truecolor() -> bool {
+    std::env::var("COLORTERM").is_ok_and(|v| v.contains("truecolor") || v.contains("24bit"))
+}
+
+fn term_color(c: Rgb, truecolor: bool) -> Color {
+    if truecolor {
+        Color::Rgb(c[0], c[1], c[2])
+    } else {
+        // The 6 × 6 × 6 color cube of the 256-color palette.
+        let q = |v: u8| (u16::from(v) * 5 + 127) / 255;
+        Color::Indexed((16 + 36 * q(c[0]) + 6 * q(c[1]) + q(c[2])) as u8)
+    }
+}
+
+fn swatch(c: DVec3, tc: bool) -> Span<'static> {
+    Span::styled("██", Style::default().fg(term_color(rgb8(c), tc)))
+}
+
+/// Draws the whole inspector.
+pub fn draw(frame: &mut Frame, app: &mut App) {
+    let tc = app.truecolor;
+    let [main, step_line, status_line] = Layout::vertical([
+        Constraint::Min(6),
+        Constraint::Length(1),
+        Constraint::Length(1),
+    ])
+    .areas(frame.area());
+    let [left, right] =
+        Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)]).areas(main);
+    let [image_area, diagram_area] =
+        Layout::vertical([Constraint::Percentage(60), Constraint::Percentage(40)]).areas(left);
+    let [tree_area, detail_area] =
+        Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(right);
+
+    let focused = |f: Focus| {
+        if app.focus == f {
+            Style::default()
+                .fg(Color::Yellow)
+                .add_modifier(Modifier::BOLD)
+        } else {
+            Style::default()
+        }
+    };
+    let image_block = Block::default()
+        .borders(Borders::ALL)
+        .title(" image ")
+        .border_style(focused(Focus::Image));
+    let tree_block = Block::default()
+        .borders(Borders::ALL)
+        .title(" ray tree ")
+        .border_style(focused(Focus::Tree));
+    app.areas = Areas {
+        image: image_block.inner(image_area),
+        tree: tree_block.inner(tree_area),
+    };
+    app.request_picture();
+
+    frame.render_widget(image_block, image_area);
+    frame.render_widget(ImagePane { app, truecolor: tc }, app.areas.image);
+    draw_tree(frame, app, tree_block, tree_area, tc);
+    draw_details(frame, app, detail_area, tc);
+    draw_diagram(frame, app, diagram_area, tc);
+
+    let step = match (&app.goto, app.step) {
+        (Some(typed), _) => Line::from(vec![
+            Span::styled(
+                "go to pixel (x,y): ",
+                Style::default().add_modifier(Modifier::BOLD),
+            ),
+            Span::raw(format!("{typed}▏")),
+        ]),
+        (None, Some(s)) => Line::from(vec![
+            Span::styled(
+                format!("step {}/{}: ", s + 1, app.steps.len()),
+                Style::default().add_modifier(Modifier::BOLD),
+            ),
+            Span::raw(app.steps[s].text.clone()),
+        ]),
+        (None, None) => Line::from(format!(
+            "press n to step through the algorithm ({} steps), ? for every key",
+            app.steps.len()
+        )),
+    };
+    frame.render_widget(Paragraph::new(step), step_line);
+    let (w, h) = app.image_size();
+    let mut status = format!(
+        "pixel {},{} of {w}×{h} · zoom {}× · {} · traced in {:.2} ms",
+        app.cursor.0,
+        app.cursor.1,
+        1u32 << app.zoom,
+        app.source.file,
+        app.trace_time.as_secs_f64() * 1e3
+    );
+    if !app.message.is_empty() {
+        status = format!("{} · {status}", app.message);
+    }
+    frame.render_widget(
+        Paragraph::new(Line::from(vec![
+            Span::styled(status, Style::default().add_modifier(Modifier::DIM)),
+            Span::raw("   ? help  q quit"),
+        ])),
+        status_line,
+    );
+
+    if app.help {
+        draw_help(frame);
+    }
+}
+
+struct ImagePane<'a> {
+    app: &'a App,
+    truecolor: bool,
+}
+
+impl Widget for ImagePane<'_> {
+    fn render(self, area: Rect, buf: &mut Buffer) {
+        let app = self.app;
+        if app.scene.is_none() {
+            Paragraph::new("no scene: the image is not available")
+                .wrap(Wrap { trim: true })
+                .render(area, buf);
+            return;
+        }
+        let window = app.window();
+        let unknown = Color::Rgb(40, 40, 40);
+        let dot = |i: u16, j: u16| -> Color {
+            if app.picture.as_ref().is_some_and(|p| p.window == window) {
+                let p = app.picture.as_ref().expect("checked");
+                p.dots[usize::from(j) * usize::from(window.cols) + usize::from(i)]
+                    .map_or(Color::Reset, |c| term_color(c, self.truecolor))
+            } else {
+                unknown
+            }
+        };
+        let cursor = window.dot_of(app.cursor.0, app.cursor.1);
+        let mark = Color::Rgb(255, 0, 255);
+        for row in 0..area.height {
+            for col in 0..area.width {
+                let (top, bottom) = (2 * row, 2 * row + 1);
+                let fg = if cursor == Some((col, top)) {
+                    mark
+                } else {
+                    dot(col, top)
+                };
+                let bg = if cursor == Some((col, bottom)) {
+                    mark
+                } else {
+                    dot(col, bottom)
+                };
+                if let Some(cell) = buf.cell_mut((area.x + col, area.y + row)) {
+                    cell.set_symbol("▀").set_fg(fg).set_bg(bg);
+                }
+            }
+        }
+    }
+}
+
+fn ray_line(app: &App, node: &RayNode, n: usize, tc: bool) -> Vec<Span<'static>> {
+    let what = node
+        .hit
+        .as_ref()
+        .map_or("background".to_owned(), |h| format!("'{}'", h.name));
+    let mut spans = vec![
+        Span::styled(
+            format!("{} ", kind_name(node.kind)),
+            Style::default()
+                .fg(term_color(crate::diagram::ray_pen(node.kind).color, tc))
+                .add_modifier(Modifier::BOLD),
+        ),
+        Span::raw(format!("d{} {what} ", node.depth)),
+        swatch(node.color(), tc),
+    ];
+    let why = app.stop_reason(n);
+    if !why.is_empty() {
+        spans.push(Span::styled(
+            format!(" {why}"),
+            Style::default().add_modifier(Modifier::DIM),
+        ));
+    }
+    spans
+}
+
+fn shadow_text(node: &RayNode, k: usize) -> String {
+    let s = &node.shadow_rays[k];
+    let what = match &s.outcome {
+        Outcome::FacesAway => "faces away".to_owned(),
+        Outcome::Reaches { transmitted } if *transmitted == 1.0 => "reaches the light".to_owned(),
+        Outcome::Reaches { transmitted } => {
+            format!("reaches the light, keeping {}", num(*transmitted))
+        }
+        Outcome::Blocked { name, t, .. } => format!("blocked by '{name}' at t = {}", num(*t)),
+    };
+    format!("shadow → '{}': {what}", s.name)
+}
+
+fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
+    let Some(trace) = &app.trace else {
+        frame.render_widget(Paragraph::new("no pixel traced").block(block), area);
+        return;
+    };
+    let nodes = &trace.samples[0].tree.nodes;
+    let inner = block.inner(area);
+    let step_node = app.step.map(|s| app.steps[s].node);
+    let items = app.items();
+    let scroll = app.tree_scroll(inner.height);
+    let lines: Vec<Line> = items
+        .iter()
+        .enumerate()
+        .skip(scroll)
+        .take(usize::from(inner.height))
+        .map(|(row, &(item, indent))| {
+            let mut spans = vec![Span::raw("  ".repeat(indent))];
+            match item {
+                Item::Ray(n) => {
+                    let marker = if !app.expandable(n) {
+                        "  "
+                    } else if app.expanded.contains(&n) {
+                        "▾ "
+                    } else {
+                        "▸ "
+                    };
+                    spans.push(Span::raw(marker));
+                    spans.extend(ray_line(app, &nodes[n], n, tc));
+                }
+                Item::Shadow(n, k) => spans.push(Span::styled(
+                    format!("  {}", shadow_text(&nodes[n], k)),
+                    Style::default().fg(term_color(palette::SHADOW_REACHES, tc)),
+                )),
+            }
+            let mut line = Line::from(spans);
+            if row == app.selected {
+                line = line.style(Style::default().add_modifier(Modifier::REVERSED));
+            } else if step_node == Some(item.node()) && matches!(item, Item::Ray(_)) {
+                line = line.style(Style::default().add_modifier(Modifier::UNDERLINED));
+            }
+            line
+        })
+        .collect();
+    frame.render_widget(Paragraph::new(lines).block(block), area);
+}
+
+fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
+    let Some(trace) = &app.trace else {
+        return vec![];
+    };
+    let nodes = &trace.samples[0].tree.nodes;
+    let Some(item) = app.selected_item() else {
+        return vec![];
+    };
+    let node = &nodes[item.node()];
+    let row = |k: &str, v: String| {
+        Line::from(vec![
+            Span::styled(
+                format!("{k:<10}"),
+                Style::default().add_modifier(Modifier::BOLD),
+            ),
+            Span::raw(v),
+        ])
+    };
+    let mut out = Vec::new();
+    if let Item::Shadow(_, k) = item {
+        let s = &node.shadow_rays[k];
+        out.push(Line::from(shadow_text(node, k)));
+        out.push(row("origin", vec3(s.origin)));
+        out.push(row(
+            "direction",
+            format!("{} (t = 1 at the light)", vec3(s.direction)),
+        ));
+        out.push(row("interval", format!("t in (0, {})", num(s.t_max))));
+        return out;
+    }
+    out.push(Line::from(format!(
+        "{} ray · depth {} · weight {}",
+        kind_name(node.kind),
+        node.depth,
+        num(node.weight)
+    )));
+    out.push(row("origin", vec3(node.origin)));
+    out.push(row("direction", vec3(node.direction)));
+    out.push(row(
+        "interval",
+        format!(
+            "t in ({}, {})",
+            num(node.t_min),
+            node.t_max.map_or("∞".to_owned(), num)
+        ),
+    ));
+    let tests: Vec<String> = node
+        .tests
+        .iter()
+        .map(|t| {
+            if t.roots.is_empty() {
+                format!("{} miss", t.name)
+            } else {
+                format!(
+                    "{} t={}",
+                    t.name,
+                    t.roots
+                        .iter()
+                        .map(|&r| num(r))
+                        .collect::<Vec<_>>()
+                        .join(",")
+                )
+            }
+        })
+        .collect();
+    out.push(row("tested", tests.join(" · ")));
+    match &node.hit {
+        None => out.push(row(
+            "hit",
+            format!("nothing: background {}", vec3(node.sum.color)),
+        )),
+        Some(h) => {
+            out.push(row(
+                "hit",
+                format!("'{}' (material {}) at t = {}", h.name, h.material, num(h.t)),
+            ));
+            out.push(row("point", vec3(h.point)));
+            out.push(row(
+                "normal",
+                format!("{} (shading {})", vec3(h.normal), vec3(h.shading_normal)),
+            ));
+            out.push(row(
+                "side",
+                format!(
+                    "{}, n {} → {}",
+                    if h.entering { "entering" } else { "leaving" },
+                    num(h.n1),
+                    num(h.n2)
+                ),
+            ));
+            for k in 0..node.shadow_rays.len() {
+                out.push(row(
+                    if k == 0 { "shadows" } else { "" },
+                    shadow_text(node, k),
+                ));
+            }
+        }
+    }
+    let s = &node.sum;
+    if let Some(local) = &node.local {
+        out.push(Line::from(vec![
+            Span::styled("color     ", Style::default().add_modifier(Modifier::BOLD)),
+            Span::raw(format!("  ambient {}", vec3(local.ambient))),
+        ]));
+        for l in &local.lights {
+            out.push(Line::from(format!(
+                "          + '{}': diffuse {} + specular {}",
+                l.name,
+                vec3(l.diffuse),
+                vec3(l.specular)
+            )));
+        }
+        out.push(Line::from(format!("          = local {}", vec3(s.local))));
+        out.push(Line::from(format!(
+            "          + {} × reflected {}",
+            num(s.k_rfl),
+            vec3(s.reflected)
+        )));
+        out.push(Line::from(format!(
+            "          + {} × refracted {}",
+            num(s.k_rfa),
+            vec3(s.refracted)
+        )));
+    }
+    out.push(Line::from(vec![
+        Span::raw(format!("          = {} ", vec3(s.color))),
+        swatch(s.color, tc),
+    ]));
+    out
+}
+
+fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .title(" selected ray ");
+    frame.render_widget(
+        Paragraph::new(details(app, tc))
+            .block(block)
+            .wrap(Wrap { trim: false }),
+        area,
+    );
+}
+
+fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
+    let block = Block::default()
+        .borders(Borders::ALL)
+        .title(" diagram: plane of incidence at the first hit ");
+    let (Some(trace), Some(scene)) = (&app.trace, &app.scene) else {
+        frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
+        return;
+    };
+    let Ok(lay) = layout(trace, scene, &Options::default()) else {
+        return;
+    };
+    let inner = block.inner(area);
+    // Braille dots are about square: 2 across and 4 down per cell, a cell twice as tall as wide.
+    let (dots_w, dots_h) = (
+        f64::from(inner.width.max(1)) * 2.0,
+        f64::from(inner.height.max(1)) * 4.0,
+    );
+    let (mut lo, mut hi) = (lay.lo, lay.hi);
+    let size = (hi - lo).max(DVec2::splat(1e-9)) * 1.1;
+    let center = (lo + hi) / 2.0;
+    let per_dot = (size.x / dots_w).max(size.y / dots_h);
+    let half = DVec2::new(dots_w, dots_h) * per_dot / 2.0;
+    (lo, hi) = (center - half, center + half);
+    let selected = app.selected_item().map(|i| i.node());
+    let color = |c: Rgb| term_color(c, tc);
+    let canvas = Canvas::default()
+        .block(block)
+        .marker(Marker::Braille)
+        .x_bounds([lo.x, hi.x])
+        .y_bounds([lo.y, hi.y])
+        .paint(move |ctx: &mut Context| {
+            let seg = |ctx: &mut Context, a: DVec2, b: DVec2, c: Color| {
+                ctx.draw(&CanvasLine {
+                    x1: a.x,
+                    y1: a.y,
+                    x2: b.x,
+                    y2: b.y,
+                    color: c,
+                })
+            };
+            for (i, outline) in lay.outlines.iter().enumerate() {
+                let c = if lay.touched.contains(&i) {
+                    color(palette::OBJECT_FILL)
+                } else {
+                    color([110, 110, 110])
+                };
+                match *outline {
+                    Outline::Ellipse { center, axes } => {
+                        let at = |k: u32| {
+                            let t = std::f64::consts::TAU * f64::from(k) / 96.0;
+                            center + t.cos() * axes[0] + t.sin() * axes[1]
+                        };
+                        for k in 0..96 {
+                            seg(ctx, at(k), at(k + 1), c);
+                        }
+                    }
+                    Outline::Line { point, dir, .. } => {
+                        if let Some((a, b)) = clip_line(point, dir, lo, hi) {
+                            seg(ctx, a, b, c);
+                        }
+                    }
+                    Outline::Parallel => {}
+                }
+            }
+            if let Some((a, b, _)) = lay.image_plane {
+                seg(ctx, a, b, Color::Gray);
+            }
+            // The selected ray last, in white, over the others.
+            let mut order: Vec<_> = lay.segments.iter().collect();
+            order.sort_by_key(|s| (Some(s.node) == selected && s.arrow, s.arrow));
+            for s in order {
+                let ends = match s.to {
+                    Some(to) => clip_segment(s.from, to, lo, hi),
+                    None => clip_ray(s.from, s.dir, lo, hi, 0.0),
+                };
+                let c = if Some(s.node) == selected && s.arrow {
+                    Color::White
+                } else {
+                    color(s.pen.color)
+                };
+                if let Some((a, b)) = ends {
+                    seg(ctx, a, b, c);
+                }
+            }
+            let hits: Vec<(f64, f64)> = lay.hits.iter().map(|h| (h.at.x, h.at.y)).collect();
+            ctx.draw(&Points {
+                coords: &hits,
+                color: Color::White,
+            });
+            let lights: Vec<(f64, f64)> = lay.lights.iter().map(|p| (p.x, p.y)).collect();
+            ctx.draw(&Points {
+                coords: &lights,
+                color: color(palette::LIGHT),
+            });
+            ctx.print(
+                lay.eye.x,
+                lay.eye.y,
+                Span::styled("eye", Style::default().fg(Color::Gray)),
+            );
+        });
+    frame.render_widget(canvas, area);
+}
+
+fn draw_help(frame: &mut Frame) {
+    let area = frame.area();
+    let width = 78.min(area.width);
+    let height = (KEYS.len() as u16 + 4).min(area.height);
+    let rect = Rect {
+        x: area.x + (area.width - width) / 2,
+        y: area.y + (area.height - height) / 2,
+        width,
+        height,
+    };
+    let lines: Vec<Line> = KEYS
+        .iter()
+        .map(|(k, what)| {
+            Line::from(vec![
+                Span::styled(
+                    format!("{k:<15}"),
+                    Style::default().add_modifier(Modifier::BOLD),
+                ),
+                Span::raw(*what),
+            ])
+        })
+        .collect();
+    frame.render_widget(Clear, rect);
+    frame.render_widget(
+        Paragraph::new(lines).block(
+            Block::default()
+                .borders(Borders::ALL)
+                .title(" keys (any key closes) "),
+        ),
+        rect,
+    );
+}
