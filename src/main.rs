@@ -342,6 +342,10 @@ fn run_diagram(args: &DiagramArgs) -> Result<()> {
 }
 
 fn run_inspect(args: &InspectArgs) -> Result<()> {
+    use std::io::IsTerminal;
+    if !std::io::stdout().is_terminal() {
+        bail!("raytree inspect needs a terminal (standard output is not one)");
+    }
     let app = match &args.trace {
         None => {
             let (scene, source) = args.scene.load()?;
@@ -358,8 +362,7 @@ fn run_inspect(args: &InspectArgs) -> Result<()> {
             raytree::inspector::App::new(scene, source, args.pixel, true)
         }
         Some(path) => {
-            let text = std::fs::read_to_string(path)
-                .map_err(|e| anyhow::anyhow!("cannot read {}: {}", path.display(), e.kind()))?;
+            let text = scene_file::read(path)?;
             let trace: Trace = serde_json::from_str(&text).map_err(|e| {
                 anyhow::anyhow!(
                     "{}:{}:{}: not a raytree trace: {}",
@@ -387,7 +390,7 @@ fn run_inspect(args: &InspectArgs) -> Result<()> {
             app
         }
     };
-    raytree::inspector::run(app).context("the terminal failed")
+    raytree::inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
 }
 
 /// The scene a saved trace names, with its settings, if the file is found; and

@@ -626,3 +626,12 @@ fn diagram_refuses_bad_requests() {
     }
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+#[test]
+fn inspect_refuses_to_run_without_a_terminal_or_with_a_bad_trace() {
+    // The test harness captures standard output, so it is not a terminal.
+    assert_eq!(
+        fails_in("inspect", "inspect-tty", None, &[]),
+        "error: raytree inspect needs a terminal (standard output is not one)"
+    );
+}
