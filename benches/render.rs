@@ -95,9 +95,9 @@ fn record_pixel(bencher: Bencher) {
 
 /// The inspector: selecting a pixel (trace it, build its tree, steps and panes)
 /// and drawing the whole screen, 160 × 48 cells. Target: under 50 ms.
-#[divan::bench(sample_count = 50)]
-fn inspector_select_pixel(bencher: Bencher) {
-    use ratatui::{Terminal, backend::TestBackend, layout::Rect};
+/// An inspector on the Whitted scene laid out as on a 160 × 48 terminal, no worker thread.
+fn inspector_on_whitted() -> raytree::inspector::App {
+    use ratatui::layout::Rect;
     let scene = raytree::scene_file::whitted();
     let mut app =
         raytree::inspector::App::new(scene, SceneRef::new("whitted.json", ""), None, false);
@@ -105,6 +105,13 @@ fn inspector_select_pixel(bencher: Bencher) {
         image: Rect::new(1, 1, 78, 27),
         tree: Rect::new(81, 1, 78, 19),
     };
+    app
+}
+
+#[divan::bench(sample_count = 50)]
+fn inspector_select_pixel(bencher: Bencher) {
+    use ratatui::{Terminal, backend::TestBackend};
+    let mut app = inspector_on_whitted();
     app.render_picture_now();
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
     bencher.bench_local(|| {
@@ -119,15 +126,9 @@ fn inspector_select_pixel(bencher: Bencher) {
 /// the coarse pass of a 78 × 54-dot image pane, draw 160 × 48 cells. Target: under 200 ms.
 #[divan::bench(sample_count = 30)]
 fn inspector_first_frame(bencher: Bencher) {
-    use ratatui::{Terminal, backend::TestBackend, layout::Rect};
+    use ratatui::{Terminal, backend::TestBackend};
     bencher.bench_local(|| {
-        let scene = raytree::scene_file::whitted();
-        let mut app =
-            raytree::inspector::App::new(scene, SceneRef::new("whitted.json", ""), None, false);
-        app.areas = raytree::inspector::Areas {
-            image: Rect::new(1, 1, 78, 27),
-            tree: Rect::new(81, 1, 78, 19),
-        };
+        let mut app = inspector_on_whitted();
         let window = app.window();
         app.picture =
             raytree::inspector::trace_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);

@@ -182,18 +182,9 @@ impl Figure {
     }
 
     fn stroke_px(&mut self, points: &[DVec2], pen: Pen, close: bool) {
-        let mut pb = PathBuilder::new();
-        for (i, p) in points.iter().enumerate() {
-            if i == 0 {
-                pb.move_to(p.x as f32, p.y as f32)
-            } else {
-                pb.line_to(p.x as f32, p.y as f32)
-            }
-        }
-        if close {
-            pb.close();
-        }
-        let Some(path) = pb.finish() else { return };
+        let Some(path) = polyline(points, close) else {
+            return;
+        };
         let mut stroke = Stroke {
             width: pen.width,
             ..Stroke::default()
@@ -211,16 +202,7 @@ impl Figure {
     }
 
     fn fill_px(&mut self, points: &[DVec2], fill: Rgb, alpha: u8) {
-        let mut pb = PathBuilder::new();
-        for (i, p) in points.iter().enumerate() {
-            if i == 0 {
-                pb.move_to(p.x as f32, p.y as f32)
-            } else {
-                pb.line_to(p.x as f32, p.y as f32)
-            }
-        }
-        pb.close();
-        if let Some(path) = pb.finish() {
+        if let Some(path) = polyline(points, true) {
             self.pixmap.fill_path(
                 &path,
                 &paint(fill, alpha),
@@ -544,6 +526,22 @@ impl Figure {
 }
 
 const LEGEND_SAMPLE: f64 = 36.0;
+
+/// The path through `points` (pixels), closed or open.
+fn polyline(points: &[DVec2], close: bool) -> Option<tiny_skia::Path> {
+    let mut pb = PathBuilder::new();
+    for (i, p) in points.iter().enumerate() {
+        if i == 0 {
+            pb.move_to(p.x as f32, p.y as f32)
+        } else {
+            pb.line_to(p.x as f32, p.y as f32)
+        }
+    }
+    if close {
+        pb.close();
+    }
+    pb.finish()
+}
 
 fn color(c: Rgb) -> Color {
     Color::from_rgba8(c[0], c[1], c[2], 255)
