@@ -18,6 +18,7 @@ pub mod image_file;
 pub mod inspector;
 pub mod light;
 pub mod material;
+pub mod methods;
 pub mod object;
 pub mod optics;
 pub mod phong;

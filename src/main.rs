@@ -46,7 +46,7 @@ struct InspectArgs {
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
     /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff"])]
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff", "sphere", "offset", "weights"])]
     trace: Option<PathBuf>,
 }
 
@@ -70,6 +70,34 @@ struct SceneArgs {
     /// Skip reflected and refracted rays whose weight (product of coefficients) is below this; 0 turns it off.
     #[arg(long, value_name = "W")]
     cutoff: Option<f64>,
+    /// Ray–sphere intersection: the lecture's quadratic as written, or the stable form [default: stable].
+    #[arg(long, value_enum)]
+    sphere: Option<raytree::methods::SphereMethod>,
+    /// Where secondary rays start: none (at the hit: acne), epsilon=E (E along the normal), robust [default: robust].
+    #[arg(long, value_name = "none|robust|epsilon=E", value_parser = parse_offset)]
+    offset: Option<raytree::methods::Offset>,
+    /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
+    #[arg(long, value_enum)]
+    weights: Option<raytree::methods::Weights>,
+}
+
+fn parse_offset(s: &str) -> Result<raytree::methods::Offset, String> {
+    use raytree::methods::Offset;
+    match s {
+        "none" => Ok(Offset::None),
+        "robust" => Ok(Offset::Robust),
+        _ => {
+            let e = s
+                .strip_prefix("epsilon=")
+                .ok_or("expected none, robust or epsilon=E (e.g. epsilon=1e-4)")?;
+            let e: f64 = e.parse().map_err(|_| format!("'{e}' is not a number"))?;
+            if e.is_finite() && e > 0.0 {
+                Ok(Offset::Epsilon(e))
+            } else {
+                Err(format!("the epsilon must be > 0, got {e}"))
+            }
+        }
+    }
 }
 
 impl SceneArgs {
@@ -96,6 +124,9 @@ impl SceneArgs {
         s.spp = self.spp.unwrap_or(s.spp);
         s.max_depth = self.max_depth.unwrap_or(s.max_depth);
         s.cutoff = self.cutoff.unwrap_or(s.cutoff);
+        s.sphere = self.sphere.unwrap_or(s.sphere);
+        s.offset = self.offset.unwrap_or(s.offset);
+        s.weights = self.weights.unwrap_or(s.weights);
         if let Err((field, message)) = s.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }
@@ -402,14 +433,7 @@ fn scene_of(trace: &Trace) -> Option<(Scene, bool)> {
         let text = std::fs::read_to_string(&trace.scene.file).ok()?;
         (scene_file::parse(&text, &trace.scene.file).ok()?, text)
     };
-    let t = trace.settings;
-    scene.settings = raytree::scene::RenderSettings {
-        width: t.width,
-        height: t.height,
-        spp: t.spp,
-        max_depth: t.max_depth,
-        cutoff: t.cutoff,
-    };
+    scene.settings = trace.settings;
     scene.settings.validate().ok()?;
     let same = SceneRef::new(&trace.scene.file, &text).hash == trace.scene.hash;
     Some((scene, same))

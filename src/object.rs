@@ -3,6 +3,7 @@
 use glam::DVec3;
 
 use crate::hit::{Roots, Surface};
+use crate::methods::SphereMethod;
 use crate::plane::Plane;
 use crate::ray::Ray;
 use crate::sphere::Sphere;
@@ -18,10 +19,11 @@ pub enum Shape {
 }
 
 impl Shape {
-    /// Every root of the ray with the shape.
+    /// Every root of the ray with the shape, spheres by `method`.
     #[inline]
-    pub fn roots(&self, ray: &Ray) -> Roots {
+    pub fn roots(&self, ray: &Ray, method: SphereMethod) -> Roots {
         match self {
+            Shape::Sphere(s) if method == SphereMethod::Lecture => s.lecture_roots(ray),
             Shape::Sphere(s) => s.roots(ray),
             Shape::Plane(p) => p.roots(ray),
         }
@@ -68,10 +70,10 @@ pub struct Object {
 impl Object {
     /// Every root of a world ray with the object; `t` refers to the world ray.
     #[inline]
-    pub fn roots(&self, ray: &Ray) -> Roots {
+    pub fn roots(&self, ray: &Ray, method: SphereMethod) -> Roots {
         match &self.transform {
-            None => self.shape.roots(ray),
-            Some(tf) => self.shape.roots(&tf.ray_to_object(ray)),
+            None => self.shape.roots(ray, method),
+            Some(tf) => self.shape.roots(&tf.ray_to_object(ray), method),
         }
     }
 

@@ -6,11 +6,13 @@ use glam::DVec3;
 use crate::camera::{Camera, CameraSpec};
 use crate::light::PointLight;
 use crate::material::Material;
+use crate::methods::{Offset, SphereMethod, Weights};
 use crate::object::Object;
 use crate::optics::Media;
 
-/// How to render: image size, sampling and recursion limits.
-#[derive(Clone, Copy, Debug, PartialEq)]
+/// How to render: image size, sampling, recursion limits and methods.
+#[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
 pub struct RenderSettings {
     /// Image width in pixels (`N_c`).
     pub width: u32,
@@ -23,6 +25,12 @@ pub struct RenderSettings {
     /// A branch whose weight (product of coefficients down to it) falls below this
     /// is not traced (Hall & Greenberg 1983); 0 turns the cutoff off.
     pub cutoff: f64,
+    /// How rays meet spheres.
+    pub sphere: SphereMethod,
+    /// Where secondary rays start.
+    pub offset: Offset,
+    /// How transparent surfaces split light between reflection and refraction.
+    pub weights: Weights,
 }
 
 impl RenderSettings {
@@ -86,6 +94,14 @@ impl RenderSettings {
                 ),
             ));
         }
+        if let Offset::Epsilon(e) = self.offset
+            && !(e.is_finite() && e > 0.0)
+        {
+            return Err((
+                "offset",
+                format!("an epsilon must be a number > 0, got {e}"),
+            ));
+        }
         Ok(())
     }
 }
@@ -98,6 +114,9 @@ impl Default for RenderSettings {
             spp: 1,
             max_depth: 8,
             cutoff: Self::DEFAULT_CUTOFF,
+            sphere: SphereMethod::default(),
+            offset: Offset::default(),
+            weights: Weights::default(),
         }
     }
 }

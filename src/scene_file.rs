@@ -156,6 +156,9 @@ struct RenderFile {
     spp: Option<u32>,
     max_depth: Option<u32>,
     cutoff: Option<f64>,
+    sphere: Option<crate::methods::SphereMethod>,
+    offset: Option<crate::methods::Offset>,
+    weights: Option<crate::methods::Weights>,
 }
 
 #[derive(Deserialize, Default)]
@@ -301,6 +304,9 @@ impl Builder<'_> {
             spp: r.spp.unwrap_or(d.spp),
             max_depth: r.max_depth.unwrap_or(d.max_depth),
             cutoff: r.cutoff.unwrap_or(d.cutoff),
+            sphere: r.sphere.unwrap_or(d.sphere),
+            offset: r.offset.unwrap_or(d.offset),
+            weights: r.weights.unwrap_or(d.weights),
         };
         s.validate()
             .map_err(|(field, msg)| self.invalid(format_args!("render.{field}"), msg))?;

@@ -9,14 +9,14 @@ use crate::image_file::rgb8;
 use crate::ray::Ray;
 use crate::ray_tree::{RayTree, TreeRecorder};
 use crate::render::{pixel_color, sample_points};
-use crate::scene::Scene;
+use crate::scene::{RenderSettings, Scene};
 use crate::steps::{Step, steps};
 use crate::tracer::Tracer;
 
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 1;
+pub const VERSION: u32 = 2;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -29,7 +29,7 @@ pub struct Trace {
     /// Which scene, by name and content hash.
     pub scene: SceneRef,
     /// The render settings in force.
-    pub settings: Settings,
+    pub settings: RenderSettings,
     /// The scene's objects, by index.
     pub objects: Vec<ObjectRef>,
     /// The scene's lights, by index.
@@ -71,22 +71,6 @@ fn fnv1a64(bytes: &[u8]) -> u64 {
     bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
         (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
     })
-}
-
-/// Render settings as traced.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Settings {
-    /// Image width.
-    pub width: u32,
-    /// Image height.
-    pub height: u32,
-    /// Samples per pixel.
-    pub spp: u32,
-    /// Maximum depth.
-    pub max_depth: u32,
-    /// Weight cutoff.
-    pub cutoff: f64,
 }
 
 /// An object, as traces name it.
@@ -185,13 +169,7 @@ impl Trace {
             format: FORMAT.to_owned(),
             version: VERSION,
             scene: source,
-            settings: Settings {
-                width: s.width,
-                height: s.height,
-                spp: s.spp,
-                max_depth: s.max_depth,
-                cutoff: s.cutoff,
-            },
+            settings: s,
             objects: scene
                 .objects
                 .iter()

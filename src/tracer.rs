@@ -24,7 +24,6 @@
 
 use glam::DVec3;
 
-use crate::float::offset_ray_origin;
 use crate::hit::Surface;
 use crate::material::Material;
 use crate::optics::{Media, reflect, refract};
@@ -95,23 +94,30 @@ impl<'s> Tracer<'s> {
         let material = self.scene.material_of(object);
         let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
 
-        // Refraction is worked out first: total internal reflection moves its share to the reflection.
+        // Refraction is worked out first: the reflectance R (0 for the lecture's
+        // constant weights, 1 under total internal reflection) moves that share of
+        // the transmitted light to the reflection.
         let (mut k_rfl, mut k_rfa) = (material.reflective, material.transparent);
+        let c = start.ray.dir.normalize();
         let refracted_dir = if k_rfa > 0.0 {
-            refract(
-                start.ray.dir.normalize(),
-                hit.shading_normal,
-                hit.n1 / hit.n2,
-            )
+            refract(c, hit.shading_normal, hit.n1 / hit.n2)
         } else {
             None
         };
         let total_internal = k_rfa > 0.0 && refracted_dir.is_none();
-        if total_internal {
-            k_rfl += k_rfa;
-            k_rfa = 0.0;
+        if k_rfa > 0.0 {
+            let r = if total_internal {
+                1.0
+            } else {
+                self.scene
+                    .settings
+                    .weights
+                    .reflectance(-c.dot(hit.shading_normal), hit.n1, hit.n2)
+            };
+            k_rfl += k_rfa * r;
+            k_rfa *= 1.0 - r;
         }
-        let reflected_dir = reflect(start.ray.dir.normalize(), hit.shading_normal);
+        let reflected_dir = reflect(c, hit.shading_normal);
         let reflected = self.spawn(
             RayKind::Reflected,
             k_rfl,
@@ -169,7 +175,7 @@ impl<'s> Tracer<'s> {
         let mut closest = None;
         let mut t_closest = t_max;
         for (i, object) in self.scene.objects.iter().enumerate() {
-            let roots = object.roots(ray);
+            let roots = object.roots(ray, self.scene.settings.sphere);
             if R::ENABLED {
                 crate::record!(rec.object_tested(i, &roots));
             }
@@ -272,16 +278,18 @@ impl<'s> Tracer<'s> {
                 outcome: ShadowOutcome::FacesAway,
             };
         }
-        let origin = offset_ray_origin(
-            surface.point,
-            surface.point_error,
-            surface.normal,
-            position - surface.point,
-        );
+        let origin = self
+            .scene
+            .settings
+            .offset
+            .origin(surface, position - surface.point);
         let ray = Ray::new(origin, position - origin);
         let mut transmitted = 1.0;
         for (i, object) in self.scene.objects.iter().enumerate() {
-            if let Some(t) = object.roots(&ray).first_in(0.0, t_max) {
+            if let Some(t) = object
+                .roots(&ray, self.scene.settings.sphere)
+                .first_in(0.0, t_max)
+            {
                 let k = self.scene.material_of(i).transparent;
                 if k == 0.0 {
                     return ShadowInfo {
@@ -336,7 +344,7 @@ impl<'s> Tracer<'s> {
         if branch != Branch::Traced {
             return DVec3::ZERO;
         }
-        let origin = offset_ray_origin(surface.point, surface.point_error, surface.normal, dir);
+        let origin = self.scene.settings.offset.origin(surface, dir);
         let child = RayStart {
             kind,
             depth: parent.depth + 1,

@@ -440,7 +440,10 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
         String::from_utf8_lossy(&out.stderr)
     );
     let trace: raytree::trace::Trace = serde_json::from_slice(&out.stdout).unwrap();
-    assert_eq!((trace.format.as_str(), trace.version), ("raytree-trace", 1));
+    assert_eq!(
+        (trace.format.as_str(), trace.version),
+        ("raytree-trace", raytree::trace::VERSION)
+    );
     assert_eq!(
         (
             trace.settings.width,

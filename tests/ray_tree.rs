@@ -216,9 +216,11 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<String> {
 fn reading_rejects_unknown_fields() {
     let scene = raytree::scene_file::whitted();
     let trace = Trace::pixel(&scene, source("whitted.json"), 100, 100, None).unwrap();
-    let text = trace
-        .to_json()
-        .replacen("\"version\": 1,", "\"version\": 1, \"extra\": 0,", 1);
+    let text = trace.to_json().replacen(
+        "\"format\": \"raytree-trace\",",
+        "\"format\": \"raytree-trace\", \"extra\": 0,",
+        1,
+    );
     let err = serde_json::from_str::<Trace>(&text)
         .unwrap_err()
         .to_string();
