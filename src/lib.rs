@@ -10,6 +10,7 @@
 #![warn(missing_docs)]
 
 pub mod camera;
+pub mod chart;
 pub mod diagram;
 pub mod draw;
 pub mod float;

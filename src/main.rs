@@ -36,6 +36,26 @@ enum Command {
     Diagram(DiagramArgs),
     /// Explore a scene in the terminal: pick a pixel, walk its ray tree step by step.
     Inspect(InspectArgs),
+    /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
+    Chart(ChartArgs),
+}
+
+#[derive(Args)]
+struct ChartArgs {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Output chart (.png) [default: the scene's name with -chart.png].
+    #[arg(short, long, value_name = "OUT.png")]
+    output: Option<PathBuf>,
+    /// Also write every raw figure to this CSV file.
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// Renders per setting; the chart shows the median time.
+    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100))]
+    runs: u32,
+    /// Chart size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
+    size: (u32, u32),
 }
 
 #[derive(Args)]
@@ -311,6 +331,7 @@ fn main() -> ExitCode {
         Command::Trace(args) => run_trace(&args),
         Command::Diagram(args) => run_diagram(&args),
         Command::Inspect(args) => run_inspect(&args),
+        Command::Chart(args) => run_chart(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
@@ -370,6 +391,48 @@ fn run_diagram(args: &DiagramArgs) -> Result<()> {
     };
     let figure = raytree::diagram::draw(&trace, &scene, &options).map_err(anyhow::Error::msg)?;
     pending.commit(&figure.png())
+}
+
+fn run_chart(args: &ChartArgs) -> Result<()> {
+    let (scene, source) = args.scene.load()?;
+    let output = args
+        .output
+        .clone()
+        .unwrap_or_else(|| PathBuf::from(format!("{}-chart.png", args.scene.stem())));
+    if image_file::format_of(&output)? != image_file::Format::Png {
+        bail!("cannot write {}: a chart is a .png", output.display());
+    }
+    let png = create_output(&output)?;
+    let csv = args.csv.as_deref().map(create_output).transpose()?;
+    let progress = progress_bar(false);
+    progress.set_style(
+        ProgressStyle::with_template(
+            "{spinner} charting [{bar:40}] {pos}/{len} settings, {elapsed}",
+        )
+        .expect("valid template")
+        .progress_chars("=> "),
+    );
+    let points = raytree::chart::measure(&scene, args.runs as usize, &progress);
+    progress.finish_and_clear();
+    let s = &scene.settings;
+    let title = format!(
+        "{} at {}×{}, {} runs each",
+        source.file, s.width, s.height, args.runs
+    );
+    let figure = raytree::chart::draw(&points, &title, args.size.0, args.size.1)
+        .context("the chart size is too small")?;
+    png.commit(&figure.png())?;
+    if let Some(file) = csv {
+        file.commit(raytree::chart::csv(&points).as_bytes())?;
+    }
+    eprintln!(
+        "wrote {}{}",
+        output.display(),
+        args.csv
+            .as_ref()
+            .map_or(String::new(), |c| format!(" and {}", c.display()))
+    );
+    Ok(())
 }
 
 fn run_inspect(args: &InspectArgs) -> Result<()> {

@@ -36,7 +36,12 @@ impl Plane {
         let point = p - (p - self.point).dot(self.normal) * self.normal;
         Surface {
             point,
-            point_error: gamma(8) * (point.abs() + self.point.abs()),
+            // Relative to the whole point, not per component: the projection mixes
+            // components, and a zero bound would put the offset origin on a
+            // subnormal number (5e-324), which every later operation pays for.
+            point_error: DVec3::splat(
+                gamma(8) * (point.abs().max_element() + self.point.abs().max_element()),
+            ),
             normal: self.normal,
             pattern_point: flatten(point, self.normal),
         }

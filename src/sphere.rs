@@ -74,7 +74,10 @@ impl Sphere {
         let point = self.center + local;
         Surface {
             point,
-            point_error: gamma(5) * local.abs() + gamma(2) * point.abs(),
+            // Relative to the whole point (see `Plane::surface`): never zero, never subnormal.
+            point_error: DVec3::splat(
+                gamma(5) * self.radius + gamma(2) * point.abs().max_element(),
+            ),
             normal: local / self.radius,
             pattern_point: point,
         }
