@@ -211,22 +211,13 @@ pub fn csv(points: &[Point]) -> String {
             Offset::Robust => "robust".to_owned(),
             Offset::Epsilon(e) => format!("epsilon={e}"),
         };
-        out.push_str(
-            &format!(
-                "{},{},{},{},{},{:?},{},{},{},{}\n",
-                p.label,
-                p.default,
-                s.spp,
-                s.max_depth,
-                s.cutoff,
-                s.sphere,
-                offset,
-                p.seconds,
-                p.rmse,
-                p.off
-            )
-            .to_lowercase(),
-        );
+        // Labels may hold commas: quoted, with quotes doubled (RFC 4180).
+        let label = format!("\"{}\"", p.label.replace('"', "\"\""));
+        let sphere = format!("{:?}", s.sphere).to_lowercase();
+        out.push_str(&format!(
+            "{label},{},{},{},{},{sphere},{offset},{},{},{}\n",
+            p.default, s.spp, s.max_depth, s.cutoff, p.seconds, p.rmse, p.off
+        ));
     }
     out
 }

@@ -1,0 +1,66 @@
+//! `raytree chart`: a small sweep through the real binary, its PNG and CSV, and
+//! the figures behaving as they must (more samples come closer to the converged
+//! reference; no origin offset is worse than the robust one).
+
+use std::process::Command;
+
+#[test]
+fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
+    let dir = std::env::temp_dir().join(format!("raytree-chart-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json");
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args([
+            "chart", scene, "--width", "48", "--height", "36", "--runs", "1", "--size", "600x400",
+            "-o", "c.png", "--csv", "c.csv",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let png = image::open(dir.join("c.png")).unwrap();
+    assert_eq!((png.width(), png.height()), (600, 400));
+    let csv = std::fs::read_to_string(dir.join("c.csv")).unwrap();
+    // Labels are quoted (some hold commas): split after the closing quote.
+    let rows: Vec<Vec<&str>> = csv
+        .lines()
+        .skip(1)
+        .map(|l| {
+            let (label, rest) = l[1..].split_once("\",").expect("a quoted label");
+            std::iter::once(label).chain(rest.split(',')).collect()
+        })
+        .collect();
+    assert_eq!(
+        rows.len(),
+        raytree::chart::sweep(&raytree::scene::RenderSettings::default()).len()
+    );
+    let rmse = |label: &str| -> f64 {
+        let row = rows
+            .iter()
+            .find(|r| r[0] == label)
+            .unwrap_or_else(|| panic!("no row {label} in\n{csv}"));
+        let v: f64 = row[8].parse().unwrap();
+        assert!(
+            v.is_finite() && row[7].parse::<f64>().unwrap() > 0.0,
+            "{row:?}"
+        );
+        v
+    };
+    assert_eq!(
+        rows.iter().filter(|r| r[1] == "true").count(),
+        1,
+        "one row is the defaults"
+    );
+    assert!(
+        rmse("16 spp") < rmse("4 spp") && rmse("4 spp") < rmse("default"),
+        "{csv}"
+    );
+    assert!(rmse("no offset") > rmse("default"), "{csv}");
+    assert!(rmse("depth 2") > rmse("default"), "{csv}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
