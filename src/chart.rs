@@ -16,7 +16,7 @@ use indicatif::ProgressBar;
 
 use crate::draw::{Anchor, Figure, Pen, palette};
 use crate::image_file::to_rgb8;
-use crate::methods::{Offset, SphereMethod};
+use crate::methods::{Antialiasing, Offset, SphereMethod};
 use crate::render::{Image, render};
 use crate::scene::{RenderSettings, Scene};
 
@@ -45,6 +45,7 @@ pub fn sweep(base: &RenderSettings) -> Vec<(String, RenderSettings, bool)> {
         cutoff: RenderSettings::DEFAULT_CUTOFF,
         sphere: SphereMethod::Stable,
         offset: Offset::Robust,
+        aa: Antialiasing::Grid,
         ..*base
     };
     let mut out = vec![("default".to_owned(), d, true)];
@@ -98,6 +99,18 @@ pub fn sweep(base: &RenderSettings) -> Vec<(String, RenderSettings, bool)> {
             ..d
         },
     );
+    for threshold in [0.05, 0.2] {
+        add(
+            format!("adaptive AA {threshold}"),
+            RenderSettings {
+                aa: Antialiasing::Adaptive {
+                    threshold,
+                    levels: 3,
+                },
+                ..d
+            },
+        );
+    }
     out
 }
 
@@ -109,6 +122,7 @@ pub fn reference_settings(base: &RenderSettings) -> RenderSettings {
         cutoff: 0.0,
         sphere: SphereMethod::Stable,
         offset: Offset::Robust,
+        aa: Antialiasing::Grid,
         ..*base
     }
 }

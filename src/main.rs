@@ -66,7 +66,7 @@ struct InspectArgs {
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
     /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff", "sphere", "offset", "weights"])]
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff", "sphere", "offset", "weights", "aa"])]
     trace: Option<PathBuf>,
 }
 
@@ -99,6 +99,30 @@ struct SceneArgs {
     /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
     #[arg(long, value_enum)]
     weights: Option<raytree::methods::Weights>,
+    /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980), with an optional threshold [default: grid].
+    #[arg(long, value_name = "grid|adaptive[=T]", value_parser = parse_aa)]
+    aa: Option<raytree::methods::Antialiasing>,
+}
+
+fn parse_aa(s: &str) -> Result<raytree::methods::Antialiasing, String> {
+    use raytree::methods::Antialiasing;
+    match s.split_once('=') {
+        None if s == "grid" => Ok(Antialiasing::Grid),
+        None if s == "adaptive" => Ok(Antialiasing::Adaptive {
+            threshold: 0.05,
+            levels: 3,
+        }),
+        Some(("adaptive", t)) => match t.parse::<f64>() {
+            Ok(threshold) if threshold.is_finite() && threshold >= 0.0 => {
+                Ok(Antialiasing::Adaptive {
+                    threshold,
+                    levels: 3,
+                })
+            }
+            _ => Err(format!("'{t}' is not a threshold (a number ≥ 0)")),
+        },
+        _ => Err("expected grid, adaptive or adaptive=T (e.g. adaptive=0.05)".to_owned()),
+    }
 }
 
 fn parse_offset(s: &str) -> Result<raytree::methods::Offset, String> {
@@ -147,6 +171,7 @@ impl SceneArgs {
         s.sphere = self.sphere.unwrap_or(s.sphere);
         s.offset = self.offset.unwrap_or(s.offset);
         s.weights = self.weights.unwrap_or(s.weights);
+        s.aa = self.aa.unwrap_or(s.aa);
         if let Err((field, message)) = s.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }

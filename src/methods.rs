@@ -49,6 +49,26 @@ impl Offset {
     }
 }
 
+/// How a pixel is sampled.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Antialiasing {
+    /// `spp` samples on an n × n grid of cell centers (1: the lecture's one ray).
+    #[default]
+    Grid,
+    /// Whitted's adaptive corner subdivision ("An Improved Illumination Model for
+    /// Shaded Display", 1980): trace the pixel's four corners; where they differ
+    /// by more than `threshold` (in any channel, from their mean), split the square
+    /// into four and repeat, at most `levels` times; a square's color is the mean of
+    /// its corners, a split square's the mean of its quarters.
+    Adaptive {
+        /// Largest difference of a corner from the corners' mean that is left alone (linear RGB).
+        threshold: f64,
+        /// How many times a square may be split (3: down to 1/8 of a pixel).
+        levels: u32,
+    },
+}
+
 /// How a transparent surface splits its light between the reflected and the
 /// refracted ray. With reflectance `R`, the reflected ray's weight is
 /// `k_rfl + k_rfa·R` and the refracted ray's `k_rfa·(1 - R)`: the two shares of

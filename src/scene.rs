@@ -6,7 +6,7 @@ use glam::DVec3;
 use crate::camera::{Camera, CameraSpec};
 use crate::light::PointLight;
 use crate::material::Material;
-use crate::methods::{Offset, SphereMethod, Weights};
+use crate::methods::{Antialiasing, Offset, SphereMethod, Weights};
 use crate::object::Object;
 use crate::optics::Media;
 
@@ -31,6 +31,8 @@ pub struct RenderSettings {
     pub offset: Offset,
     /// How transparent surfaces split light between reflection and refraction.
     pub weights: Weights,
+    /// How pixels are sampled (`spp` applies to the grid).
+    pub aa: Antialiasing,
 }
 
 impl RenderSettings {
@@ -94,6 +96,16 @@ impl RenderSettings {
                 ),
             ));
         }
+        if let Antialiasing::Adaptive { threshold, levels } = self.aa
+            && !(threshold.is_finite() && threshold >= 0.0 && levels <= 6)
+        {
+            return Err((
+                "aa",
+                format!(
+                    "adaptive needs a threshold ≥ 0 and at most 6 levels, got {threshold} and {levels}"
+                ),
+            ));
+        }
         if let Offset::Epsilon(e) = self.offset
             && !(e.is_finite() && e > 0.0)
         {
@@ -117,6 +129,7 @@ impl Default for RenderSettings {
             sphere: SphereMethod::default(),
             offset: Offset::default(),
             weights: Weights::default(),
+            aa: Antialiasing::default(),
         }
     }
 }

@@ -159,6 +159,7 @@ struct RenderFile {
     sphere: Option<crate::methods::SphereMethod>,
     offset: Option<crate::methods::Offset>,
     weights: Option<crate::methods::Weights>,
+    aa: Option<crate::methods::Antialiasing>,
 }
 
 #[derive(Deserialize, Default)]
@@ -307,6 +308,7 @@ impl Builder<'_> {
             sphere: r.sphere.unwrap_or(d.sphere),
             offset: r.offset.unwrap_or(d.offset),
             weights: r.weights.unwrap_or(d.weights),
+            aa: r.aa.unwrap_or(d.aa),
         };
         s.validate()
             .map_err(|(field, msg)| self.invalid(format_args!("render.{field}"), msg))?;

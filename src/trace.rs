@@ -8,7 +8,7 @@ use serde::{Deserialize, Serialize};
 use crate::image_file::rgb8;
 use crate::ray::Ray;
 use crate::ray_tree::{RayTree, TreeRecorder};
-use crate::render::{pixel_color, sample_points};
+use crate::render::pixel_color_at;
 use crate::scene::{RenderSettings, Scene};
 use crate::steps::{Step, steps};
 use crate::tracer::Tracer;
@@ -215,12 +215,24 @@ impl Trace {
                 height: s.height,
             });
         }
-        if let Some(sample) = only.filter(|&k| k >= s.spp) {
-            return Err(TraceError::SampleOutside { sample, spp: s.spp });
-        }
         let mut rec = TreeRecorder::new(scene);
-        let color = pixel_color(&Tracer::new(scene), &scene.camera(), x, y, &mut rec);
-        let samples = sample_points(x, y, s.grid())
+        let mut at = Vec::new();
+        let color = pixel_color_at(
+            &Tracer::new(scene),
+            &scene.camera(),
+            x,
+            y,
+            &mut rec,
+            Some(&mut at),
+        );
+        if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
+            return Err(TraceError::SampleOutside {
+                sample,
+                spp: at.len() as u32,
+            });
+        }
+        let samples = at
+            .into_iter()
             .zip(rec.trees)
             .enumerate()
             .map(|(k, ((sx, sy), tree))| Sample {

@@ -33,3 +33,44 @@ fn shipped_scenes_render_finite_colors() {
         assert_eq!(bad, 0, "{name}: {bad} non-finite pixels");
     }
 }
+
+#[test]
+fn adaptive_antialiasing_splits_only_where_corners_differ() {
+    use raytree::methods::Antialiasing;
+    use raytree::recorder::RayCounter;
+    use raytree::render::pixel_color;
+    use raytree::tracer::Tracer;
+    // A white ball on a black background, 64 × 48: a pixel in the empty corner
+    // traces its four corners and stops; a pixel on the ball's edge splits.
+    let mut s = common::scene(
+        r#"{ "render": {"width": 64, "height": 48}, "ambient_light": [1, 1, 1],
+             "materials": {"white": {"color": [1, 1, 1], "ambient": 1, "diffuse": 0}},
+             "objects": [{"sphere": {"radius": 1}, "material": "white"}] }"#,
+    );
+    s.settings.aa = Antialiasing::Adaptive {
+        threshold: 0.05,
+        levels: 3,
+    };
+    let tracer = Tracer::new(&s);
+    let camera = s.camera();
+    let mut flat = RayCounter::default();
+    assert_eq!(
+        pixel_color(&tracer, &camera, 2, 2, &mut flat),
+        glam::DVec3::ZERO
+    );
+    assert_eq!(flat.primary, 4);
+    // Find a pixel on the edge: its color is strictly between black and white.
+    let edge = (0..64).map(|x| (x, 24)).find(|&(x, y)| {
+        let c = pixel_color(&tracer, &camera, x, y, &mut RayCounter::default()).x;
+        c > 0.05 && c < 0.95
+    });
+    let (x, y) = edge.expect("a pixel on the ball's edge");
+    let mut split = RayCounter::default();
+    pixel_color(&tracer, &camera, x, y, &mut split);
+    // Each split adds at most 5 corners; 3 levels along an edge stay well under a full 9 × 9 grid.
+    assert!(
+        split.primary > 4 && split.primary < 81,
+        "{} rays",
+        split.primary
+    );
+}
