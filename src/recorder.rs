@@ -238,7 +238,8 @@ impl Recorder for RayCounter {
             RayKind::Primary => self.primary += 1,
             RayKind::Reflected => self.reflected += 1,
             RayKind::Refracted => self.refracted += 1,
-            RayKind::Shadow => self.shadow += 1,
+            // Shadow rays are reported through `shadow_ray` alone.
+            RayKind::Shadow => {}
         }
     }
 
