@@ -284,6 +284,7 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
         };
         match *outline {
             Outline::Ellipse { center, axes } => fig.ellipse(center, axes, Some(fill), Some(pen)),
+            Outline::Polygon { ref points } => fig.polygon(points, Some(fill), Some(pen)),
             Outline::Line {
                 point,
                 dir,
@@ -305,9 +306,11 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
     if options.labels != Labels::None {
         for (object, outline) in scene.objects.iter().zip(&outlines) {
             match *outline {
-                Outline::Ellipse { .. } => {
+                Outline::Ellipse { .. } | Outline::Polygon { .. } => {
                     // At the top-left corner of its box: off the outline, where rays arrive less often.
-                    let (lo, hi) = outline.bounds().expect("an ellipse is bounded");
+                    let Some((lo, hi)) = outline.bounds() else {
+                        continue;
+                    };
                     fig.label(
                         DVec2::new(lo.x, hi.y),
                         DVec2::ZERO,

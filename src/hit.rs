@@ -9,6 +9,8 @@ use glam::DVec3;
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Roots {
     len: u8,
+    /// Which part of a compound object the root belongs to: a mesh's face.
+    part: u32,
     t: [f64; 2],
 }
 
@@ -16,6 +18,7 @@ impl Roots {
     /// No intersection.
     pub const NONE: Roots = Roots {
         len: 0,
+        part: 0,
         t: [0.0; 2],
     };
 
@@ -23,14 +26,30 @@ impl Roots {
     pub fn one(t: f64) -> Self {
         Roots {
             len: 1,
+            part: 0,
             t: [t, 0.0],
         }
+    }
+
+    /// One root on part `part` of a compound object (a mesh's nearest face).
+    pub fn on_part(t: f64, part: u32) -> Self {
+        Roots {
+            len: 1,
+            part,
+            t: [t, 0.0],
+        }
+    }
+
+    /// The part the roots belong to (0 for a simple shape).
+    pub fn part(&self) -> u32 {
+        self.part
     }
 
     /// Two roots, in any order.
     pub fn two(a: f64, b: f64) -> Self {
         Roots {
             len: 2,
+            part: 0,
             t: [a.min(b), a.max(b)],
         }
     }
@@ -61,6 +80,9 @@ pub struct Surface {
     pub point_error: DVec3,
     /// The outward unit normal (for a plane, the side it was defined to face).
     pub normal: DVec3,
+    /// The unit normal lighting uses: the geometric normal, except on a mesh with
+    /// per-vertex normals, where it is interpolated (on the same side).
+    pub shading_normal: DVec3,
     /// Where a pattern (the checkerboard) is evaluated: the object-space point,
     /// flattened onto the plane for planes so squares never flicker.
     pub pattern_point: DVec3,

@@ -9,6 +9,10 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod aabb;
+pub mod accel;
+pub mod aligned_box;
+pub mod bvh;
 pub mod camera;
 pub mod chart;
 pub mod diagram;
@@ -19,7 +23,9 @@ pub mod image_file;
 pub mod inspector;
 pub mod light;
 pub mod material;
+pub mod mesh;
 pub mod methods;
+pub mod obj_file;
 pub mod object;
 pub mod optics;
 pub mod phong;
@@ -38,3 +44,4 @@ pub mod trace;
 pub mod trace_text;
 pub mod tracer;
 pub mod transform;
+pub mod triangle;

@@ -20,6 +20,50 @@ pub enum SphereMethod {
     Stable,
 }
 
+/// How a ray meets a triangle.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "snake_case")]
+pub enum TriangleMethod {
+    /// The textbook Möller–Trumbore test: rays through shared edges can slip
+    /// between two triangles ([`crate::triangle::Triangle::moller_trumbore`]).
+    MollerTrumbore,
+    /// Woop, Benthin & Wald's watertight test (JCGT 2013).
+    #[default]
+    Watertight,
+}
+
+/// Which acceleration structure the tracer uses.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
+#[serde(rename_all = "snake_case")]
+pub enum Accel {
+    /// Chosen from the scene: a hierarchy once there are enough objects to pay
+    /// for its box tests ([`crate::accel::AUTO_MIN_OBJECTS`]), none below.
+    #[default]
+    Auto,
+    /// Test every object, as the lecture's `raytrace` does.
+    None,
+    /// A bounding volume hierarchy over the objects ([`crate::bvh`]).
+    Bvh,
+}
+
+/// The intersection methods a ray is tested with.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Intersection {
+    /// For spheres.
+    pub sphere: SphereMethod,
+    /// For triangles and meshes.
+    pub triangle: TriangleMethod,
+}
+
+impl From<SphereMethod> for Intersection {
+    fn from(sphere: SphereMethod) -> Self {
+        Intersection {
+            sphere,
+            ..Intersection::default()
+        }
+    }
+}
+
 /// Where a secondary ray (reflected, refracted, shadow) starts.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -155,6 +199,7 @@ mod tests {
             point: DVec3::ZERO,
             point_error: DVec3::ZERO,
             normal: DVec3::Y,
+            shading_normal: DVec3::Y,
             pattern_point: DVec3::ZERO,
         };
         assert_eq!(

@@ -43,6 +43,7 @@ impl Plane {
                 gamma(8) * (point.abs().max_element() + self.point.abs().max_element()),
             ),
             normal: self.normal,
+            shading_normal: self.normal,
             pattern_point: flatten(point, self.normal),
         }
     }

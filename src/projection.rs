@@ -106,7 +106,33 @@ impl Projection {
             Some(t) => (t.to_world.matrix3, t.to_world.translation),
             None => (DMat3::IDENTITY, DVec3::ZERO),
         };
-        match object.shape {
+        match &object.shape {
+            Shape::Box(_) | Shape::Triangle(_) | Shape::Mesh(_) => {
+                let corners: Vec<DVec3> = match &object.shape {
+                    Shape::Triangle(t) => vec![t.a, t.b, t.c],
+                    Shape::Mesh(m) => m.positions.clone(),
+                    _ => {
+                        let b = object.shape.bounds().expect("a box is bounded");
+                        (0..8)
+                            .map(|i: u32| {
+                                DVec3::select(
+                                    glam::BVec3::new(i & 1 != 0, i & 2 != 0, i & 4 != 0),
+                                    b.max,
+                                    b.min,
+                                )
+                            })
+                            .collect()
+                    }
+                };
+                Outline::Polygon {
+                    points: convex_hull(
+                        corners
+                            .into_iter()
+                            .map(|c| self.point(linear * c + translation))
+                            .collect(),
+                    ),
+                }
+            }
             Shape::Sphere(s) => {
                 // The ball is {C + L·r·p : |p| ≤ 1}; its shadow on the plane is the
                 // ellipse {A·p} with A = P·L·r (P the 2×3 projection), whose shape
@@ -157,8 +183,34 @@ impl Projection {
     }
 }
 
+/// The convex hull of `points`, counter-clockwise (Andrew's monotone chain):
+/// the exact outline of a projected box or triangle, and a mesh's silhouette
+/// with its hollows filled.
+fn convex_hull(mut points: Vec<DVec2>) -> Vec<DVec2> {
+    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup();
+    if points.len() < 3 {
+        return points;
+    }
+    let turn = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    let mut hull: Vec<DVec2> = Vec::with_capacity(2 * points.len());
+    for pass in [points.clone(), points.into_iter().rev().collect()] {
+        let base = hull.len();
+        for p in pass {
+            while hull.len() >= base + 2
+                && turn(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
+}
+
 /// An object's outline in a projection.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq)]
 pub enum Outline {
     /// A sphere or ellipsoid: `center + cos θ·axes[0] + sin θ·axes[1]`.
     Ellipse {
@@ -178,15 +230,25 @@ pub enum Outline {
     },
     /// A plane parallel to the diagram plane: it covers the whole view.
     Parallel,
+    /// A box, triangle or mesh: the convex hull of its projected vertices.
+    Polygon {
+        /// The hull's corners, counter-clockwise.
+        points: Vec<DVec2>,
+    },
 }
 
 impl Outline {
     /// The bounding box of a bounded outline.
     pub fn bounds(&self) -> Option<(DVec2, DVec2)> {
-        match *self {
+        match self {
             Outline::Ellipse { center, axes } => {
                 let half = DVec2::new(axes[0].x.hypot(axes[1].x), axes[0].y.hypot(axes[1].y));
                 Some((center - half, center + half))
+            }
+            Outline::Polygon { points } if !points.is_empty() => {
+                Some(points.iter().fold((points[0], points[0]), |(lo, hi), p| {
+                    (lo.min(*p), hi.max(*p))
+                }))
             }
             _ => None,
         }

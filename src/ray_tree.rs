@@ -9,6 +9,7 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
+use crate::bvh::Tested;
 use crate::recorder::{
     Branch, BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
     ShadowOutcome,
@@ -45,6 +46,9 @@ pub struct RayNode {
     pub t_max: Option<f64>,
     /// Every object the ray was tested against, in order, with its roots.
     pub tests: Vec<ObjectTest>,
+    /// How many bounding boxes and primitives the search for the closest hit
+    /// tested: what the hierarchy saved against testing every object.
+    pub tested: Tested,
     /// The closest hit; `None` when the ray missed everything.
     pub hit: Option<Hit>,
     /// One per light, in the scene's order.
@@ -84,6 +88,8 @@ pub struct Hit {
     pub material: String,
     /// Ray parameter of the hit.
     pub t: f64,
+    /// For a mesh, the index of the face hit.
+    pub face: Option<u32>,
     /// World-space point.
     pub point: DVec3,
     /// Outward unit geometric normal.
@@ -114,6 +120,9 @@ pub struct ShadowRay {
     pub t_max: f64,
     /// What it found.
     pub outcome: Outcome,
+    /// The boxes and primitives it was tested against (it stops at the first
+    /// opaque blocker).
+    pub tested: Tested,
 }
 
 /// What a shadow ray found.
@@ -275,6 +284,7 @@ impl Recorder for TreeRecorder<'_> {
             t_min: start.t_min,
             t_max: start.t_max.is_finite().then_some(start.t_max),
             tests: Vec::new(),
+            tested: Tested::default(),
             hit: None,
             shadow_rays: Vec::new(),
             local: None,
@@ -294,6 +304,10 @@ impl Recorder for TreeRecorder<'_> {
         });
     }
 
+    fn tested(&mut self, tested: &Tested) {
+        self.top().tested = *tested;
+    }
+
     fn hit(&mut self, hit: &HitInfo) {
         let object = &self.scene.objects[hit.object];
         let h = Hit {
@@ -301,6 +315,7 @@ impl Recorder for TreeRecorder<'_> {
             name: object.name.clone(),
             material: self.scene.materials[object.material].name.clone(),
             t: hit.t,
+            face: matches!(object.shape, crate::object::Shape::Mesh(_)).then_some(hit.part),
             point: hit.point,
             normal: hit.normal,
             shading_normal: hit.shading_normal,
@@ -335,6 +350,7 @@ impl Recorder for TreeRecorder<'_> {
             direction: s.ray.dir,
             t_max: s.t_max,
             outcome,
+            tested: s.tested,
         });
     }
 

@@ -7,6 +7,7 @@
 
 use glam::DVec3;
 
+use crate::bvh::Tested;
 use crate::hit::Roots;
 
 /// Calls a recorder hook. Built with `RUSTFLAGS="--cfg raytree_no_hooks"`, every
@@ -63,6 +64,8 @@ pub struct HitInfo {
     pub object: usize,
     /// Ray parameter of the hit.
     pub t: f64,
+    /// The part of the object hit (a mesh's face; 0 otherwise).
+    pub part: u32,
     /// World-space hit point.
     pub point: DVec3,
     /// Outward unit geometric normal.
@@ -108,6 +111,8 @@ pub struct ShadowInfo {
     pub t_max: f64,
     /// What it found.
     pub outcome: ShadowOutcome,
+    /// The boxes and primitives it was tested against.
+    pub tested: Tested,
 }
 
 /// One light's share of the local color at a hit.
@@ -180,6 +185,9 @@ pub trait Recorder {
     fn ray_started(&mut self, _start: &RayStart) {}
     /// The ray was tested against object `object`, with these roots.
     fn object_tested(&mut self, _object: usize, _roots: &Roots) {}
+    /// The search for the closest hit is over; it tested this many boxes and
+    /// primitives (every object without a hierarchy).
+    fn tested(&mut self, _tested: &Tested) {}
     /// The closest hit was found.
     fn hit(&mut self, _hit: &HitInfo) {}
     /// Nothing was hit: the ray returns the background.

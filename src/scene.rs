@@ -6,7 +6,9 @@ use glam::DVec3;
 use crate::camera::{Camera, CameraSpec};
 use crate::light::PointLight;
 use crate::material::Material;
-use crate::methods::{Antialiasing, Offset, SphereMethod, Weights};
+use crate::methods::{
+    Accel, Antialiasing, Intersection, Offset, SphereMethod, TriangleMethod, Weights,
+};
 use crate::object::Object;
 use crate::optics::Media;
 
@@ -27,12 +29,18 @@ pub struct RenderSettings {
     pub cutoff: f64,
     /// How rays meet spheres.
     pub sphere: SphereMethod,
+    /// How rays meet triangles.
+    #[serde(default)]
+    pub triangle: TriangleMethod,
     /// Where secondary rays start.
     pub offset: Offset,
     /// How transparent surfaces split light between reflection and refraction.
     pub weights: Weights,
     /// How pixels are sampled (`spp` applies to the grid).
     pub aa: Antialiasing,
+    /// Which acceleration structure finds the objects a ray may hit.
+    #[serde(default)]
+    pub accel: Accel,
 }
 
 impl RenderSettings {
@@ -44,6 +52,14 @@ impl RenderSettings {
     /// dropped. Chosen so no 8-bit pixel of the shipped scenes moves by more than
     /// one level against a fixed depth of 32 (see `tests/recursion.rs`).
     pub const DEFAULT_CUTOFF: f64 = 1.0 / 1024.0;
+
+    /// The intersection methods.
+    pub fn intersection(&self) -> Intersection {
+        Intersection {
+            sphere: self.sphere,
+            triangle: self.triangle,
+        }
+    }
 
     /// `n` of the `n × n` sampling grid.
     pub fn grid(&self) -> u32 {
@@ -130,6 +146,8 @@ impl Default for RenderSettings {
             offset: Offset::default(),
             weights: Weights::default(),
             aa: Antialiasing::default(),
+            triangle: TriangleMethod::default(),
+            accel: Accel::default(),
         }
     }
 }
@@ -185,14 +203,7 @@ impl Scene {
     }
 
     fn encloses(&self, outer: usize, inner: usize) -> bool {
-        let center = match self.objects[inner].shape {
-            crate::object::Shape::Sphere(s) => s.center,
-            crate::object::Shape::Plane(p) => p.point,
-        };
-        let world = self.objects[inner]
-            .transform
-            .map_or(center, |t| t.to_world.transform_point3(center));
-        self.objects[outer].contains(world)
+        self.objects[outer].contains(self.objects[inner].center())
     }
 
     /// The material of object `object`.

@@ -13,6 +13,7 @@ use std::path::Path;
 use glam::{DAffine3, DVec3};
 use serde::Deserialize;
 
+use crate::aligned_box::AlignedBox;
 use crate::camera::CameraSpec;
 use crate::light::PointLight;
 use crate::material::{Material, Pattern};
@@ -21,6 +22,7 @@ use crate::plane::Plane;
 use crate::scene::{RenderSettings, Scene};
 use crate::sphere::Sphere;
 use crate::transform::Transform;
+use crate::triangle::Triangle;
 
 /// The classic Whitted scene, built into the binary.
 pub const WHITTED: &str = include_str!("../scenes/whitted.json");
@@ -47,6 +49,16 @@ pub enum SceneError {
         column: usize,
         /// The field path and what was expected.
         message: String,
+    },
+    /// A mesh's OBJ file cannot be used.
+    #[error("{error} (the mesh of {file}: {field})")]
+    Mesh {
+        /// The scene file.
+        file: String,
+        /// The object's field, e.g. `objects[3].mesh.file`.
+        field: String,
+        /// What is wrong in the OBJ file, and where.
+        error: crate::obj_file::ObjError,
     },
     /// A value parses but is not allowed.
     #[error("{file}: {field}: {message}")]
@@ -107,7 +119,8 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     let raw: SceneFile = serde_path_to_error::deserialize(&mut *de)
         .map_err(|e| syntax(e.path().to_string(), e.into_inner()))?;
     de.end().map_err(|e| syntax(String::new(), e))?;
-    Builder { file }.scene(raw)
+    let dir = Path::new(file).parent().unwrap_or(Path::new(""));
+    Builder { file, dir }.scene(raw)
 }
 
 // ---------------------------------------------------------------- the format
@@ -160,6 +173,8 @@ struct RenderFile {
     offset: Option<crate::methods::Offset>,
     weights: Option<crate::methods::Weights>,
     aa: Option<crate::methods::Antialiasing>,
+    triangle: Option<crate::methods::TriangleMethod>,
+    accel: Option<crate::methods::Accel>,
 }
 
 #[derive(Deserialize, Default)]
@@ -197,6 +212,10 @@ struct ObjectFile {
     name: Option<String>,
     sphere: Option<SphereFile>,
     plane: Option<PlaneFile>,
+    #[serde(rename = "box")]
+    aligned_box: Option<BoxFile>,
+    triangle: Option<TriangleFile>,
+    mesh: Option<MeshFile>,
     material: Option<String>,
     #[serde(default)]
     transform: Vec<TransformStep>,
@@ -217,6 +236,26 @@ struct PlaneFile {
 }
 
 #[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoxFile {
+    min: Option<DVec3>,
+    max: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TriangleFile {
+    vertices: [DVec3; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeshFile {
+    file: String,
+    smooth: Option<bool>,
+}
+
+#[derive(Deserialize)]
 #[serde(rename_all = "snake_case", deny_unknown_fields)]
 enum TransformStep {
     Translate(DVec3),
@@ -234,6 +273,8 @@ const DEFAULT_MATERIAL: &str = "default";
 
 struct Builder<'a> {
     file: &'a str,
+    /// Where the scene file is: mesh files are found relative to it.
+    dir: &'a Path,
 }
 
 impl Builder<'_> {
@@ -309,6 +350,8 @@ impl Builder<'_> {
             offset: r.offset.unwrap_or(d.offset),
             weights: r.weights.unwrap_or(d.weights),
             aa: r.aa.unwrap_or(d.aa),
+            triangle: r.triangle.unwrap_or(d.triangle),
+            accel: r.accel.unwrap_or(d.accel),
         };
         s.validate()
             .map_err(|(field, msg)| self.invalid(format_args!("render.{field}"), msg))?;
@@ -483,7 +526,59 @@ impl Builder<'_> {
     }
 
     fn object(&self, i: usize, o: &ObjectFile, material: usize) -> Result<Object, SceneError> {
+        let given = [
+            o.sphere.is_some(),
+            o.plane.is_some(),
+            o.aligned_box.is_some(),
+            o.triangle.is_some(),
+            o.mesh.is_some(),
+        ];
+        if given.iter().filter(|&&g| g).count() != 1 {
+            return Err(self.invalid(
+                format_args!("objects[{i}]"),
+                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
+            ));
+        }
         let shape = match (&o.sphere, &o.plane) {
+            _ if o.aligned_box.is_some() => {
+                let b = o.aligned_box.as_ref().expect("checked");
+                let min = b.min.unwrap_or(DVec3::splat(-1.0));
+                let max = b.max.unwrap_or(DVec3::ONE);
+                if !(min.is_finite() && max.is_finite() && min.cmplt(max).all()) {
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].box"),
+                        format_args!(
+                            "min must be below max on every axis, got min {min} and max {max}"
+                        ),
+                    ));
+                }
+                Shape::Box(AlignedBox { min, max })
+            }
+            _ if o.triangle.is_some() => {
+                let [a, b, c] = o.triangle.as_ref().expect("checked").vertices;
+                let tri = Triangle { a, b, c };
+                if !(a.is_finite() && b.is_finite() && c.is_finite()) || tri.normal() == DVec3::ZERO
+                {
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].triangle.vertices"),
+                        "must be three finite points not on one line",
+                    ));
+                }
+                Shape::Triangle(tri)
+            }
+            _ if o.mesh.is_some() => {
+                let m = o.mesh.as_ref().expect("checked");
+                let path = self.dir.join(&m.file);
+                let mesh =
+                    crate::obj_file::load(&path, m.smooth.unwrap_or(true)).map_err(|error| {
+                        SceneError::Mesh {
+                            file: self.file.to_owned(),
+                            field: format!("objects[{i}].mesh.file"),
+                            error,
+                        }
+                    })?;
+                Shape::Mesh(std::sync::Arc::new(mesh))
+            }
             (Some(s), None) => {
                 let radius = s.radius.unwrap_or(1.0);
                 if !radius.is_finite() || radius <= 0.0 {
@@ -513,12 +608,7 @@ impl Builder<'_> {
                     normal,
                 })
             }
-            _ => {
-                return Err(self.invalid(
-                    format_args!("objects[{i}]"),
-                    "give exactly one shape: \"sphere\" or \"plane\"",
-                ));
-            }
+            _ => unreachable!("exactly one shape was checked above"),
         };
         let transform = if o.transform.is_empty() {
             None

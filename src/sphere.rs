@@ -79,6 +79,7 @@ impl Sphere {
                 gamma(5) * self.radius + gamma(2) * point.abs().max_element(),
             ),
             normal: local / self.radius,
+            shading_normal: local / self.radius,
             pattern_point: point,
         }
     }

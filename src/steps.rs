@@ -57,6 +57,22 @@ pub fn steps(tree: &RayTree, kind_of: &dyn Fn(usize) -> String) -> Vec<Step> {
     out
 }
 
+/// How much searching a ray's closest hit took.
+pub fn searched(t: &crate::bvh::Tested) -> String {
+    let s = |n: u32| if n == 1 { "" } else { "s" };
+    if t.boxes == 0 {
+        format!("{} object test{}", t.primitives, s(t.primitives))
+    } else {
+        format!(
+            "{} box test{} and {} primitive test{}",
+            t.boxes,
+            s(t.boxes),
+            t.primitives,
+            s(t.primitives)
+        )
+    }
+}
+
 fn walk(tree: &RayTree, i: usize, kind_of: &dyn Fn(usize) -> String, out: &mut Vec<Step>) {
     let node = &tree.nodes[i];
     let mut push = |kind, text: String| {
@@ -102,8 +118,9 @@ fn walk(tree: &RayTree, i: usize, kind_of: &dyn Fn(usize) -> String, out: &mut V
         push(
             StepKind::Miss,
             format!(
-                "no hit: the ray returns the background {}",
-                vec3(node.sum.color)
+                "no hit: the ray returns the background {} ({})",
+                vec3(node.sum.color),
+                searched(&node.tested)
             ),
         );
         push(
@@ -116,13 +133,14 @@ fn walk(tree: &RayTree, i: usize, kind_of: &dyn Fn(usize) -> String, out: &mut V
     push(
         StepKind::Hit,
         format!(
-            "closest hit: '{}' at t = {}, point {}, normal {}, {side}, n {} → {}",
+            "closest hit: '{}' at t = {}, point {}, normal {}, {side}, n {} → {} ({})",
             hit.name,
             num(hit.t),
             vec3(hit.point),
             vec3(hit.normal),
             num(hit.n1),
-            num(hit.n2)
+            num(hit.n2),
+            searched(&node.tested)
         ),
     );
     for s in &node.shadow_rays {

@@ -16,7 +16,7 @@ use crate::tracer::Tracer;
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 2;
+pub const VERSION: u32 = 3;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

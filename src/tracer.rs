@@ -22,8 +22,12 @@
 
 #![cfg_attr(raytree_no_hooks, allow(unused_variables, unused_imports))]
 
+use std::ops::ControlFlow;
+
 use glam::DVec3;
 
+use crate::accel::Accelerator;
+use crate::bvh::Tested;
 use crate::hit::Surface;
 use crate::material::Material;
 use crate::optics::{Media, reflect, refract};
@@ -41,10 +45,11 @@ use crate::scene::Scene;
 pub const SHADOW_EPSILON: f64 = 1e-9;
 
 /// Traces rays through one scene.
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Debug)]
 pub struct Tracer<'s> {
     scene: &'s Scene,
     eye_media: Media,
+    accel: Accelerator,
 }
 
 impl<'s> Tracer<'s> {
@@ -54,7 +59,13 @@ impl<'s> Tracer<'s> {
         Self {
             scene,
             eye_media: scene.media_at(eye),
+            accel: Accelerator::new(scene),
         }
+    }
+
+    /// How the objects are arranged for the rays.
+    pub fn accelerator(&self) -> &Accelerator {
+        &self.accel
     }
 
     /// The scene being traced.
@@ -78,7 +89,8 @@ impl<'s> Tracer<'s> {
     /// The lecture's `raytrace(ray)`.
     pub fn trace<R: Recorder>(&self, start: &RayStart, media: &Media, rec: &mut R) -> DVec3 {
         crate::record!(rec.ray_started(start));
-        let Some((object, t)) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec) else {
+        let Some((object, t, part)) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec)
+        else {
             crate::record!(rec.missed());
             let sum = ColorSum {
                 local: self.scene.background,
@@ -88,8 +100,13 @@ impl<'s> Tracer<'s> {
             crate::record!(rec.ray_finished(&sum));
             return sum.color;
         };
-        let surface = self.scene.objects[object].surface(&start.ray, t);
-        let hit = self.hit_info(&start.ray, object, t, &surface, media);
+        let surface = self.scene.objects[object].surface(
+            &start.ray,
+            t,
+            part,
+            self.scene.settings.intersection(),
+        );
+        let hit = self.hit_info(&start.ray, (object, t, part), &surface, media);
         crate::record!(rec.hit(&hit));
         let material = self.scene.material_of(object);
         let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
@@ -163,7 +180,8 @@ impl<'s> Tracer<'s> {
         color
     }
 
-    /// The object with the smallest root in `(t_min, t_max)`, and that root.
+    /// The object with the smallest root in `(t_min, t_max)`, that root, and the
+    /// root's part (a mesh's face).
     #[inline]
     fn closest_hit<R: Recorder>(
         &self,
@@ -171,28 +189,38 @@ impl<'s> Tracer<'s> {
         t_min: f64,
         t_max: f64,
         rec: &mut R,
-    ) -> Option<(usize, f64)> {
+    ) -> Option<(usize, f64, u32)> {
+        let methods = self.scene.settings.intersection();
         let mut closest = None;
         let mut t_closest = t_max;
-        for (i, object) in self.scene.objects.iter().enumerate() {
-            let roots = object.roots(ray, self.scene.settings.sphere);
-            if R::ENABLED {
-                crate::record!(rec.object_tested(i, &roots));
-            }
-            if let Some(t) = roots.first_in(t_min, t_closest) {
-                closest = Some(i);
-                t_closest = t;
-            }
+        // The hierarchy counts its boxes, the objects their own tests (a mesh's boxes too).
+        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        let _ = self
+            .accel
+            .visit(ray, t_min, &mut t_closest, &mut outer, |i, t_closest| {
+                let roots =
+                    self.scene.objects[i].roots_within(ray, methods, *t_closest, false, &mut inner);
+                if R::ENABLED {
+                    crate::record!(rec.object_tested(i, &roots));
+                }
+                if let Some(t) = roots.first_in(t_min, *t_closest) {
+                    closest = Some((i, roots.part()));
+                    *t_closest = t;
+                }
+                ControlFlow::Continue(())
+            });
+        if R::ENABLED {
+            outer.add(inner);
+            crate::record!(rec.tested(&outer));
         }
-        closest.map(|i| (i, t_closest))
+        closest.map(|(i, part)| (i, t_closest, part))
     }
 
     /// Which side the ray hit, and the refractive indices on either side of it.
     fn hit_info(
         &self,
         ray: &Ray,
-        object: usize,
-        t: f64,
+        (object, t, part): (usize, f64, u32),
         surface: &Surface,
         media: &Media,
     ) -> HitInfo {
@@ -204,14 +232,17 @@ impl<'s> Tracer<'s> {
         } else {
             (inside, ior_of(media.left(object).innermost()))
         };
+        // Which side was hit is the geometric normal's business; lighting uses the
+        // shading normal (interpolated on smooth meshes), turned the same way.
         let shading_normal = if entering {
-            surface.normal
+            surface.shading_normal
         } else {
-            -surface.normal
+            -surface.shading_normal
         };
         HitInfo {
             object,
             t,
+            part,
             point: surface.point,
             normal: surface.normal,
             shading_normal,
@@ -276,6 +307,7 @@ impl<'s> Tracer<'s> {
                 ray,
                 t_max,
                 outcome: ShadowOutcome::FacesAway,
+                tested: Tested::default(),
             };
         }
         let origin = self
@@ -284,29 +316,36 @@ impl<'s> Tracer<'s> {
             .offset
             .origin(surface, position - surface.point);
         let ray = Ray::new(origin, position - origin);
+        let methods = self.scene.settings.intersection();
         let mut transmitted = 1.0;
-        for (i, object) in self.scene.objects.iter().enumerate() {
-            if let Some(t) = object
-                .roots(&ray, self.scene.settings.sphere)
-                .first_in(0.0, t_max)
-            {
-                let k = self.scene.material_of(i).transparent;
-                if k == 0.0 {
-                    return ShadowInfo {
-                        light,
-                        ray,
-                        t_max,
-                        outcome: ShadowOutcome::Blocked { object: i, t },
-                    };
+        let mut blocked = None;
+        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        // Any opaque hit before the light ends the search: the hierarchy stops there.
+        let _ = self
+            .accel
+            .visit(&ray, 0.0, &mut t_max.clone(), &mut outer, |i, _| {
+                let roots =
+                    self.scene.objects[i].roots_within(&ray, methods, t_max, true, &mut inner);
+                if let Some(t) = roots.first_in(0.0, t_max) {
+                    let k = self.scene.material_of(i).transparent;
+                    if k == 0.0 {
+                        blocked = Some((i, t));
+                        return ControlFlow::Break(());
+                    }
+                    transmitted *= k;
                 }
-                transmitted *= k;
-            }
-        }
+                ControlFlow::Continue(())
+            });
+        outer.add(inner);
         ShadowInfo {
             light,
             ray,
             t_max,
-            outcome: ShadowOutcome::Reaches { transmitted },
+            outcome: match blocked {
+                Some((object, t)) => ShadowOutcome::Blocked { object, t },
+                None => ShadowOutcome::Reaches { transmitted },
+            },
+            tested: outer,
         }
     }
 

@@ -69,6 +69,7 @@ impl Transform {
             point,
             point_error,
             normal: (self.normal_to_world * s.normal).normalize(),
+            shading_normal: (self.normal_to_world * s.shading_normal).normalize(),
             pattern_point: s.pattern_point,
         }
     }
@@ -113,6 +114,7 @@ mod tests {
             point: local_n,
             point_error: DVec3::ZERO,
             normal: local_n,
+            shading_normal: local_n,
             pattern_point: local_n,
         };
         let world = tf.surface_to_world(s);

@@ -350,7 +350,14 @@ fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
             }
         })
         .collect();
-    out.push(row("tested", tests.join(" · ")));
+    out.push(row(
+        "tested",
+        format!(
+            "{}: {}",
+            crate::steps::searched(&node.tested),
+            tests.join(" · ")
+        ),
+    ));
     match &node.hit {
         None => out.push(row(
             "hit",
@@ -487,6 +494,11 @@ fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
                     Outline::Line { point, dir, .. } => {
                         if let Some((a, b)) = clip_line(point, dir, lo, hi) {
                             seg(ctx, a, b, c);
+                        }
+                    }
+                    Outline::Polygon { ref points } => {
+                        for (k, &a) in points.iter().enumerate() {
+                            seg(ctx, a, points[(k + 1) % points.len()], c);
                         }
                     }
                     Outline::Parallel => {}
