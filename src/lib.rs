@@ -18,6 +18,7 @@ pub mod chart;
 pub mod diagram;
 pub mod draw;
 pub mod float;
+pub mod generate;
 pub mod hit;
 pub mod image_file;
 pub mod inspector;

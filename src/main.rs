@@ -38,6 +38,100 @@ enum Command {
     Inspect(InspectArgs),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
     Chart(ChartArgs),
+    /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
+    Generate(GenerateArgs),
+}
+
+#[derive(Args)]
+struct GenerateArgs {
+    #[command(subcommand)]
+    what: Generated,
+}
+
+#[derive(Subcommand)]
+enum Generated {
+    /// N random spheres over a floor, at a density that stays the same as N grows.
+    Spheres {
+        /// How many spheres.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+        count: u64,
+        /// Seed of the random placement and materials.
+        #[arg(long, default_value_t = 1)]
+        seed: u64,
+        /// Scene file to write.
+        #[arg(short, long, value_name = "OUT.json")]
+        output: PathBuf,
+    },
+    /// A grid of spheres with random materials (scenes/spheres.json is the default).
+    Grid {
+        /// Spheres across, up and deep.
+        #[arg(long, value_name = "XxYxZ", default_value = "20x5x20", value_parser = parse_grid)]
+        size: [u32; 3],
+        /// Seed of the materials.
+        #[arg(long, default_value_t = 2026)]
+        seed: u64,
+        /// Scene file to write.
+        #[arg(short, long, value_name = "OUT.json")]
+        output: PathBuf,
+    },
+    /// A subdivided icosahedron of about N triangles (20·4^k), as an OBJ file beside a scene that uses it.
+    Icosphere {
+        /// Triangles wanted; the nearest 20·4^k is made.
+        #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..=100_000_000))]
+        triangles: u64,
+        /// Scene file to write; the mesh goes beside it, with .obj.
+        #[arg(short, long, value_name = "OUT.json")]
+        output: PathBuf,
+    },
+}
+
+fn parse_grid(s: &str) -> Result<[u32; 3], String> {
+    let parts: Vec<Option<u32>> = s.split('x').map(|p| p.parse().ok()).collect();
+    match parts[..] {
+        [Some(x), Some(y), Some(z)]
+            if x > 0
+                && y > 0
+                && z > 0
+                && u64::from(x) * u64::from(y) * u64::from(z) <= 10_000_000 =>
+        {
+            Ok([x, y, z])
+        }
+        _ => Err(format!(
+            "'{s}' is not a grid size like 20x5x20 (each at least 1, at most 10 million spheres)"
+        )),
+    }
+}
+
+fn run_generate(args: &GenerateArgs) -> Result<()> {
+    use raytree::generate;
+    let (output, text) = match &args.what {
+        Generated::Spheres {
+            count,
+            seed,
+            output,
+        } => (output, generate::random_spheres(*count as usize, *seed)),
+        Generated::Grid { size, seed, output } => (output, generate::sphere_grid(*size, *seed)),
+        Generated::Icosphere { triangles, output } => {
+            let levels = generate::icosphere_levels(*triangles);
+            let obj = output.with_extension("obj");
+            let name = obj
+                .file_name()
+                .context("the output needs a file name")?
+                .to_string_lossy()
+                .into_owned();
+            let mesh = generate::icosphere_obj(levels);
+            create_output(&obj)?.commit(mesh.as_bytes())?;
+            eprintln!(
+                "wrote {} ({} triangles)",
+                obj.display(),
+                20u64 << (2 * levels)
+            );
+            (output, generate::icosphere_scene(&name, 20 << (2 * levels)))
+        }
+    };
+    create_output(output)?.commit(text.as_bytes())?;
+    eprintln!("wrote {}", output.display());
+    Ok(())
 }
 
 #[derive(Args)]
@@ -66,7 +160,7 @@ struct InspectArgs {
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
     /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff", "sphere", "offset", "weights", "aa"])]
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "width", "height", "spp", "max_depth", "cutoff", "sphere", "offset", "weights", "aa", "triangle", "accel"])]
     trace: Option<PathBuf>,
 }
 
@@ -102,6 +196,12 @@ struct SceneArgs {
     /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980), with an optional threshold [default: grid].
     #[arg(long, value_name = "grid|adaptive[=T]", value_parser = parse_aa)]
     aa: Option<raytree::methods::Antialiasing>,
+    /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].
+    #[arg(long, value_enum)]
+    triangle: Option<raytree::methods::TriangleMethod>,
+    /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), auto (a hierarchy from 16 bounded objects up) [default: auto].
+    #[arg(long, value_enum)]
+    accel: Option<raytree::methods::Accel>,
 }
 
 fn parse_aa(s: &str) -> Result<raytree::methods::Antialiasing, String> {
@@ -172,6 +272,8 @@ impl SceneArgs {
         s.offset = self.offset.unwrap_or(s.offset);
         s.weights = self.weights.unwrap_or(s.weights);
         s.aa = self.aa.unwrap_or(s.aa);
+        s.triangle = self.triangle.unwrap_or(s.triangle);
+        s.accel = self.accel.unwrap_or(s.accel);
         if let Err((field, message)) = s.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }
@@ -357,6 +459,7 @@ fn main() -> ExitCode {
         Command::Diagram(args) => run_diagram(&args),
         Command::Inspect(args) => run_inspect(&args),
         Command::Chart(args) => run_chart(&args),
+        Command::Generate(args) => run_generate(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

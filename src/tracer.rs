@@ -183,7 +183,7 @@ impl<'s> Tracer<'s> {
     /// The object with the smallest root in `(t_min, t_max)`, that root, and the
     /// root's part (a mesh's face).
     #[inline]
-    fn closest_hit<R: Recorder>(
+    pub fn closest_hit<R: Recorder>(
         &self,
         ray: &Ray,
         t_min: f64,

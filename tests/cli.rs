@@ -175,6 +175,16 @@ fn each_validation_error_names_its_field() {
             "objects[0]: give exactly one shape",
         ),
         (
+            "flat-box",
+            r#"{"objects": [{"box": {"min": [0, 0, 0], "max": [1, 0, 1]}}]}"#,
+            "objects[0].box: min must be below max on every axis",
+        ),
+        (
+            "line-triangle",
+            r#"{"objects": [{"triangle": {"vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2]]}}]}"#,
+            "objects[0].triangle.vertices: must be three finite points not on one line",
+        ),
+        (
             "unknown-material",
             r#"{"materials": {"glass": {}}, "objects": [{"sphere": {}, "material": "glas"}]}"#,
             "objects[0].material: no material named 'glas' (defined: glass)",
@@ -225,6 +235,47 @@ fn each_validation_error_names_its_field() {
         assert!(
             e.starts_with(&format!("error: bad.json: {expected}")),
             "{name}: {e}"
+        );
+    }
+}
+
+#[test]
+fn bad_meshes_name_the_obj_file_and_line() {
+    let objs = tempfile::tempdir().unwrap();
+    let cases = [
+        ("missing.obj", None, "missing.obj: no such file"),
+        (
+            "bad-vertex.obj",
+            Some("v 0 0 0\nv 1 0 0\nv 0 1 x\nf 1 2 3\n"),
+            "bad-vertex.obj:3: position parse error",
+        ),
+        (
+            "bad-index.obj",
+            Some("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 4\n"),
+            "bad-index.obj:5: face vertex index out of bounds",
+        ),
+        (
+            "nan.obj",
+            Some("v 0 0 0\nv 1 0 0\nv 0 1 NaN\nf 1 2 3\n"),
+            "nan.obj:3: a coordinate is not a finite number",
+        ),
+        ("empty.obj", Some("# nothing\n"), "empty.obj: has no faces"),
+    ];
+    for (file, text, expected) in cases {
+        let path = objs.path().join(file);
+        if let Some(text) = text {
+            std::fs::write(&path, text).unwrap();
+        }
+        let scene = format!(
+            r#"{{"objects": [{{"mesh": {{"file": "{}"}}}}]}}"#,
+            path.display()
+        );
+        let e = fails(file, Some(&scene), &[]);
+        let expected = format!("error: {}", objs.path().join(expected).display());
+        assert!(e.starts_with(&expected), "{file}: {e}");
+        assert!(
+            e.ends_with("(the mesh of bad.json: objects[0].mesh.file)"),
+            "{file}: {e}"
         );
     }
 }
