@@ -84,6 +84,7 @@ impl Aabb {
 pub struct RayBox {
     origin: DVec3,
     inv_dir: DVec3,
+    neg: glam::BVec3,
     /// Whether each direction component is negative: which child of a split on that
     /// axis the ray meets first.
     pub dir_is_neg: [bool; 3],
@@ -96,22 +97,29 @@ impl RayBox {
         RayBox {
             origin: ray.origin,
             inv_dir,
+            neg: inv_dir.cmplt(DVec3::ZERO),
             dir_is_neg: [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0],
         }
     }
 
     /// The slab test (Kay & Kajiya 1986): the ray is inside the box between the
-    /// largest entering and the smallest leaving slab parameter. The far values are
-    /// widened by `1 + 2γ(3)` so rounding never culls a box the ray touches (pbrt-v4
-    /// §6.1.2); a NaN from a ray lying in a slab plane compares false and misses.
+    /// largest entering and the smallest leaving slab parameter. Which plane of a
+    /// slab is entered first follows from the direction's sign, known per ray, so
+    /// no per-box ordering is needed (Williams et al., "An Efficient and Robust
+    /// Ray–Box Intersection Algorithm", JGT 2005). The leaving values are widened
+    /// by `1 + 2γ(3)` so rounding never culls a box the ray touches (pbrt-v4
+    /// §6.1.2). Plain comparisons, not `min`/`max`: a NaN (a ray lying in a slab's
+    /// plane) then leaves the interval as it was, and the box is kept.
     #[inline]
     pub fn hits(&self, b: &Aabb, t_min: f64, t_max: f64) -> bool {
-        let t0 = (b.min - self.origin) * self.inv_dir;
-        let t1 = (b.max - self.origin) * self.inv_dir;
-        let near = t0.min(t1);
-        let far = t0.max(t1) * (1.0 + 2.0 * gamma(3));
-        let enter = near.max_element().max(t_min);
-        let leave = far.min_element().min(t_max);
+        let near = DVec3::select(self.neg, b.max, b.min);
+        let far = DVec3::select(self.neg, b.min, b.max);
+        let t0 = (near - self.origin) * self.inv_dir;
+        let t1 = (far - self.origin) * self.inv_dir * (1.0 + 2.0 * gamma(3));
+        let enter = t0.max_element();
+        let leave = t1.min_element();
+        let enter = if enter > t_min { enter } else { t_min };
+        let leave = if leave < t_max { leave } else { t_max };
         enter <= leave
     }
 }

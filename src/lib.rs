@@ -20,6 +20,7 @@ pub mod draw;
 pub mod float;
 pub mod generate;
 pub mod hit;
+pub mod image_diff;
 pub mod image_file;
 pub mod inspector;
 pub mod light;

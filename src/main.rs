@@ -38,8 +38,31 @@ enum Command {
     Inspect(InspectArgs),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
     Chart(ChartArgs),
+    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
+    Diff(DiffArgs),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(GenerateArgs),
+}
+
+#[derive(Args)]
+struct DiffArgs {
+    /// First image.
+    a: PathBuf,
+    /// Second image, the same size.
+    b: PathBuf,
+}
+
+fn run_diff(args: &DiffArgs) -> Result<()> {
+    let a = raytree::image_diff::read_rgb8(&args.a)?;
+    let b = raytree::image_diff::read_rgb8(&args.b)?;
+    let d = raytree::image_diff::difference(&a, &b)?;
+    println!(
+        "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255",
+        d.mean,
+        d.max,
+        100.0 * d.share_over_3
+    );
+    Ok(())
 }
 
 #[derive(Args)]
@@ -460,6 +483,7 @@ fn main() -> ExitCode {
         Command::Inspect(args) => run_inspect(&args),
         Command::Chart(args) => run_chart(&args),
         Command::Generate(args) => run_generate(&args),
+        Command::Diff(args) => run_diff(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -75,7 +75,7 @@ impl Mesh {
 
     /// The nearest hit in `(0, t_max)` as a root whose part is the face; with
     /// `any`, the first hit found (enough for a shadow ray).
-    #[inline]
+    #[inline(never)]
     pub fn roots(
         &self,
         ray: &Ray,

@@ -44,27 +44,30 @@ impl Shape {
         any: bool,
         tested: &mut Tested,
     ) -> Roots {
-        if let Shape::Mesh(m) = self {
-            return m.roots(ray, methods.triangle, t_max, any, tested);
-        }
-        tested.primitives += 1;
+        // The analytic shapes inline into the tracer's loop; meshes and single
+        // triangles stay out of line so they do not bloat it.
         match self {
-            Shape::Sphere(s) if methods.sphere == SphereMethod::Lecture => s.lecture_roots(ray),
-            Shape::Sphere(s) => s.roots(ray),
-            Shape::Plane(p) => p.roots(ray),
-            Shape::Box(b) => b.roots(ray),
-            Shape::Triangle(tri) => {
-                let hit = match methods.triangle {
-                    TriangleMethod::Watertight => {
-                        tri.watertight(&ShearedRay::new(ray), f64::NEG_INFINITY, f64::INFINITY)
-                    }
-                    TriangleMethod::MollerTrumbore => {
-                        tri.moller_trumbore(ray, f64::NEG_INFINITY, f64::INFINITY)
-                    }
-                };
-                hit.map_or(Roots::NONE, |h| Roots::one(h.t))
+            Shape::Sphere(s) => {
+                tested.primitives += 1;
+                if methods.sphere == SphereMethod::Lecture {
+                    s.lecture_roots(ray)
+                } else {
+                    s.roots(ray)
+                }
             }
-            Shape::Mesh(_) => unreachable!("handled above"),
+            Shape::Plane(p) => {
+                tested.primitives += 1;
+                p.roots(ray)
+            }
+            Shape::Box(b) => {
+                tested.primitives += 1;
+                b.roots(ray)
+            }
+            Shape::Triangle(tri) => {
+                tested.primitives += 1;
+                triangle_roots(tri, ray, methods.triangle)
+            }
+            Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, any, tested),
         }
     }
 
@@ -129,6 +132,19 @@ impl Shape {
             Shape::Mesh(_) => "mesh",
         }
     }
+}
+
+#[inline(never)]
+fn triangle_roots(tri: &Triangle, ray: &Ray, method: TriangleMethod) -> Roots {
+    let hit = match method {
+        TriangleMethod::Watertight => {
+            tri.watertight(&ShearedRay::new(ray), f64::NEG_INFINITY, f64::INFINITY)
+        }
+        TriangleMethod::MollerTrumbore => {
+            tri.moller_trumbore(ray, f64::NEG_INFINITY, f64::INFINITY)
+        }
+    };
+    hit.map_or(Roots::NONE, |h| Roots::one(h.t))
 }
 
 /// One object of a scene.

@@ -23,28 +23,31 @@ pub struct Sphere {
 }
 
 impl Sphere {
-    /// The stable roots (Ray Tracing Gems, ch. 7, eq. 7.11–7.13): with unit `d̂` and
-    /// `f = S - C`, the discriminant is `r² - |f - (f·d̂)d̂|²` (no cancellation between
-    /// two large squares), and the roots are `q` and `c/q` with
-    /// `q = -(b + sign(b)·√Δ)`, so neither is a difference of near-equal numbers.
+    /// The stable roots (Ray Tracing Gems, ch. 7, eq. 7.11–7.13): with `f = S - C`,
+    /// `a = c·c` and `b = f·c`, the discriminant is `Δ = r² - |f - (b/a)c|²`, the
+    /// squared distance from the center to the line subtracted from `r²` (no
+    /// cancellation between two large squares), and the roots are `q/a` and `C/q`
+    /// with `q = -(b + sign(b)·√(aΔ))`, so neither is a difference of near-equal
+    /// numbers. The direction need not be unit length: a miss costs one division
+    /// and no square root.
     #[inline]
     pub fn roots(&self, ray: &Ray) -> Roots {
-        let len = ray.dir.length();
-        let d = ray.dir / len;
+        let d = ray.dir;
+        let a = d.length_squared();
         let f = ray.origin - self.center;
         let b = f.dot(d);
-        let perp = f - b * d;
+        let perp = f - (b / a) * d;
         let r2 = self.radius * self.radius;
         let disc = r2 - perp.length_squared();
         if disc < 0.0 {
             return Roots::NONE;
         }
-        let c = f.length_squared() - r2;
         if disc == 0.0 {
-            return Roots::one(-b / len);
+            return Roots::one(-b / a);
         }
-        let q = -(b + b.signum() * disc.sqrt());
-        Roots::two(c / q / len, q / len)
+        let c = f.length_squared() - r2;
+        let q = -(b + b.signum() * (a * disc).sqrt());
+        Roots::two(c / q, q / a)
     }
 
     /// The lecture's roots as written: `A = |c|²`, `B = f·c`, `C = |f|² - r²`,
