@@ -20,9 +20,8 @@ pub const AUTO_MIN_OBJECTS: usize = 16;
 pub struct Accelerator {
     /// Objects without bounds (planes), or every object when there is no hierarchy.
     always: Vec<u32>,
-    /// The hierarchy over the bounded objects, whose leaves index `bounded`.
+    /// The hierarchy over the bounded objects; its leaves hold object indices.
     bvh: Option<Bvh>,
-    bounded: Vec<u32>,
 }
 
 impl Accelerator {
@@ -40,7 +39,6 @@ impl Accelerator {
             return Accelerator {
                 always: all.collect(),
                 bvh: None,
-                bounded: Vec::new(),
             };
         }
         let (bounded, always): (Vec<u32>, Vec<u32>) =
@@ -49,10 +47,11 @@ impl Accelerator {
             .iter()
             .map(|&i| bounds[i as usize].expect("bounded"))
             .collect();
+        let mut bvh = Bvh::build(&boxes);
+        bvh.relabel(|i| bounded[i as usize]);
         Accelerator {
             always,
-            bvh: Some(Bvh::build(&boxes)),
-            bounded,
+            bvh: Some(bvh),
         }
     }
 
@@ -78,9 +77,7 @@ impl Accelerator {
         }
         match &self.bvh {
             None => ControlFlow::Continue(()),
-            Some(bvh) => bvh.traverse(&RayBox::new(ray), t_min, t_max, tested, |leaf, t_max| {
-                visit(self.bounded[leaf] as usize, t_max)
-            }),
+            Some(bvh) => bvh.traverse(&RayBox::new(ray), t_min, t_max, tested, visit),
         }
     }
 }

@@ -154,8 +154,9 @@ pub struct Object {
     pub name: String,
     /// The primitive, in object space.
     pub shape: Shape,
-    /// Object space to world space; `None` when they coincide.
-    pub transform: Option<Transform>,
+    /// Object space to world space; `None` when they coincide. Boxed: most
+    /// objects have none, and a small object keeps more of a big scene in cache.
+    pub transform: Option<Box<Transform>>,
     /// Index into the scene's materials.
     pub material: usize,
 }
@@ -221,6 +222,7 @@ impl Object {
     pub fn center(&self) -> DVec3 {
         let c = self.shape.center();
         self.transform
+            .as_ref()
             .map_or(c, |tf| tf.to_world.transform_point3(c))
     }
 }

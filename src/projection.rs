@@ -166,6 +166,7 @@ impl Projection {
                 let point = linear * p.point + translation;
                 let normal = object
                     .transform
+                    .as_ref()
                     .map_or(p.normal, |t| (t.normal_to_world * p.normal).normalize());
                 // Where the plane crosses the diagram plane: a·(right·m) + b·(up·m) = (p₀ - O)·m.
                 let n2 = self.vector(normal);
@@ -341,7 +342,7 @@ mod tests {
         // so the bounds are x in -2 ± 2 and y in 3 ± 6.
         let m = glam::DAffine3::from_rotation_z(std::f64::consts::FRAC_PI_2)
             * glam::DAffine3::from_scale(DVec3::new(3.0, 1.0, 1.0));
-        let t = crate::transform::Transform::new(m);
+        let t = crate::transform::Transform::new(m).map(Box::new);
         let (lo, hi) = proj.outline(&sphere(t)).bounds().unwrap();
         assert!(
             lo.abs_diff_eq(DVec2::new(-4.0, -3.0), 1e-12)

@@ -154,17 +154,33 @@ pub fn render_counting(
     render_with::<RayCounter>(scene, progress)
 }
 
+/// Renders with a tracer already built (its hierarchy too), counting every ray
+/// cast: what a benchmark that times the tracing alone needs.
+pub fn render_counting_with(
+    tracer: &Tracer,
+    progress: &ProgressBar,
+) -> Result<(Image, RayCounter), std::collections::TryReserveError> {
+    render_traced::<RayCounter>(tracer, progress)
+}
+
 /// Renders with a fresh recorder of type `R` per row; the rows' recorders are
 /// merged by `RayCounter::add` when `R` counts.
 fn render_with<R: Recorder + Default + Send + Tally>(
     scene: &Scene,
     progress: &ProgressBar,
 ) -> Result<(Image, R), std::collections::TryReserveError> {
+    render_traced(&Tracer::new(scene), progress)
+}
+
+fn render_traced<R: Recorder + Default + Send + Tally>(
+    tracer: &Tracer,
+    progress: &ProgressBar,
+) -> Result<(Image, R), std::collections::TryReserveError> {
+    let scene = tracer.scene();
     let (width, height) = (scene.settings.width, scene.settings.height);
     let mut pixels = Vec::new();
     pixels.try_reserve_exact(width as usize * height as usize)?;
     pixels.resize(width as usize * height as usize, DVec3::ZERO);
-    let tracer = Tracer::new(scene);
     let camera = scene.camera();
     progress.set_length(u64::from(height));
     let tally = pixels
@@ -173,7 +189,7 @@ fn render_with<R: Recorder + Default + Send + Tally>(
         .map(|(y, row)| {
             let mut rec = R::default();
             for (x, pixel) in row.iter_mut().enumerate() {
-                *pixel = pixel_color(&tracer, &camera, x as u32, y as u32, &mut rec);
+                *pixel = pixel_color(tracer, &camera, x as u32, y as u32, &mut rec);
             }
             progress.inc(1);
             rec

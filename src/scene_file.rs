@@ -620,7 +620,7 @@ impl Builder<'_> {
                 .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
                     self.step(i, k, step).map(|s| s * m)
                 })?;
-            Some(Transform::new(m).ok_or_else(|| self.invalid(format_args!("objects[{i}].transform"), "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted"))?)
+            Some(Box::new(Transform::new(m).ok_or_else(|| self.invalid(format_args!("objects[{i}].transform"), "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted"))?))
         };
         let name = o
             .name

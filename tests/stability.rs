@@ -461,7 +461,7 @@ fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
         r#"{ "objects": [{"sphere": {}, "transform": [{"scale": [1, 1e-4, 1]}, {"rotate_z": 30}]}] }"#,
     );
     let object = &s.objects[0];
-    let tf = object.transform.unwrap();
+    let tf = **object.transform.as_ref().unwrap();
     let angle = |a: DVec3, b: DVec3| a.cross(b).length().atan2(a.dot(b));
     let (mut worst, mut worst_naive) = (0.0f64, 0.0f64);
     for k in 0..200 {
