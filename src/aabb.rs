@@ -84,10 +84,9 @@ impl Aabb {
 pub struct RayBox {
     origin: DVec3,
     inv_dir: DVec3,
+    /// Which direction components are negative: which plane of each slab the
+    /// ray enters first, and which child of a split it meets first.
     neg: glam::BVec3,
-    /// Whether each direction component is negative: which child of a split on that
-    /// axis the ray meets first.
-    pub dir_is_neg: [bool; 3],
 }
 
 impl RayBox {
@@ -98,8 +97,14 @@ impl RayBox {
             origin: ray.origin,
             inv_dir,
             neg: inv_dir.cmplt(DVec3::ZERO),
-            dir_is_neg: [inv_dir.x < 0.0, inv_dir.y < 0.0, inv_dir.z < 0.0],
         }
+    }
+
+    /// Whether the direction's component along `axis` is negative: the child of a
+    /// split on that axis with the larger coordinates is the nearer one.
+    #[inline]
+    pub fn dir_is_neg(&self, axis: usize) -> bool {
+        self.neg.test(axis)
     }
 
     /// The slab test (Kay & Kajiya 1986): the ray is inside the box between the

@@ -200,7 +200,7 @@ impl Bvh {
                     }
                 } else {
                     // Visit the near child now, keep the far one for later.
-                    let (near, far) = if ray.dir_is_neg[usize::from(node.axis)] {
+                    let (near, far) = if ray.dir_is_neg(usize::from(node.axis)) {
                         (node.offset as usize, at + 1)
                     } else {
                         (at + 1, node.offset as usize)
@@ -279,6 +279,19 @@ mod tests {
         }
     }
 
+    /// 1,000 small cubes on a 10 × 10 × 10 grid of spacing 1.
+    fn ten_by_ten_by_ten() -> Vec<Aabb> {
+        (0..1000)
+            .map(|i| {
+                cube(DVec3::new(
+                    (i % 10) as f64,
+                    (i / 10 % 10) as f64,
+                    (i / 100) as f64,
+                ))
+            })
+            .collect()
+    }
+
     /// Every primitive a brute-force slab test says the ray meets.
     fn met(boxes: &[Aabb], ray: &Ray) -> Vec<usize> {
         let rb = RayBox::new(ray);
@@ -289,15 +302,7 @@ mod tests {
 
     #[test]
     fn every_primitive_is_in_exactly_one_leaf() {
-        let boxes: Vec<Aabb> = (0..1000)
-            .map(|i| {
-                cube(DVec3::new(
-                    (i % 10) as f64,
-                    (i / 10 % 10) as f64,
-                    (i / 100) as f64,
-                ))
-            })
-            .collect();
+        let boxes = ten_by_ten_by_ten();
         let bvh = Bvh::build(&boxes);
         let mut seen = bvh.order.clone();
         seen.sort_unstable();
@@ -307,15 +312,7 @@ mod tests {
 
     #[test]
     fn traversal_visits_every_box_the_ray_meets_and_few_others() {
-        let boxes: Vec<Aabb> = (0..1000)
-            .map(|i| {
-                cube(DVec3::new(
-                    (i % 10) as f64,
-                    (i / 10 % 10) as f64,
-                    (i / 100) as f64,
-                ))
-            })
-            .collect();
+        let boxes = ten_by_ten_by_ten();
         let bvh = Bvh::build(&boxes);
         let ray = Ray::new(DVec3::new(-1.0, 4.1, 3.9), DVec3::new(1.0, 0.01, 0.02));
         let mut visited = Vec::new();
