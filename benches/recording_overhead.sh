@@ -4,7 +4,7 @@
 # Builds the tracer twice from the same source: as shipped (the renderer calls
 # every hook on the no-op recorder), and with `--cfg raytree_no_hooks`, which
 # removes every hook call from the source (the `record!` macro in
-# src/recorder.rs). Then compares, on the Whitted scene at 640×480:
+# src/trace/recorder.rs). Then compares, on the Whitted scene at 640×480:
 #   - wall time: the divan benchmark `whitted_640x480` (median of 30 renders), and
 #   - instructions executed, counted by callgrind on one single-threaded render
 #     (exact and repeatable, unlike time on a shared machine), if valgrind is

@@ -8,11 +8,11 @@ use divan::Bencher;
 use divan::counter::ItemsCount;
 use glam::DVec3;
 use indicatif::ProgressBar;
-use raytree::plane::Plane;
-use raytree::ray::Ray;
-use raytree::render;
-use raytree::sphere::Sphere;
-use raytree::trace::{SceneRef, Trace};
+use raytree::geometry::plane::Plane;
+use raytree::geometry::sphere::Sphere;
+use raytree::math::ray::Ray;
+use raytree::trace::render;
+use raytree::tree::document::{SceneRef, Trace};
 
 fn main() {
     divan::main();
@@ -65,7 +65,7 @@ fn ray_plane(bencher: Bencher) {
 /// The Whitted scene at 640×480, 1 sample per pixel, max depth 8, on all cores.
 #[divan::bench(sample_count = 30, sample_size = 1)]
 fn whitted_640x480(bencher: Bencher) {
-    let mut scene = raytree::scene_file::whitted();
+    let mut scene = raytree::scene::loader::whitted();
     scene.settings.width = 640;
     scene.settings.height = 480;
     scene.settings.spp = 1;
@@ -81,7 +81,7 @@ fn whitted_640x480(bencher: Bencher) {
 /// over a 16 × 12 grid of pixels of the Whitted scene, glass and mirror included.
 #[divan::bench(sample_count = 30)]
 fn record_pixel(bencher: Bencher) {
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let pixels: Vec<(u32, u32)> = (0..12)
         .flat_map(|j| (0..16).map(move |i| (20 + 40 * i, 20 + 40 * j)))
         .collect();
@@ -98,7 +98,7 @@ fn record_pixel(bencher: Bencher) {
 /// An inspector on the Whitted scene laid out as on a 160 × 48 terminal, no worker thread.
 fn inspector_on_whitted() -> raytree::inspector::App {
     use ratatui::layout::Rect;
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let mut app =
         raytree::inspector::App::new(scene, SceneRef::new("whitted.json", ""), None, false);
     app.areas = raytree::inspector::Areas {

@@ -18,9 +18,9 @@ use std::time::Instant;
 
 use indicatif::ProgressBar;
 use raytree::methods::Accel;
-use raytree::render::render_counting_with;
 use raytree::scene::Scene;
-use raytree::tracer::Tracer;
+use raytree::trace::render::render_counting_with;
+use raytree::trace::tracer::Tracer;
 
 /// Median seconds of `runs` renders, and the rays one render casts.
 fn time_render(scene: &Scene, runs: usize) -> (f64, u64) {
@@ -50,7 +50,7 @@ fn main() {
     );
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
     for name in ["whitted.json", "spheres.json", "gaspra.json"] {
-        let scene = raytree::scene_file::load(&root.join(name)).expect("shipped scene");
+        let scene = raytree::scene::loader::load(&root.join(name)).expect("shipped scene");
         let accel = if Tracer::new(&scene).accelerator().bvh().is_some() {
             "bvh"
         } else {
@@ -79,8 +79,9 @@ fn main() {
         &[10, 100, 1_000, 10_000, 100_000, 1_000_000]
     };
     for &n in counts {
-        let text = raytree::generate::random_spheres(n, 1);
-        let mut scene = raytree::scene_file::parse(&text, "random.json").expect("generated scene");
+        let text = raytree::scene::generate::random_spheres(n, 1);
+        let mut scene =
+            raytree::scene::loader::parse(&text, "random.json").expect("generated scene");
         scene.settings.width = 320;
         scene.settings.height = 240;
         scene.settings.accel = Accel::Bvh;
@@ -109,11 +110,11 @@ fn main() {
         );
     }
 
-    let gaspra = raytree::scene_file::load(&root.join("gaspra.json")).expect("shipped scene");
+    let gaspra = raytree::scene::loader::load(&root.join("gaspra.json")).expect("shipped scene");
     for o in &gaspra.objects {
-        if let raytree::object::Shape::Mesh(m) = &o.shape {
+        if let raytree::geometry::object::Shape::Mesh(m) = &o.shape {
             let start = Instant::now();
-            let rebuilt = raytree::mesh::Mesh::new(
+            let rebuilt = raytree::geometry::mesh::Mesh::new(
                 m.positions.clone(),
                 m.normals.clone(),
                 m.faces.clone(),

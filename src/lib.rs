@@ -1,49 +1,30 @@
 //! raytree: a Whitted-style ray tracer that can show its work.
 //!
-//! The modules follow the lecture (`shared/lecture-raytracing.md`): the camera and
-//! its rays ([`camera`], [`ray`]), ray–object intersection ([`sphere`], [`plane`],
-//! [`transform`], [`object`]), local illumination ([`phong`]) with shadow rays, the
-//! reflected and refracted rays ([`optics`]), and the recursion that ties them
-//! together ([`tracer`]). Around them: scenes ([`scene`], [`scene_file`]), the
-//! renderer ([`render`], [`image_file`]) and what the tracer reports ([`recorder`]).
+//! Data flows one way, and the folders follow it: a scene file is read into a
+//! [`scene`], the [`trace`] folder runs the lecture's recursive `raytrace` over it
+//! (rendering every pixel, or recording one pixel's rays into a [`tree`]), and the
+//! [`views`] and the [`inspector`] show that tree; [`io`] writes the images.
+//! Underneath, [`math`], [`geometry`] and [`shading`] hold the lecture's formulas.
+//!
+//! Read in the lecture's order (`shared/lecture-raytracing.md`):
+//! - the camera and the ray through a pixel: [`scene::camera`], [`math::ray`];
+//! - ray–object intersection: [`geometry::sphere`], [`geometry::plane`],
+//!   [`geometry::cuboid`], [`geometry::triangle`], [`geometry::mesh`];
+//! - transformed primitives and the inverse-transformed ray: [`geometry::transform`];
+//! - local illumination: [`shading::phong`], with shadow rays in [`trace::tracer`];
+//! - reflected and refracted rays, Snell's law: [`shading::optics`];
+//! - the recursion that ties them together: [`trace::tracer`];
+//! - efficiency, avoiding intersection tests: [`geometry::bvh`], [`trace::accelerator`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod aabb;
-pub mod accel;
-pub mod aligned_box;
-pub mod bvh;
-pub mod camera;
-pub mod chart;
-pub mod diagram;
-pub mod draw;
-pub mod float;
-pub mod generate;
-pub mod hit;
-pub mod image_diff;
-pub mod image_file;
+pub mod geometry;
 pub mod inspector;
-pub mod light;
-pub mod material;
-pub mod mesh;
+pub mod io;
+pub mod math;
 pub mod methods;
-pub mod obj_file;
-pub mod object;
-pub mod optics;
-pub mod phong;
-pub mod plane;
-pub mod projection;
-pub mod ray;
-pub mod ray_tree;
-pub mod recorder;
-pub mod render;
 pub mod scene;
-pub mod scene_file;
-pub mod show;
-pub mod sphere;
-pub mod steps;
+pub mod shading;
 pub mod trace;
-pub mod trace_text;
-pub mod tracer;
-pub mod transform;
-pub mod triangle;
+pub mod tree;
+pub mod views;

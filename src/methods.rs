@@ -6,14 +6,14 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::float::offset_ray_origin;
-use crate::hit::Surface;
+use crate::geometry::hit::Surface;
+use crate::math::float::offset_ray_origin;
 
 /// How a ray meets a sphere.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum SphereMethod {
-    /// The lecture's quadratic as written ([`crate::sphere::Sphere::lecture_roots`]).
+    /// The lecture's quadratic as written ([`crate::geometry::sphere::Sphere::lecture_roots`]).
     Lecture,
     /// The numerically stable form (Ray Tracing Gems ch. 7).
     #[default]
@@ -25,7 +25,7 @@ pub enum SphereMethod {
 #[serde(rename_all = "snake_case")]
 pub enum TriangleMethod {
     /// The textbook Möller–Trumbore test: rays through shared edges can slip
-    /// between two triangles ([`crate::triangle::Triangle::moller_trumbore`]).
+    /// between two triangles ([`crate::geometry::triangle::Triangle::moller_trumbore`]).
     MollerTrumbore,
     /// Woop, Benthin & Wald's watertight test (JCGT 2013).
     #[default]
@@ -37,12 +37,12 @@ pub enum TriangleMethod {
 #[serde(rename_all = "snake_case")]
 pub enum Accel {
     /// Chosen from the scene: a hierarchy once there are enough objects to pay
-    /// for its box tests ([`crate::accel::AUTO_MIN_OBJECTS`]), none below.
+    /// for its box tests ([`crate::trace::accelerator::AUTO_MIN_OBJECTS`]), none below.
     #[default]
     Auto,
     /// Test every object, as the lecture's `raytrace` does.
     None,
-    /// A bounding volume hierarchy over the objects ([`crate::bvh`]).
+    /// A bounding volume hierarchy over the objects ([`crate::geometry::bvh`]).
     Bvh,
 }
 

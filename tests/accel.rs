@@ -4,17 +4,17 @@
 use std::fmt::Write;
 
 use glam::DVec3;
-use raytree::bvh::Tested;
+use raytree::geometry::bvh::Tested;
+use raytree::math::ray::Ray;
 use raytree::methods::{Accel, TriangleMethod};
-use raytree::ray::Ray;
-use raytree::recorder::NoRecorder;
-use raytree::tracer::Tracer;
+use raytree::trace::recorder::NoRecorder;
+use raytree::trace::tracer::Tracer;
 
 /// A random scene of every kind of object: spheres, boxes and triangles, some
 /// transformed, two icosphere meshes (one stretched), and a plane.
 fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
     let obj = dir.join(format!("ico{seed}.obj"));
-    std::fs::write(&obj, raytree::generate::icosphere_obj(2)).unwrap();
+    std::fs::write(&obj, raytree::scene::generate::icosphere_obj(2)).unwrap();
     let mut rng = fastrand::Rng::with_seed(seed);
     let mut p = |scale: f64| {
         DVec3::new(
@@ -92,7 +92,7 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
     let (mut saved, mut all) = (0u64, 0u64);
     for seed in 1..=6 {
         let text = random_scene(seed, 60 * seed as usize, dir.path());
-        let mut brute = raytree::scene_file::parse(&text, "random.json").unwrap();
+        let mut brute = raytree::scene::loader::parse(&text, "random.json").unwrap();
         brute.settings.accel = Accel::None;
         let mut bvh = brute.clone();
         bvh.settings.accel = Accel::Bvh;
@@ -116,8 +116,9 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
             all += count(&tb);
         }
         // Whole images, shadows and recursion included, agree bit for bit.
-        let none = raytree::render::render(&brute, &indicatif::ProgressBar::hidden()).unwrap();
-        let with = raytree::render::render(&bvh, &indicatif::ProgressBar::hidden()).unwrap();
+        let none =
+            raytree::trace::render::render(&brute, &indicatif::ProgressBar::hidden()).unwrap();
+        let with = raytree::trace::render::render(&bvh, &indicatif::ProgressBar::hidden()).unwrap();
         assert!(none == with, "seed {seed}: the images differ");
     }
     println!(
@@ -137,7 +138,7 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
 #[derive(Default)]
 struct Counts(Tested);
 
-impl raytree::recorder::Recorder for Counts {
+impl raytree::trace::recorder::Recorder for Counts {
     const ENABLED: bool = true;
     fn tested(&mut self, t: &Tested) {
         self.0 = *t;
@@ -149,8 +150,8 @@ impl raytree::recorder::Recorder for Counts {
 /// the watertight test none (Woop, Benthin & Wald 2013, figure 1).
 #[test]
 fn watertight_triangles_have_no_cracks_where_moller_trumbore_does() {
-    let (positions, faces) = raytree::generate::icosphere(4);
-    let mesh = raytree::mesh::Mesh::new(positions.clone(), vec![], faces.clone(), vec![]);
+    let (positions, faces) = raytree::scene::generate::icosphere(4);
+    let mesh = raytree::geometry::mesh::Mesh::new(positions.clone(), vec![], faces.clone(), vec![]);
     let mut rng = fastrand::Rng::with_seed(7);
     let mut misses = [0usize; 2];
     let mut rays = 0;

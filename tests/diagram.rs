@@ -5,14 +5,14 @@
 //! `RAYTREE_BLESS=1 cargo test --test diagram`, and look at them.
 
 use glam::DVec2;
-use raytree::diagram::{Labels, Options, draw};
-use raytree::draw::{Figure, palette};
-use raytree::object::Shape;
-use raytree::projection::{Outline, Projection, View};
-use raytree::trace::{SceneRef, Trace};
+use raytree::geometry::object::Shape;
+use raytree::tree::document::{SceneRef, Trace};
+use raytree::views::diagram::{Labels, Options, draw};
+use raytree::views::figure::{Figure, palette};
+use raytree::views::projection::{Outline, Projection, View};
 
 fn whitted_figure(x: u32, y: u32, options: &Options) -> (raytree::scene::Scene, Trace, Figure) {
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let trace = Trace::pixel(&scene, SceneRef::new("scenes/whitted.json", ""), x, y, None).unwrap();
     let figure = draw(&trace, &scene, options).unwrap();
     (scene, trace, figure)

@@ -14,8 +14,8 @@
 use std::path::PathBuf;
 
 use glam::DVec3;
-use raytree::ray::Ray;
-use raytree::trace::{SceneRef, Trace};
+use raytree::math::ray::Ray;
+use raytree::tree::document::{SceneRef, Trace};
 use serde_json::Value;
 
 const REL_TOL: f64 = 1e-9;
@@ -90,7 +90,7 @@ fn root() -> PathBuf {
 fn trace(g: &Golden) -> Trace {
     let file = format!("scenes/{}", g.scene);
     let text = std::fs::read_to_string(root().join(&file)).unwrap();
-    let mut scene = raytree::scene_file::parse(&text, &file).unwrap();
+    let mut scene = raytree::scene::loader::parse(&text, &file).unwrap();
     if let Some(spp) = g.spp {
         scene.settings.spp = spp;
     }
@@ -178,8 +178,8 @@ fn golden_traces_still_hold() {
 
 #[test]
 fn golden_traces_show_what_they_are_named_for() {
-    use raytree::ray_tree::Outcome;
-    use raytree::recorder::{Branch, RayKind};
+    use raytree::trace::recorder::{Branch, RayKind};
+    use raytree::tree::ray_tree::Outcome;
     let load = |name: &str| -> Trace {
         serde_json::from_str(
             &std::fs::read_to_string(root().join("tests/traces").join(format!("{name}.json")))

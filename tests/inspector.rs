@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{
 };
 use ratatui::layout::Rect;
 use raytree::inspector::{App, Areas, Focus, Item, draw};
-use raytree::trace::SceneRef;
+use raytree::tree::document::SceneRef;
 
 fn key(app: &mut App, code: KeyCode) {
     app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -23,7 +23,7 @@ fn keys(app: &mut App, text: &str) {
 /// An inspector on the Whitted scene with an 80 × 30-cell image pane, as if drawn.
 fn app_at(pixel: Option<(u32, u32)>) -> App {
     let mut app = App::new(
-        raytree::scene_file::whitted(),
+        raytree::scene::loader::whitted(),
         SceneRef::new("scenes/whitted.json", ""),
         pixel,
         false,
@@ -225,12 +225,13 @@ fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     let image = app.areas.image;
     let window = app.window();
     // Every dot shows the 8-bit color the renderer gives its pixel.
-    let scene = raytree::scene_file::whitted();
-    let rendered = raytree::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+    let scene = raytree::scene::loader::whitted();
+    let rendered =
+        raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
     let (ci, cj) = window.dot_of(416, 209).unwrap();
     for (i, j) in [(5u16, 5u16), (40, 33), (ci, cj + 2)] {
         let (x, y) = window.pixel_at(i, j, 640, 480).unwrap();
-        let [r, g, b] = raytree::image_file::rgb8(rendered.get(x, y));
+        let [r, g, b] = raytree::io::image_file::rgb8(rendered.get(x, y));
         let cell = &buffer[(image.x + i, image.y + j / 2)];
         let shown = if j % 2 == 0 { cell.fg } else { cell.bg };
         assert_eq!(shown, ratatui::style::Color::Rgb(r, g, b), "dot ({i}, {j})");

@@ -8,14 +8,14 @@ use std::collections::BTreeSet;
 
 use glam::DVec3;
 use indicatif::ProgressBar;
+use raytree::math::ray::Ray;
 use raytree::methods::Antialiasing;
-use raytree::ray::Ray;
-use raytree::ray_tree::RayTree;
-use raytree::recorder::Branch;
-use raytree::render::render;
 use raytree::scene::Scene;
-use raytree::steps::StepKind;
-use raytree::trace::{SceneRef, Trace};
+use raytree::trace::recorder::Branch;
+use raytree::trace::render::render;
+use raytree::tree::document::{SceneRef, Trace};
+use raytree::tree::ray_tree::RayTree;
+use raytree::tree::steps::StepKind;
 
 fn source(name: &str) -> SceneRef {
     SceneRef::new(&format!("scenes/{name}"), "")
@@ -182,7 +182,7 @@ fn traced_color_equals_rendered_color_bit_for_bit() {
 
 #[test]
 fn json_reads_back_exactly() {
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let pixel = Trace::pixel(&scene, source("whitted.json"), 416, 209, None).unwrap();
     let ray = Trace::ray(
         &scene,
@@ -232,7 +232,7 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<String> {
 
 #[test]
 fn reading_rejects_unknown_fields() {
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let trace = Trace::pixel(&scene, source("whitted.json"), 100, 100, None).unwrap();
     let text = trace.to_json().replacen(
         "\"format\": \"raytree-trace\",",
@@ -253,7 +253,7 @@ fn every_field_is_documented() {
         "/book/src/trace-format.md"
     ))
     .unwrap();
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let src = source("whitted.json");
     let mut traces: Vec<Trace> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
         .iter()
@@ -384,7 +384,7 @@ fn steps_follow_the_algorithm() {
 
 #[test]
 fn step_texts_carry_their_numbers() {
-    let scene = raytree::scene_file::whitted();
+    let scene = raytree::scene::loader::whitted();
     let trace = Trace::pixel(&scene, source("whitted.json"), 168, 296, None).unwrap();
     let steps = trace.steps(0);
     let texts: Vec<&str> = steps.iter().map(|s| s.text.as_str()).collect();
@@ -393,10 +393,13 @@ fn step_texts_carry_their_numbers() {
         .find(|t| t.starts_with("shadow ray to light 'key': blocked by 'mirror' at t = "))
         .expect("the key light is blocked by the mirror");
     let t = match &trace.samples[0].tree.nodes[0].shadow_rays[0].outcome {
-        raytree::ray_tree::Outcome::Blocked { t, .. } => *t,
+        raytree::tree::ray_tree::Outcome::Blocked { t, .. } => *t,
         other => panic!("{other:?}"),
     };
-    assert!(blocked.ends_with(&raytree::show::num(t)), "{blocked}");
+    assert!(
+        blocked.ends_with(&raytree::views::numbers::num(t)),
+        "{blocked}"
+    );
     assert!(
         texts
             .iter()

@@ -43,13 +43,13 @@ fn readme_trace_example_is_current() {
 #[test]
 fn readme_image_is_the_builtin_scene_as_rendered_today() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/whitted.png");
-    let scene = raytree::scene_file::whitted();
-    let image = raytree::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
-    let now = raytree::image_file::to_rgb8(&image);
+    let scene = raytree::scene::loader::whitted();
+    let image = raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+    let now = raytree::io::image_file::to_rgb8(&image);
     if std::env::var_os("RAYTREE_BLESS").is_some() {
         std::fs::write(
             path,
-            raytree::image_file::encode(&image, raytree::image_file::Format::Png).unwrap(),
+            raytree::io::image_file::encode(&image, raytree::io::image_file::Format::Png).unwrap(),
         )
         .unwrap();
         return;

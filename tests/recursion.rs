@@ -5,9 +5,9 @@
 mod common;
 
 use indicatif::ProgressBar;
-use raytree::image_file::to_rgb8;
-use raytree::render::render_counting;
+use raytree::io::image_file::to_rgb8;
 use raytree::scene::RenderSettings;
+use raytree::trace::render::render_counting;
 
 #[test]
 fn default_cutoff_changes_no_pixel_by_more_than_one_level() {

@@ -3,11 +3,11 @@
 mod common;
 
 use indicatif::ProgressBar;
-use raytree::render::render;
+use raytree::trace::render::render;
 
 #[test]
 fn same_image_bit_for_bit_on_one_two_and_three_threads() {
-    let mut scene = raytree::scene_file::whitted();
+    let mut scene = raytree::scene::loader::whitted();
     scene.settings.width = 200;
     scene.settings.height = 150;
     scene.settings.spp = 4;
@@ -37,9 +37,9 @@ fn shipped_scenes_render_finite_colors() {
 #[test]
 fn adaptive_antialiasing_splits_only_where_corners_differ() {
     use raytree::methods::Antialiasing;
-    use raytree::recorder::RayCounter;
-    use raytree::render::pixel_color;
-    use raytree::tracer::Tracer;
+    use raytree::trace::recorder::RayCounter;
+    use raytree::trace::render::pixel_color;
+    use raytree::trace::tracer::Tracer;
     // A white ball on a black background, 64 × 48: a pixel in the empty corner
     // traces its four corners and stops; a pixel on the ball's edge splits.
     let mut s = common::scene(

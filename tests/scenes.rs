@@ -12,7 +12,7 @@ fn every_shipped_scene_loads() {
     for entry in std::fs::read_dir(scenes()).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "json") {
-            raytree::scene_file::load(&path).unwrap_or_else(|e| panic!("{e}"));
+            raytree::scene::loader::load(&path).unwrap_or_else(|e| panic!("{e}"));
             names.push(path.file_name().unwrap().to_string_lossy().into_owned());
         }
     }
@@ -29,22 +29,22 @@ fn every_shipped_scene_loads() {
 fn spheres_json_is_the_generators_grid() {
     let shipped = std::fs::read_to_string(scenes().join("spheres.json")).unwrap();
     assert!(
-        shipped == raytree::generate::sphere_grid([20, 5, 20], 2026),
+        shipped == raytree::scene::generate::sphere_grid([20, 5, 20], 2026),
         "scenes/spheres.json differs from `raytree generate grid`"
     );
-    let scene = raytree::scene_file::parse(&shipped, "spheres.json").unwrap();
+    let scene = raytree::scene::loader::parse(&shipped, "spheres.json").unwrap();
     // 2,000 spheres and the floor.
     assert_eq!(scene.objects.len(), 2001);
 }
 
 #[test]
 fn the_gaspra_mesh_has_its_triangles_and_normals() {
-    let scene = raytree::scene_file::load(&scenes().join("gaspra.json")).unwrap();
+    let scene = raytree::scene::loader::load(&scenes().join("gaspra.json")).unwrap();
     let mesh = scene
         .objects
         .iter()
         .find_map(|o| match &o.shape {
-            raytree::object::Shape::Mesh(m) => Some(m.clone()),
+            raytree::geometry::object::Shape::Mesh(m) => Some(m.clone()),
             _ => None,
         })
         .unwrap();

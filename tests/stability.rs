@@ -29,8 +29,8 @@ mod common;
 use common::scene;
 use glam::{DQuat, DVec3};
 use raytree::methods::Offset;
-use raytree::recorder::{HitInfo, Recorder, ShadowInfo, ShadowOutcome};
-use raytree::tracer::Tracer;
+use raytree::trace::recorder::{HitInfo, Recorder, ShadowInfo, ShadowOutcome};
+use raytree::trace::tracer::Tracer;
 
 const GAP: f64 = 1e-4;
 const WALL_CENTER: DVec3 = DVec3::new(0.0, 1.0 + GAP, 0.0);
@@ -217,8 +217,8 @@ fn no_acne_and_no_leaks_at_any_scale() {
 /// Aiming at that silhouette times (1 + u), u in ±1% (never 0), the right answer is
 /// "hit" iff u < 0, with a margin far above f64's rounding.
 fn far_sphere(d: f64, lecture: bool) -> (usize, usize, f64) {
-    use raytree::ray::Ray;
-    use raytree::sphere::Sphere;
+    use raytree::geometry::sphere::Sphere;
+    use raytree::math::ray::Ray;
     let sphere = Sphere {
         center: DVec3::ZERO,
         radius: 1.0,
@@ -273,10 +273,10 @@ fn far_sphere_near_its_silhouette() {
 
 #[test]
 fn tangent_and_grazing_rays_give_no_nan_and_no_far_side_hit() {
-    use raytree::object::{Object, Shape};
-    use raytree::plane::Plane;
-    use raytree::ray::Ray;
-    use raytree::sphere::Sphere;
+    use raytree::geometry::object::{Object, Shape};
+    use raytree::geometry::plane::Plane;
+    use raytree::geometry::sphere::Sphere;
+    use raytree::math::ray::Ray;
     // Rays along +z passing the unit sphere at x = 1 + δ: tangent at (1, 0, 0).
     for method in [
         raytree::methods::SphereMethod::Stable,
@@ -355,8 +355,8 @@ fn tangent_and_grazing_rays_give_no_nan_and_no_far_side_hit() {
 
 #[test]
 fn reflected_and_transmitted_shares_sum_to_one_around_the_critical_angle() {
+    use raytree::math::ray::Ray;
     use raytree::methods::Weights;
-    use raytree::ray::Ray;
     // From inside a unit glass ball (n = 1.5), a ray along +x at height ρ meets the
     // wall at incidence asin ρ; the critical angle is asin(1/1.5).
     let critical = 1.0 / 1.5;
@@ -407,7 +407,7 @@ fn reflected_and_transmitted_shares_sum_to_one_around_the_critical_angle() {
 
 #[test]
 fn nested_media_give_the_right_indices_on_every_boundary() {
-    use raytree::ray::Ray;
+    use raytree::math::ray::Ray;
     // Water (1.33, radius 1) inside glass (1.5, radius 2), both centered on the origin.
     let json = r#"{ "camera": {"eye": [0, 0, 10], "look_at": [0, 0, 0]},
         "materials": {"glass": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5},
@@ -451,7 +451,7 @@ fn nested_media_give_the_right_indices_on_every_boundary() {
 
 #[test]
 fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
-    use raytree::ray::Ray;
+    use raytree::math::ray::Ray;
     // A unit sphere scaled to 1 × 1e-4 × 1, then turned 30° about z. In its own
     // (unturned) frame the surface is x² + (y/1e-4)² + z² = 1 with gradient
     // (x, y/1e-8, z): the analytic normal, worked out from the world point alone.
@@ -505,8 +505,8 @@ fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
 #[test]
 fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
     use indicatif::ProgressBar;
-    use raytree::image_file::to_rgb8;
-    use raytree::render::render_counting;
+    use raytree::io::image_file::to_rgb8;
+    use raytree::trace::render::render_counting;
     let mut s = scene(
         r#"{ "camera": {"eye": [0, 1, 0.5], "look_at": [3, 1, -0.4]},
         "render": {"width": 64, "height": 48, "max_depth": 64},
@@ -578,7 +578,7 @@ fn no_nan_or_infinity_reaches_an_image() {
                     s.settings.sphere = sphere;
                     s.settings.offset = offset;
                     s.settings.weights = weights;
-                    let image = raytree::render::render(&s, &ProgressBar::hidden()).unwrap();
+                    let image = raytree::trace::render::render(&s, &ProgressBar::hidden()).unwrap();
                     let bad = image.pixels.iter().filter(|c| !c.is_finite()).count();
                     assert_eq!(bad, 0, "{name} {sphere:?} {offset:?} {weights:?}");
                     renders += 1;

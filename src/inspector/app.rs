@@ -11,10 +11,10 @@ use ratatui::crossterm::event::{
 use ratatui::layout::Rect;
 
 use super::preview::{Picture, Window, Worker};
-use crate::recorder::Branch;
 use crate::scene::Scene;
-use crate::steps::Step;
-use crate::trace::{SceneRef, Trace};
+use crate::trace::recorder::Branch;
+use crate::tree::document::{SceneRef, Trace};
+use crate::tree::steps::Step;
 
 /// Which pane the arrow keys drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -204,7 +204,7 @@ impl App {
 
     fn push_items(
         &self,
-        nodes: &[crate::ray_tree::RayNode],
+        nodes: &[crate::tree::ray_tree::RayNode],
         i: usize,
         indent: usize,
         out: &mut Vec<(Item, usize)>,

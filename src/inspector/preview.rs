@@ -8,11 +8,11 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 
 use rayon::prelude::*;
 
-use crate::image_file::rgb8;
-use crate::recorder::NoRecorder;
-use crate::render::pixel_color;
+use crate::io::image_file::rgb8;
 use crate::scene::Scene;
-use crate::tracer::Tracer;
+use crate::trace::recorder::NoRecorder;
+use crate::trace::render::pixel_color;
+use crate::trace::tracer::Tracer;
 
 /// Which image pixels the pane's dots show: dot `(i, j)` shows the image pixel
 /// under `(left + (i + ½)·scale, top + (j + ½)·scale)`.
@@ -202,7 +202,7 @@ mod tests {
 
     #[test]
     fn coarse_pass_fills_blocks_and_fine_pass_every_dot() {
-        let scene = crate::scene_file::whitted();
+        let scene = crate::scene::loader::whitted();
         let window = Window {
             left: 0.0,
             top: 0.0,

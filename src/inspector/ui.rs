@@ -13,13 +13,13 @@ use ratatui::widgets::canvas::{Canvas, Context, Line as CanvasLine, Points};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
 use super::app::{App, Areas, Focus, Item};
-use crate::diagram::{Options, layout};
-use crate::draw::{Rgb, clip_line, clip_ray, clip_segment, palette};
-use crate::image_file::rgb8;
-use crate::projection::Outline;
-use crate::ray_tree::{Outcome, RayNode};
-use crate::show::{num, vec3};
-use crate::steps::kind_name;
+use crate::io::image_file::rgb8;
+use crate::tree::ray_tree::{Outcome, RayNode};
+use crate::tree::steps::kind_name;
+use crate::views::diagram::{Options, layout};
+use crate::views::figure::{Rgb, clip_line, clip_ray, clip_segment, palette};
+use crate::views::numbers::{num, vec3};
+use crate::views::projection::Outline;
 
 /// Every key, for the help overlay and the README.
 pub const KEYS: &[(&str, &str)] = &[
@@ -210,7 +210,10 @@ fn ray_line(app: &App, node: &RayNode, n: usize, tc: bool) -> Vec<Span<'static>>
         Span::styled(
             format!("{} ", kind_name(node.kind)),
             Style::default()
-                .fg(term_color(crate::diagram::ray_pen(node.kind).color, tc))
+                .fg(term_color(
+                    crate::views::diagram::ray_pen(node.kind).color,
+                    tc,
+                ))
                 .add_modifier(Modifier::BOLD),
         ),
         Span::raw(format!("d{} {what} ", node.depth)),
@@ -354,7 +357,7 @@ fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
         "tested",
         format!(
             "{}: {}",
-            crate::steps::searched(&node.tested),
+            crate::tree::steps::searched(&node.tested),
             tests.join(" · ")
         ),
     ));

@@ -2,12 +2,12 @@
 #![allow(dead_code)]
 
 use glam::DVec3;
-use raytree::recorder::{HitInfo, RayKind, RayStart, Recorder, ShadowInfo};
 use raytree::scene::Scene;
+use raytree::trace::recorder::{HitInfo, RayKind, RayStart, Recorder, ShadowInfo};
 
 /// Parses a scene written inline in a test.
 pub fn scene(json: &str) -> Scene {
-    raytree::scene_file::parse(json, "test.json").unwrap_or_else(|e| panic!("{e}"))
+    raytree::scene::loader::parse(json, "test.json").unwrap_or_else(|e| panic!("{e}"))
 }
 
 /// The shipped scenes, by file name.
@@ -20,7 +20,7 @@ pub fn shipped() -> Vec<(&'static str, Scene)> {
                 .join(name);
             (
                 name,
-                raytree::scene_file::load(&path).unwrap_or_else(|e| panic!("{e}")),
+                raytree::scene::loader::load(&path).unwrap_or_else(|e| panic!("{e}")),
             )
         })
         .collect()
@@ -32,8 +32,8 @@ pub struct Log {
     pub rays: Vec<RayStart>,
     pub hits: Vec<HitInfo>,
     pub shadows: Vec<ShadowInfo>,
-    pub branches: Vec<raytree::recorder::BranchInfo>,
-    pub colors: Vec<raytree::recorder::ColorSum>,
+    pub branches: Vec<raytree::trace::recorder::BranchInfo>,
+    pub colors: Vec<raytree::trace::recorder::ColorSum>,
 }
 
 impl Recorder for Log {
@@ -47,10 +47,10 @@ impl Recorder for Log {
     fn shadow_ray(&mut self, shadow: &ShadowInfo) {
         self.shadows.push(*shadow);
     }
-    fn branch(&mut self, branch: &raytree::recorder::BranchInfo) {
+    fn branch(&mut self, branch: &raytree::trace::recorder::BranchInfo) {
         self.branches.push(*branch);
     }
-    fn ray_finished(&mut self, sum: &raytree::recorder::ColorSum) {
+    fn ray_finished(&mut self, sum: &raytree::trace::recorder::ColorSum) {
         self.colors.push(*sum);
     }
 }

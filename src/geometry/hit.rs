@@ -1,0 +1,89 @@
+//! What an intersection test returns: the roots along the ray, and, for the one
+//! root the tracer keeps, the surface there.
+
+use glam::DVec3;
+
+/// The parameters `t` where a ray meets a surface, ascending; at most two
+/// (a quadric has two, a plane one). Kept whole, not just the nearest, so the
+/// ray tree can show every value the lecture's quadratic produced.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Roots {
+    len: u8,
+    /// Which part of a compound object the root belongs to: a mesh's face.
+    part: u32,
+    t: [f64; 2],
+}
+
+impl Roots {
+    /// No intersection.
+    pub const NONE: Roots = Roots {
+        len: 0,
+        part: 0,
+        t: [0.0; 2],
+    };
+
+    /// One root (a plane, or a tangent ray).
+    pub fn one(t: f64) -> Self {
+        Roots {
+            len: 1,
+            part: 0,
+            t: [t, 0.0],
+        }
+    }
+
+    /// One root on part `part` of a compound object (a mesh's nearest face).
+    pub fn on_part(t: f64, part: u32) -> Self {
+        Roots {
+            len: 1,
+            part,
+            t: [t, 0.0],
+        }
+    }
+
+    /// The part the roots belong to (0 for a simple shape).
+    pub fn part(&self) -> u32 {
+        self.part
+    }
+
+    /// Two roots, in any order.
+    pub fn two(a: f64, b: f64) -> Self {
+        Roots {
+            len: 2,
+            part: 0,
+            t: [a.min(b), a.max(b)],
+        }
+    }
+
+    /// The roots, ascending.
+    pub fn as_slice(&self) -> &[f64] {
+        &self.t[..usize::from(self.len)]
+    }
+
+    /// The smallest root strictly inside `(t_min, t_max)`: the lecture's
+    /// "closest intersection" restricted to the ray's interval.
+    #[inline]
+    pub fn first_in(&self, t_min: f64, t_max: f64) -> Option<f64> {
+        self.as_slice()
+            .iter()
+            .copied()
+            .find(|&t| t > t_min && t < t_max)
+    }
+}
+
+/// The surface at a kept hit, in whichever space it was computed.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Surface {
+    /// The hit point.
+    pub point: DVec3,
+    /// A per-component bound on how far `point` may lie from the true surface
+    /// (see [`crate::math::float`]).
+    pub point_error: DVec3,
+    /// The outward unit normal (for a plane, the side it was defined to face).
+    pub normal: DVec3,
+    /// The unit normal lighting uses: the geometric normal, except on a mesh with
+    /// per-vertex normals, where it is interpolated (on the same side).
+    pub shading_normal: DVec3,
+    /// Where a pattern (the checkerboard) is evaluated: the object-space point,
+    /// flattened onto the plane for planes so squares never flicker.
+    pub pattern_point: DVec3,
+}

@@ -1,0 +1,191 @@
+//! Triangle meshes: many triangles sharing vertices, one object to the scene,
+//! with a bounding volume hierarchy of their own so a ray tests a few of them.
+
+use std::ops::ControlFlow;
+
+use glam::DVec3;
+
+use crate::geometry::bvh::{Bvh, Tested};
+use crate::geometry::hit::{Roots, Surface};
+use crate::geometry::triangle::{ShearedRay, Triangle, TriangleHit};
+use crate::math::bounds::{Aabb, RayBox};
+use crate::math::ray::Ray;
+use crate::methods::TriangleMethod;
+
+/// A triangle mesh in its own space.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Mesh {
+    /// Vertex positions.
+    pub positions: Vec<DVec3>,
+    /// Per-vertex unit normals, if the mesh has them (for smooth shading).
+    pub normals: Vec<DVec3>,
+    /// Vertex indices of each triangle, counter-clockwise seen from outside.
+    pub faces: Vec<[u32; 3]>,
+    /// Normal indices of each triangle, if the mesh has normals.
+    pub face_normals: Vec<[u32; 3]>,
+    bvh: Bvh,
+}
+
+impl Mesh {
+    /// A mesh from its vertices and faces (indices known to be in range); builds
+    /// its hierarchy. `face_normals` is empty or has one entry per face.
+    pub fn new(
+        positions: Vec<DVec3>,
+        normals: Vec<DVec3>,
+        faces: Vec<[u32; 3]>,
+        face_normals: Vec<[u32; 3]>,
+    ) -> Mesh {
+        let mut mesh = Mesh {
+            positions,
+            normals,
+            faces,
+            face_normals,
+            bvh: Bvh::build(&[]),
+        };
+        let bounds: Vec<Aabb> = (0..mesh.faces.len())
+            .map(|f| {
+                let t = mesh.triangle(f);
+                Aabb::around([t.a, t.b, t.c])
+            })
+            .collect();
+        mesh.bvh = Bvh::build(&bounds);
+        mesh
+    }
+
+    /// Triangle `face`.
+    #[inline]
+    pub fn triangle(&self, face: usize) -> Triangle {
+        let [a, b, c] = self.faces[face];
+        Triangle {
+            a: self.positions[a as usize],
+            b: self.positions[b as usize],
+            c: self.positions[c as usize],
+        }
+    }
+
+    /// The box around the mesh.
+    pub fn bounds(&self) -> Aabb {
+        self.bvh.bounds()
+    }
+
+    /// The mesh's own hierarchy.
+    pub fn bvh(&self) -> &Bvh {
+        &self.bvh
+    }
+
+    /// The nearest hit in `(0, t_max)` as a root whose part is the face; with
+    /// `any`, the first hit found (enough for a shadow ray).
+    #[inline(never)]
+    pub fn roots(
+        &self,
+        ray: &Ray,
+        method: TriangleMethod,
+        mut t_max: f64,
+        any: bool,
+        tested: &mut Tested,
+    ) -> Roots {
+        let sheared = ShearedRay::new(ray);
+        let mut nearest = None;
+        let mut faces = 0;
+        let _ = self
+            .bvh
+            .traverse(&RayBox::new(ray), 0.0, &mut t_max, tested, |face, t_max| {
+                faces += 1;
+                if let Some(hit) = self.hit_face(face, ray, &sheared, method, *t_max) {
+                    *t_max = hit.t;
+                    nearest = Some((hit.t, face));
+                    if any {
+                        return ControlFlow::Break(());
+                    }
+                }
+                ControlFlow::Continue(())
+            });
+        tested.primitives += faces;
+        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_part(t, face as u32))
+    }
+
+    #[inline]
+    fn hit_face(
+        &self,
+        face: usize,
+        ray: &Ray,
+        sheared: &ShearedRay,
+        method: TriangleMethod,
+        t_max: f64,
+    ) -> Option<TriangleHit> {
+        let tri = self.triangle(face);
+        match method {
+            TriangleMethod::Watertight => tri.watertight(sheared, 0.0, t_max),
+            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, 0.0, t_max),
+        }
+    }
+
+    /// The surface where `ray` meets face `face` at `t`.
+    pub fn surface(&self, ray: &Ray, t: f64, face: usize, method: TriangleMethod) -> Surface {
+        let tri = self.triangle(face);
+        let hit = self
+            .hit_face(face, ray, &ShearedRay::new(ray), method, f64::INFINITY)
+            .filter(|h| h.t == t)
+            .unwrap_or_else(|| TriangleHit {
+                t,
+                bary: tri.barycentric(ray.at(t)),
+            });
+        let normals = self.face_normals.get(face).map(|n| {
+            [
+                self.normals[n[0] as usize],
+                self.normals[n[1] as usize],
+                self.normals[n[2] as usize],
+            ]
+        });
+        tri.surface(&hit, normals)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A unit square in z = 0 as two triangles.
+    fn square() -> Mesh {
+        Mesh::new(
+            vec![
+                DVec3::new(0.0, 0.0, 0.0),
+                DVec3::new(1.0, 0.0, 0.0),
+                DVec3::new(1.0, 1.0, 0.0),
+                DVec3::new(0.0, 1.0, 0.0),
+            ],
+            vec![],
+            vec![[0, 1, 2], [0, 2, 3]],
+            vec![],
+        )
+    }
+
+    #[test]
+    fn finds_the_face_and_its_surface() {
+        let m = square();
+        let ray = Ray::new(DVec3::new(0.2, 0.7, 1.0), DVec3::NEG_Z);
+        let mut tested = Tested::default();
+        let roots = m.roots(
+            &ray,
+            TriangleMethod::Watertight,
+            f64::INFINITY,
+            false,
+            &mut tested,
+        );
+        assert_eq!(roots.as_slice(), &[1.0]);
+        assert_eq!(roots.part(), 1);
+        assert!(tested.primitives >= 1 && tested.boxes >= 1);
+        let s = m.surface(&ray, 1.0, 1, TriangleMethod::Watertight);
+        assert_eq!(s.normal, DVec3::Z);
+        assert!((s.point - DVec3::new(0.2, 0.7, 0.0)).length() < 1e-16);
+    }
+
+    #[test]
+    fn t_max_cuts_the_search() {
+        let m = square();
+        let ray = Ray::new(DVec3::new(0.2, 0.7, 1.0), DVec3::NEG_Z);
+        let mut tested = Tested::default();
+        let roots = m.roots(&ray, TriangleMethod::Watertight, 0.5, false, &mut tested);
+        assert!(roots.as_slice().is_empty());
+    }
+}

@@ -1,0 +1,228 @@
+//! A scene object: a primitive shape, an optional transform, a material.
+
+use std::sync::Arc;
+
+use glam::DVec3;
+
+use crate::geometry::bvh::Tested;
+use crate::geometry::cuboid::AlignedBox;
+use crate::geometry::hit::{Roots, Surface};
+use crate::geometry::mesh::Mesh;
+use crate::geometry::plane::Plane;
+use crate::geometry::sphere::Sphere;
+use crate::geometry::transform::Transform;
+use crate::geometry::triangle::{ShearedRay, Triangle};
+use crate::math::bounds::Aabb;
+use crate::math::ray::Ray;
+use crate::methods::{Intersection, SphereMethod, TriangleMethod};
+
+/// The primitive shapes, in their own (object) space.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Shape {
+    /// A sphere.
+    Sphere(Sphere),
+    /// An infinite plane bounding a half-space.
+    Plane(Plane),
+    /// An axis-aligned box.
+    Box(AlignedBox),
+    /// A single triangle.
+    Triangle(Triangle),
+    /// A triangle mesh (shared: scenes are cloned, meshes can be large).
+    Mesh(Arc<Mesh>),
+}
+
+impl Shape {
+    /// The roots of the ray with the shape in `(0, t_max)` as far as a mesh is
+    /// concerned (its nearest face, or with `any` the first found); every root for
+    /// the other shapes. Primitive and box tests are counted in `tested`.
+    #[inline]
+    pub fn roots(
+        &self,
+        ray: &Ray,
+        methods: Intersection,
+        t_max: f64,
+        any: bool,
+        tested: &mut Tested,
+    ) -> Roots {
+        // The analytic shapes inline into the tracer's loop; meshes and single
+        // triangles stay out of line so they do not bloat it.
+        match self {
+            Shape::Sphere(s) => {
+                tested.primitives += 1;
+                if methods.sphere == SphereMethod::Lecture {
+                    s.lecture_roots(ray)
+                } else {
+                    s.roots(ray)
+                }
+            }
+            Shape::Plane(p) => {
+                tested.primitives += 1;
+                p.roots(ray)
+            }
+            Shape::Box(b) => {
+                tested.primitives += 1;
+                b.roots(ray)
+            }
+            Shape::Triangle(tri) => {
+                tested.primitives += 1;
+                triangle_roots(tri, ray, methods.triangle)
+            }
+            Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, any, tested),
+        }
+    }
+
+    /// The surface at `ray.at(t)`; `part` is the root's part (a mesh's face).
+    pub fn surface(&self, ray: &Ray, t: f64, part: u32, methods: Intersection) -> Surface {
+        match self {
+            Shape::Sphere(s) => s.surface(ray, t),
+            Shape::Plane(p) => p.surface(ray, t),
+            Shape::Box(b) => b.surface(ray, t),
+            Shape::Triangle(tri) => {
+                let hit = crate::geometry::triangle::TriangleHit {
+                    t,
+                    bary: tri.barycentric(ray.at(t)),
+                };
+                tri.surface(&hit, None)
+            }
+            Shape::Mesh(m) => m.surface(ray, t, part as usize, methods.triangle),
+        }
+    }
+
+    /// Whether `p` lies strictly inside the solid. Triangles and meshes are
+    /// surfaces, not solids: nothing is inside them.
+    pub fn contains(&self, p: DVec3) -> bool {
+        match self {
+            Shape::Sphere(s) => s.contains(p),
+            Shape::Plane(pl) => pl.contains(p),
+            Shape::Box(b) => b.contains(p),
+            Shape::Triangle(_) | Shape::Mesh(_) => false,
+        }
+    }
+
+    /// The box around the shape in its own space; `None` for a plane.
+    pub fn bounds(&self) -> Option<Aabb> {
+        match self {
+            Shape::Sphere(s) => Some(Aabb {
+                min: s.center - s.radius,
+                max: s.center + s.radius,
+            }),
+            Shape::Plane(_) => None,
+            Shape::Box(b) => Some(b.bounds()),
+            Shape::Triangle(t) => Some(Aabb::around([t.a, t.b, t.c])),
+            Shape::Mesh(m) => Some(m.bounds()),
+        }
+    }
+
+    /// A point well inside the shape (its center), or on it for a plane.
+    pub fn center(&self) -> DVec3 {
+        match self {
+            Shape::Sphere(s) => s.center,
+            Shape::Plane(p) => p.point,
+            _ => self.bounds().map_or(DVec3::ZERO, |b| b.center()),
+        }
+    }
+
+    /// The shape's kind, as scene files and traces name it.
+    pub fn kind(&self) -> &'static str {
+        match self {
+            Shape::Sphere(_) => "sphere",
+            Shape::Plane(_) => "plane",
+            Shape::Box(_) => "box",
+            Shape::Triangle(_) => "triangle",
+            Shape::Mesh(_) => "mesh",
+        }
+    }
+}
+
+#[inline(never)]
+fn triangle_roots(tri: &Triangle, ray: &Ray, method: TriangleMethod) -> Roots {
+    let hit = match method {
+        TriangleMethod::Watertight => {
+            tri.watertight(&ShearedRay::new(ray), f64::NEG_INFINITY, f64::INFINITY)
+        }
+        TriangleMethod::MollerTrumbore => {
+            tri.moller_trumbore(ray, f64::NEG_INFINITY, f64::INFINITY)
+        }
+    };
+    hit.map_or(Roots::NONE, |h| Roots::one(h.t))
+}
+
+/// One object of a scene.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Object {
+    /// Its name, for traces and error messages.
+    pub name: String,
+    /// The primitive, in object space.
+    pub shape: Shape,
+    /// Object space to world space; `None` when they coincide. Boxed: most
+    /// objects have none, and a small object keeps more of a big scene in cache.
+    pub transform: Option<Box<Transform>>,
+    /// Index into the scene's materials.
+    pub material: usize,
+}
+
+impl Object {
+    /// Every root of a world ray with the object; `t` refers to the world ray.
+    pub fn roots(&self, ray: &Ray, methods: impl Into<Intersection>) -> Roots {
+        self.roots_within(
+            ray,
+            methods.into(),
+            f64::INFINITY,
+            false,
+            &mut Tested::default(),
+        )
+    }
+
+    /// The roots the tracer needs (see [`Shape::roots`]), counting the tests.
+    #[inline]
+    pub fn roots_within(
+        &self,
+        ray: &Ray,
+        methods: Intersection,
+        t_max: f64,
+        any: bool,
+        tested: &mut Tested,
+    ) -> Roots {
+        match &self.transform {
+            None => self.shape.roots(ray, methods, t_max, any, tested),
+            Some(tf) => self
+                .shape
+                .roots(&tf.ray_to_object(ray), methods, t_max, any, tested),
+        }
+    }
+
+    /// The world-space surface at `ray.at(t)` on part `part` (see [`Roots::part`]).
+    pub fn surface(&self, ray: &Ray, t: f64, part: u32, methods: Intersection) -> Surface {
+        match &self.transform {
+            None => self.shape.surface(ray, t, part, methods),
+            Some(tf) => {
+                tf.surface_to_world(self.shape.surface(&tf.ray_to_object(ray), t, part, methods))
+            }
+        }
+    }
+
+    /// Whether the world point `p` lies strictly inside the object.
+    pub fn contains(&self, p: DVec3) -> bool {
+        match &self.transform {
+            None => self.shape.contains(p),
+            Some(tf) => self.shape.contains(tf.to_object.transform_point3(p)),
+        }
+    }
+
+    /// The world-space box around the object; `None` for an unbounded plane.
+    pub fn bounds(&self) -> Option<Aabb> {
+        let b = self.shape.bounds()?;
+        Some(match &self.transform {
+            None => b,
+            Some(tf) => b.transformed(&tf.to_world),
+        })
+    }
+
+    /// The world-space center of the shape.
+    pub fn center(&self) -> DVec3 {
+        let c = self.shape.center();
+        self.transform
+            .as_ref()
+            .map_or(c, |tf| tf.to_world.transform_point3(c))
+    }
+}

@@ -1,0 +1,184 @@
+//! Ray–sphere intersection.
+//!
+//! The lecture substitutes the ray into `|P - C|² = r²` and solves the quadratic
+//! `A t² + 2B t + C = 0` with `t = (-B ± √(B² - AC)) / A`. Written that way, the
+//! discriminant cancels catastrophically for a far or grazing ray, and the `-B + √…`
+//! root cancels when `|B| ≫ √(B² - AC)`. [`Sphere::roots`] uses the stable form of
+//! Ray Tracing Gems (Haines et al., ch. 7, "Precision Improvements for Ray/Sphere
+//! Intersection"); [`Sphere::lecture_roots`] keeps the lecture's form for teaching.
+
+use glam::DVec3;
+
+use crate::geometry::hit::{Roots, Surface};
+use crate::math::float::gamma;
+use crate::math::ray::Ray;
+
+/// A sphere with a center and a radius.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Sphere {
+    /// Center `C`.
+    pub center: DVec3,
+    /// Radius `r > 0`.
+    pub radius: f64,
+}
+
+impl Sphere {
+    /// The stable roots (Ray Tracing Gems, ch. 7, eq. 7.11–7.13): with `f = S - C`,
+    /// `a = c·c` and `b = f·c`, the discriminant is `Δ = r² - |f - (b/a)c|²`, the
+    /// squared distance from the center to the line subtracted from `r²` (no
+    /// cancellation between two large squares), and the roots are `q/a` and `C/q`
+    /// with `q = -(b + sign(b)·√(aΔ))`, so neither is a difference of near-equal
+    /// numbers. The direction need not be unit length: a miss costs one division
+    /// and no square root.
+    #[inline]
+    pub fn roots(&self, ray: &Ray) -> Roots {
+        let d = ray.dir;
+        let a = d.length_squared();
+        let f = ray.origin - self.center;
+        let b = f.dot(d);
+        let perp = f - (b / a) * d;
+        let r2 = self.radius * self.radius;
+        let disc = r2 - perp.length_squared();
+        if disc < 0.0 {
+            return Roots::NONE;
+        }
+        if disc == 0.0 {
+            return Roots::one(-b / a);
+        }
+        let c = f.length_squared() - r2;
+        let q = -(b + b.signum() * (a * disc).sqrt());
+        Roots::two(c / q, q / a)
+    }
+
+    /// The lecture's roots as written: `A = |c|²`, `B = f·c`, `C = |f|² - r²`,
+    /// `t = (-B ± √(B² - AC)) / A`. Fails for far and grazing rays; kept to show why.
+    pub fn lecture_roots(&self, ray: &Ray) -> Roots {
+        let f = ray.origin - self.center;
+        let a = ray.dir.length_squared();
+        let b = f.dot(ray.dir);
+        let c = f.length_squared() - self.radius * self.radius;
+        let disc = b * b - a * c;
+        if disc < 0.0 {
+            Roots::NONE
+        } else if disc == 0.0 {
+            Roots::one(-b / a)
+        } else {
+            let s = disc.sqrt();
+            Roots::two((-b - s) / a, (-b + s) / a)
+        }
+    }
+
+    /// The surface at `ray.at(t)`. The point is projected back onto the sphere,
+    /// which leaves an error of a few ULPs of its own size whatever the ray's
+    /// origin (pbrt-v4 §6.8.5), and that bound goes with it.
+    pub fn surface(&self, ray: &Ray, t: f64) -> Surface {
+        let mut local = ray.at(t) - self.center;
+        local *= self.radius / local.length();
+        let point = self.center + local;
+        Surface {
+            point,
+            // Relative to the whole point (see `Plane::surface`): never zero, never subnormal.
+            point_error: DVec3::splat(
+                gamma(5) * self.radius + gamma(2) * point.abs().max_element(),
+            ),
+            normal: local / self.radius,
+            shading_normal: local / self.radius,
+            pattern_point: point,
+        }
+    }
+
+    /// Whether `p` is strictly inside.
+    pub fn contains(&self, p: DVec3) -> bool {
+        (p - self.center).length_squared() < self.radius * self.radius
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn unit() -> Sphere {
+        Sphere {
+            center: DVec3::ZERO,
+            radius: 1.0,
+        }
+    }
+
+    #[test]
+    fn quadratic_has_two_one_or_no_solutions() {
+        let s = unit();
+        for roots in [
+            s.roots(&Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z)),
+            s.lecture_roots(&Ray::new(DVec3::new(0.0, 0.0, -5.0), DVec3::Z)),
+        ] {
+            // From z = -5 along +z the unit sphere is met at z = -1 and z = +1: t = 4, 6.
+            assert_eq!(roots.as_slice(), &[4.0, 6.0]);
+        }
+        // Tangent: the line x = 1 touches the sphere at (1, 0, 0), t = 5.
+        let tangent = Ray::new(DVec3::new(1.0, 0.0, -5.0), DVec3::Z);
+        assert_eq!(s.lecture_roots(&tangent).as_slice(), &[5.0]);
+        assert_eq!(s.roots(&tangent).as_slice(), &[5.0]);
+        // Miss: x = 1.5 never reaches the sphere.
+        let miss = Ray::new(DVec3::new(1.5, 0.0, -5.0), DVec3::Z);
+        assert!(
+            s.roots(&miss).as_slice().is_empty() && s.lecture_roots(&miss).as_slice().is_empty()
+        );
+    }
+
+    #[test]
+    fn closest_positive_root_from_inside_is_the_far_one() {
+        // From the center, the roots are -1 and +1; only +1 is ahead of the ray.
+        let roots = unit().roots(&Ray::new(DVec3::ZERO, DVec3::X));
+        assert_eq!(roots.as_slice(), &[-1.0, 1.0]);
+        assert_eq!(roots.first_in(0.0, f64::INFINITY), Some(1.0));
+        // Sphere behind the ray: both roots negative, no hit.
+        let behind = unit().roots(&Ray::new(DVec3::new(0.0, 0.0, 5.0), DVec3::Z));
+        assert_eq!(behind.first_in(0.0, f64::INFINITY), None);
+    }
+
+    #[test]
+    fn t_is_measured_in_units_of_the_direction() {
+        // A direction of length 2 halves t: the same points, t = 2 and 3.
+        let roots = unit().roots(&Ray::new(
+            DVec3::new(0.0, 0.0, -5.0),
+            DVec3::new(0.0, 0.0, 2.0),
+        ));
+        assert_eq!(roots.as_slice(), &[2.0, 3.0]);
+    }
+
+    #[test]
+    fn stable_form_holds_far_away_where_the_lecture_form_does_not() {
+        // From 1e9 away, a ray aimed at the center must hit at distance 1e9 - 1.
+        // B² and AC are ~1e36 and differ by ~1e18, below what f64 resolves there.
+        let s = unit();
+        let ray = Ray::new(DVec3::new(0.0, 0.0, -1e9), DVec3::Z);
+        let t = s.roots(&ray).first_in(0.0, f64::INFINITY).unwrap();
+        // Tolerance: the result can be no better than one ULP of 1e9 (≈1.2e-7).
+        assert!((t - (1e9 - 1.0)).abs() < 1e-6, "{t}");
+        let p = s.surface(&ray, t).point;
+        assert!((p.length() - 1.0).abs() < 1e-15);
+        let lecture = s.lecture_roots(&ray);
+        let wrong = match lecture.first_in(0.0, f64::INFINITY) {
+            Some(t) => (t - (1e9 - 1.0)).abs() > 1e-3,
+            None => true,
+        };
+        assert!(
+            wrong,
+            "expected the lecture form to fail at 1e9: {lecture:?}"
+        );
+    }
+
+    #[test]
+    fn surface_normal_is_outward_and_unit() {
+        let s = Sphere {
+            center: DVec3::new(1.0, 2.0, 3.0),
+            radius: 2.0,
+        };
+        let ray = Ray::new(DVec3::new(1.0, 2.0, -10.0), DVec3::Z);
+        let t = s.roots(&ray).first_in(0.0, f64::INFINITY).unwrap();
+        let surf = s.surface(&ray, t);
+        // Worked out: the ray along x=1,y=2 enters at z = 3 - 2 = 1, t = 11, normal -z.
+        assert!((t - 11.0).abs() < 1e-12);
+        assert!((surf.normal - DVec3::NEG_Z).length() < 1e-15);
+    }
+}

@@ -1,0 +1,657 @@
+//! Scene files: JSON, strict, with defaults. The format is documented field by
+//! field in `scenes/README.md`; this module reads it into a [`Scene`].
+//!
+//! Strict: an unknown field is an error, so a typo never silently falls back to a
+//! default. Errors say where: `file:line:column: field.path: what was expected`
+//! while parsing, `file: field.path: what is wrong` when a value parses but makes
+//! no sense (a negative radius, a singular transform).
+
+use std::collections::BTreeMap;
+use std::fmt::Display;
+use std::path::Path;
+
+use glam::{DAffine3, DVec3};
+use serde::Deserialize;
+
+use crate::geometry::cuboid::AlignedBox;
+use crate::geometry::object::{Object, Shape};
+use crate::geometry::plane::Plane;
+use crate::geometry::sphere::Sphere;
+use crate::geometry::transform::Transform;
+use crate::geometry::triangle::Triangle;
+use crate::scene::camera::CameraSpec;
+use crate::scene::light::PointLight;
+use crate::scene::{RenderSettings, Scene};
+use crate::shading::material::{Material, Pattern};
+
+/// The classic Whitted scene, built into the binary.
+pub const WHITTED: &str = include_str!("../../scenes/whitted.json");
+
+/// Why a scene could not be loaded. Each displays as one line.
+#[derive(Debug, thiserror::Error)]
+pub enum SceneError {
+    /// The file could not be read.
+    #[error("cannot read {file}: {reason}")]
+    Read {
+        /// The file.
+        file: String,
+        /// The OS's reason.
+        reason: String,
+    },
+    /// The text is not a scene: bad JSON, an unknown field, a wrong type.
+    #[error("{file}:{line}:{column}: {message}")]
+    Syntax {
+        /// The file.
+        file: String,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column.
+        column: usize,
+        /// The field path and what was expected.
+        message: String,
+    },
+    /// A mesh's OBJ file cannot be used.
+    #[error("{error} (the mesh of {file}: {field})")]
+    Mesh {
+        /// The scene file.
+        file: String,
+        /// The object's field, e.g. `objects[3].mesh.file`.
+        field: String,
+        /// What is wrong in the OBJ file, and where.
+        error: crate::scene::obj::ObjError,
+    },
+    /// A value parses but is not allowed.
+    #[error("{file}: {field}: {message}")]
+    Invalid {
+        /// The file.
+        file: String,
+        /// Path of the offending field, e.g. `objects[2].sphere.radius`.
+        field: String,
+        /// What is wrong.
+        message: String,
+    },
+}
+
+/// Reads and validates the scene file at `path`.
+pub fn load(path: &Path) -> Result<Scene, SceneError> {
+    parse(&read(path)?, &path.display().to_string())
+}
+
+/// Reads a scene file's text.
+pub fn read(path: &Path) -> Result<String, SceneError> {
+    std::fs::read_to_string(path).map_err(|e| SceneError::Read {
+        reason: match e.kind() {
+            std::io::ErrorKind::NotFound => "no such file".to_owned(),
+            std::io::ErrorKind::InvalidData => "not UTF-8 text".to_owned(),
+            std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
+            _ => e.to_string(),
+        },
+        file: path.display().to_string(),
+    })
+}
+
+/// The built-in Whitted scene.
+pub fn whitted() -> Scene {
+    parse(WHITTED, "whitted.json").expect("the built-in scene is valid")
+}
+
+/// Parses and validates scene text; `file` names it in errors.
+pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
+    let syntax = |path: String, e: serde_json::Error| {
+        let text = e.to_string();
+        let message = text
+            .rfind(" at line ")
+            .map_or(text.as_str(), |i| &text[..i])
+            .to_owned();
+        let message = if path == "." || path.is_empty() {
+            message
+        } else {
+            format!("{path}: {message}")
+        };
+        SceneError::Syntax {
+            file: file.to_owned(),
+            line: e.line(),
+            column: e.column(),
+            message,
+        }
+    };
+    let de = &mut serde_json::Deserializer::from_str(text);
+    let raw: SceneFile = serde_path_to_error::deserialize(&mut *de)
+        .map_err(|e| syntax(e.path().to_string(), e.into_inner()))?;
+    de.end().map_err(|e| syntax(String::new(), e))?;
+    let dir = Path::new(file).parent().unwrap_or(Path::new(""));
+    Builder { file, dir }.scene(raw)
+}
+
+// ---------------------------------------------------------------- the format
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SceneFile {
+    #[serde(default)]
+    description: Option<String>,
+    #[serde(default)]
+    camera: CameraFile,
+    #[serde(default)]
+    render: RenderFile,
+    #[serde(default)]
+    background: Option<DVec3>,
+    #[serde(default)]
+    ambient_light: Option<DVec3>,
+    #[serde(default)]
+    materials: BTreeMap<String, MaterialFile>,
+    #[serde(default)]
+    lights: Vec<LightFile>,
+    #[serde(default)]
+    objects: Vec<ObjectFile>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct CameraFile {
+    eye: Option<DVec3>,
+    look_at: Option<DVec3>,
+    up: Option<DVec3>,
+    fov: Option<f64>,
+    u: Option<DVec3>,
+    v: Option<DVec3>,
+    n: Option<DVec3>,
+    half_width: Option<f64>,
+    half_height: Option<f64>,
+    distance: Option<f64>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct RenderFile {
+    width: Option<u32>,
+    height: Option<u32>,
+    spp: Option<u32>,
+    max_depth: Option<u32>,
+    cutoff: Option<f64>,
+    sphere: Option<crate::methods::SphereMethod>,
+    offset: Option<crate::methods::Offset>,
+    weights: Option<crate::methods::Weights>,
+    aa: Option<crate::methods::Antialiasing>,
+    triangle: Option<crate::methods::TriangleMethod>,
+    accel: Option<crate::methods::Accel>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+struct MaterialFile {
+    color: Option<DVec3>,
+    checker: Option<CheckerFile>,
+    ambient: Option<f64>,
+    diffuse: Option<f64>,
+    specular: Option<f64>,
+    shininess: Option<f64>,
+    reflective: Option<f64>,
+    transparent: Option<f64>,
+    ior: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct CheckerFile {
+    colors: [DVec3; 2],
+    size: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct LightFile {
+    name: Option<String>,
+    position: DVec3,
+    color: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ObjectFile {
+    name: Option<String>,
+    sphere: Option<SphereFile>,
+    plane: Option<PlaneFile>,
+    #[serde(rename = "box")]
+    aligned_box: Option<BoxFile>,
+    triangle: Option<TriangleFile>,
+    mesh: Option<MeshFile>,
+    material: Option<String>,
+    #[serde(default)]
+    transform: Vec<TransformStep>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SphereFile {
+    center: Option<DVec3>,
+    radius: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct PlaneFile {
+    point: Option<DVec3>,
+    normal: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct BoxFile {
+    min: Option<DVec3>,
+    max: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct TriangleFile {
+    vertices: [DVec3; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct MeshFile {
+    file: String,
+    smooth: Option<bool>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+enum TransformStep {
+    Translate(DVec3),
+    Scale(DVec3),
+    RotateX(f64),
+    RotateY(f64),
+    RotateZ(f64),
+    Rotate { axis: DVec3, degrees: f64 },
+}
+
+// ------------------------------------------------------------ validation
+
+/// The material objects get when they name none.
+const DEFAULT_MATERIAL: &str = "default";
+
+struct Builder<'a> {
+    file: &'a str,
+    /// Where the scene file is: mesh files are found relative to it.
+    dir: &'a Path,
+}
+
+impl Builder<'_> {
+    fn invalid(&self, field: impl Display, message: impl Display) -> SceneError {
+        SceneError::Invalid {
+            file: self.file.to_owned(),
+            field: field.to_string(),
+            message: message.to_string(),
+        }
+    }
+
+    fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
+        let _ = raw.description;
+        let settings = self.settings(&raw.render)?;
+        let camera = self.camera(&raw.camera)?;
+        let background = self.color("background", raw.background.unwrap_or(DVec3::ZERO))?;
+        let ambient_light = self.color("ambient_light", raw.ambient_light.unwrap_or(DVec3::ONE))?;
+        let mut materials = raw
+            .materials
+            .iter()
+            .map(|(name, m)| self.material(name, m))
+            .collect::<Result<Vec<_>, _>>()?;
+        let lights = raw
+            .lights
+            .iter()
+            .enumerate()
+            .map(|(i, l)| self.light(i, l))
+            .collect::<Result<Vec<_>, _>>()?;
+        let mut objects = Vec::with_capacity(raw.objects.len());
+        for (i, o) in raw.objects.iter().enumerate() {
+            let wanted = o.material.as_deref().unwrap_or(DEFAULT_MATERIAL);
+            let material = match materials.iter().position(|m| m.name == wanted) {
+                Some(m) => m,
+                None if wanted == DEFAULT_MATERIAL => {
+                    materials.push(self.material(DEFAULT_MATERIAL, &MaterialFile::default())?);
+                    materials.len() - 1
+                }
+                None => {
+                    let known: Vec<&str> = raw.materials.keys().map(String::as_str).collect();
+                    let known = if known.is_empty() {
+                        "none are defined".to_owned()
+                    } else {
+                        format!("defined: {}", known.join(", "))
+                    };
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].material"),
+                        format_args!("no material named '{wanted}' ({known})"),
+                    ));
+                }
+            };
+            objects.push(self.object(i, o, material)?);
+        }
+        Ok(Scene {
+            camera,
+            settings,
+            background,
+            ambient_light,
+            materials,
+            lights,
+            objects,
+        })
+    }
+
+    fn settings(&self, r: &RenderFile) -> Result<RenderSettings, SceneError> {
+        let d = RenderSettings::default();
+        let s = RenderSettings {
+            width: r.width.unwrap_or(d.width),
+            height: r.height.unwrap_or(d.height),
+            spp: r.spp.unwrap_or(d.spp),
+            max_depth: r.max_depth.unwrap_or(d.max_depth),
+            cutoff: r.cutoff.unwrap_or(d.cutoff),
+            sphere: r.sphere.unwrap_or(d.sphere),
+            offset: r.offset.unwrap_or(d.offset),
+            weights: r.weights.unwrap_or(d.weights),
+            aa: r.aa.unwrap_or(d.aa),
+            triangle: r.triangle.unwrap_or(d.triangle),
+            accel: r.accel.unwrap_or(d.accel),
+        };
+        s.validate()
+            .map_err(|(field, msg)| self.invalid(format_args!("render.{field}"), msg))?;
+        Ok(s)
+    }
+
+    fn camera(&self, c: &CameraFile) -> Result<CameraSpec, SceneError> {
+        let eye = c.eye.unwrap_or(DVec3::new(0.0, 0.0, 5.0));
+        let frame_given = c.u.is_some()
+            || c.v.is_some()
+            || c.n.is_some()
+            || c.half_width.is_some()
+            || c.half_height.is_some()
+            || c.distance.is_some();
+        if !frame_given {
+            let look_at = c.look_at.unwrap_or(DVec3::ZERO);
+            let up = c.up.unwrap_or(DVec3::Y);
+            let fov = c.fov.unwrap_or(60.0);
+            if (look_at - eye).length() == 0.0 {
+                return Err(self.invalid("camera.look_at", "must differ from camera.eye"));
+            }
+            if up.cross(look_at - eye).length() <= 1e-9 * up.length() * (look_at - eye).length() {
+                return Err(self.invalid(
+                    "camera.up",
+                    "must not be zero or parallel to the view direction",
+                ));
+            }
+            if !(fov > 0.0 && fov < 180.0) {
+                return Err(self.invalid(
+                    "camera.fov",
+                    format_args!("must be between 0 and 180 degrees, got {fov}"),
+                ));
+            }
+            return Ok(CameraSpec::LookAt {
+                eye,
+                look_at,
+                up,
+                fov_degrees: fov,
+            });
+        }
+        if c.look_at.is_some() || c.up.is_some() || c.fov.is_some() {
+            return Err(self.invalid(
+                "camera",
+                "give either look_at/up/fov or u/v/n/half_width/half_height/distance, not both",
+            ));
+        }
+        let need = |v: Option<DVec3>, name: &str| {
+            v.ok_or_else(|| {
+                self.invalid(
+                    format_args!("camera.{name}"),
+                    "missing (an explicit camera needs u, v, n, half_width and half_height)",
+                )
+            })
+        };
+        let (u, v, n) = (need(c.u, "u")?, need(c.v, "v")?, need(c.n, "n")?);
+        let mut unit = [DVec3::ZERO; 3];
+        for (k, (name, vec)) in [("u", u), ("v", v), ("n", n)].into_iter().enumerate() {
+            unit[k] = vec
+                .try_normalize()
+                .ok_or_else(|| self.invalid(format_args!("camera.{name}"), "must not be zero"))?;
+        }
+        let [u, v, n] = unit;
+        if u.dot(v).abs() > 1e-6 || u.dot(n).abs() > 1e-6 || v.dot(n).abs() > 1e-6 {
+            return Err(self.invalid("camera", "u, v and n must be mutually perpendicular"));
+        }
+        let positive =
+            |x: Option<f64>, name: &str, default: Option<f64>| -> Result<f64, SceneError> {
+                let x = x.or(default).ok_or_else(|| {
+                    self.invalid(
+                        format_args!("camera.{name}"),
+                        "missing (an explicit camera needs u, v, n, half_width and half_height)",
+                    )
+                })?;
+                if x > 0.0 {
+                    Ok(x)
+                } else {
+                    Err(self.invalid(
+                        format_args!("camera.{name}"),
+                        format_args!("must be > 0, got {x}"),
+                    ))
+                }
+            };
+        Ok(CameraSpec::Frame {
+            eye,
+            u,
+            v,
+            n,
+            half_width: positive(c.half_width, "half_width", None)?,
+            half_height: positive(c.half_height, "half_height", None)?,
+            distance: positive(c.distance, "distance", Some(1.0))?,
+        })
+    }
+
+    fn color(&self, field: impl Display, c: DVec3) -> Result<DVec3, SceneError> {
+        if c.is_finite() && c.min_element() >= 0.0 {
+            Ok(c)
+        } else {
+            Err(self.invalid(
+                field,
+                format_args!("a color's components must be finite and ≥ 0, got {c}"),
+            ))
+        }
+    }
+
+    fn material(&self, name: &str, m: &MaterialFile) -> Result<Material, SceneError> {
+        let at = |f: &str| format!("materials.{name}.{f}");
+        let pattern = match (&m.color, &m.checker) {
+            (Some(_), Some(_)) => {
+                return Err(self.invalid(
+                    format_args!("materials.{name}"),
+                    "give color or checker, not both",
+                ));
+            }
+            (Some(c), None) => Pattern::Solid(self.color(at("color"), *c)?),
+            (None, Some(ch)) => {
+                let size = ch.size.unwrap_or(1.0);
+                if !size.is_finite() || size <= 0.0 {
+                    return Err(
+                        self.invalid(at("checker.size"), format_args!("must be > 0, got {size}"))
+                    );
+                }
+                Pattern::Checker {
+                    colors: [
+                        self.color(at("checker.colors[0]"), ch.colors[0])?,
+                        self.color(at("checker.colors[1]"), ch.colors[1])?,
+                    ],
+                    size,
+                }
+            }
+            (None, None) => Pattern::Solid(DVec3::splat(0.8)),
+        };
+        let coefficient =
+            |v: Option<f64>, f: &str, default: f64, max: f64| -> Result<f64, SceneError> {
+                let v = v.unwrap_or(default);
+                if (0.0..=max).contains(&v) {
+                    Ok(v)
+                } else {
+                    Err(self.invalid(at(f), format_args!("must be from 0 to {max}, got {v}")))
+                }
+            };
+        let ior = m.ior.unwrap_or(1.0);
+        if !(ior > 0.0 && ior.is_finite()) {
+            return Err(self.invalid(
+                at("ior"),
+                format_args!("a refractive index must be > 0, got {ior}"),
+            ));
+        }
+        Ok(Material {
+            name: name.to_owned(),
+            pattern,
+            ambient: coefficient(m.ambient, "ambient", 0.1, 1e6)?,
+            diffuse: coefficient(m.diffuse, "diffuse", 0.7, 1e6)?,
+            specular: coefficient(m.specular, "specular", 0.0, 1e6)?,
+            shininess: coefficient(m.shininess, "shininess", 50.0, 1e6)?,
+            reflective: coefficient(m.reflective, "reflective", 0.0, 1.0)?,
+            transparent: coefficient(m.transparent, "transparent", 0.0, 1.0)?,
+            ior,
+        })
+    }
+
+    fn light(&self, i: usize, l: &LightFile) -> Result<PointLight, SceneError> {
+        let name = l.name.clone().unwrap_or_else(|| format!("light{i}"));
+        let color = self.color(
+            format_args!("lights[{i}].color"),
+            l.color.unwrap_or(DVec3::ONE),
+        )?;
+        Ok(PointLight {
+            name,
+            position: l.position,
+            color,
+        })
+    }
+
+    fn object(&self, i: usize, o: &ObjectFile, material: usize) -> Result<Object, SceneError> {
+        let given = [
+            o.sphere.is_some(),
+            o.plane.is_some(),
+            o.aligned_box.is_some(),
+            o.triangle.is_some(),
+            o.mesh.is_some(),
+        ];
+        if given.iter().filter(|&&g| g).count() != 1 {
+            return Err(self.invalid(
+                format_args!("objects[{i}]"),
+                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
+            ));
+        }
+        let shape = match (&o.sphere, &o.plane) {
+            _ if o.aligned_box.is_some() => {
+                let b = o.aligned_box.as_ref().expect("checked");
+                let min = b.min.unwrap_or(DVec3::splat(-1.0));
+                let max = b.max.unwrap_or(DVec3::ONE);
+                if !(min.is_finite() && max.is_finite() && min.cmplt(max).all()) {
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].box"),
+                        format_args!(
+                            "min must be below max on every axis, got min {min} and max {max}"
+                        ),
+                    ));
+                }
+                Shape::Box(AlignedBox { min, max })
+            }
+            _ if o.triangle.is_some() => {
+                let [a, b, c] = o.triangle.as_ref().expect("checked").vertices;
+                let tri = Triangle { a, b, c };
+                if !(a.is_finite() && b.is_finite() && c.is_finite()) || tri.normal() == DVec3::ZERO
+                {
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].triangle.vertices"),
+                        "must be three finite points not on one line",
+                    ));
+                }
+                Shape::Triangle(tri)
+            }
+            _ if o.mesh.is_some() => {
+                let m = o.mesh.as_ref().expect("checked");
+                let path = self.dir.join(&m.file);
+                let mesh =
+                    crate::scene::obj::load(&path, m.smooth.unwrap_or(true)).map_err(|error| {
+                        SceneError::Mesh {
+                            file: self.file.to_owned(),
+                            field: format!("objects[{i}].mesh.file"),
+                            error,
+                        }
+                    })?;
+                Shape::Mesh(std::sync::Arc::new(mesh))
+            }
+            (Some(s), None) => {
+                let radius = s.radius.unwrap_or(1.0);
+                if !radius.is_finite() || radius <= 0.0 {
+                    return Err(self.invalid(
+                        format_args!("objects[{i}].sphere.radius"),
+                        format_args!("must be > 0, got {radius}"),
+                    ));
+                }
+                Shape::Sphere(Sphere {
+                    center: s.center.unwrap_or(DVec3::ZERO),
+                    radius,
+                })
+            }
+            (None, Some(p)) => {
+                let normal = p
+                    .normal
+                    .unwrap_or(DVec3::Y)
+                    .try_normalize()
+                    .ok_or_else(|| {
+                        self.invalid(
+                            format_args!("objects[{i}].plane.normal"),
+                            "must not be zero",
+                        )
+                    })?;
+                Shape::Plane(Plane {
+                    point: p.point.unwrap_or(DVec3::ZERO),
+                    normal,
+                })
+            }
+            _ => unreachable!("exactly one shape was checked above"),
+        };
+        let transform = if o.transform.is_empty() {
+            None
+        } else {
+            let m = o
+                .transform
+                .iter()
+                .enumerate()
+                .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
+                    self.step(i, k, step).map(|s| s * m)
+                })?;
+            Some(Box::new(Transform::new(m).ok_or_else(|| self.invalid(format_args!("objects[{i}].transform"), "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted"))?))
+        };
+        let name = o
+            .name
+            .clone()
+            .unwrap_or_else(|| format!("{}{i}", shape.kind()));
+        Ok(Object {
+            name,
+            shape,
+            transform,
+            material,
+        })
+    }
+
+    /// One transform step's matrix; steps apply in the order written, so the
+    /// whole transform is `M = M_last ⋯ M_first`.
+    fn step(&self, i: usize, k: usize, step: &TransformStep) -> Result<DAffine3, SceneError> {
+        Ok(match *step {
+            TransformStep::Translate(t) => DAffine3::from_translation(t),
+            TransformStep::Scale(s) => DAffine3::from_scale(s),
+            TransformStep::RotateX(d) => DAffine3::from_rotation_x(d.to_radians()),
+            TransformStep::RotateY(d) => DAffine3::from_rotation_y(d.to_radians()),
+            TransformStep::RotateZ(d) => DAffine3::from_rotation_z(d.to_radians()),
+            TransformStep::Rotate { axis, degrees } => {
+                let axis = axis.try_normalize().ok_or_else(|| {
+                    self.invalid(
+                        format_args!("objects[{i}].transform[{k}].rotate.axis"),
+                        "must not be zero",
+                    )
+                })?;
+                DAffine3::from_axis_angle(axis, degrees.to_radians())
+            }
+        })
+    }
+}

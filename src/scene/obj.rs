@@ -1,0 +1,244 @@
+//! Wavefront OBJ meshes, read by `tobj`. Only geometry is used: positions,
+//! optional vertex normals, and faces (polygons are split into triangles);
+//! materials come from the scene file, so `mtllib` and `usemtl` are ignored.
+//!
+//! Errors are one line naming the file and, where there is one, the line.
+
+use std::io::{BufRead, Read};
+use std::path::Path;
+
+use glam::DVec3;
+
+use crate::geometry::mesh::Mesh;
+
+/// Why an OBJ file could not be used.
+#[derive(Debug, thiserror::Error)]
+#[error("{file}{}: {message}", line.map(|l| format!(":{l}")).unwrap_or_default())]
+pub struct ObjError {
+    /// The file.
+    pub file: String,
+    /// 1-based line, when the problem is on one.
+    pub line: Option<usize>,
+    /// What is wrong.
+    pub message: String,
+}
+
+/// Reads the OBJ file at `path`; `smooth` keeps its vertex normals, if any.
+pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
+    let file = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| ObjError {
+        file: file.clone(),
+        line: None,
+        message: match e.kind() {
+            std::io::ErrorKind::NotFound => "no such file".to_owned(),
+            std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
+            _ => e.to_string(),
+        },
+    })?;
+    parse(&bytes, &file, smooth)
+}
+
+/// Parses OBJ text; `file` names it in errors.
+pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
+    let error = |line: Option<usize>, message: String| ObjError {
+        file: file.to_owned(),
+        line,
+        message,
+    };
+    if let Err(e) = std::str::from_utf8(bytes) {
+        let line = bytes[..e.valid_up_to()]
+            .iter()
+            .filter(|&&b| b == b'\n')
+            .count()
+            + 1;
+        return Err(error(Some(line), "not UTF-8 text".to_owned()));
+    }
+    let options = tobj::LoadOptions {
+        triangulate: true,
+        ignore_points: true,
+        ignore_lines: true,
+        ..tobj::LoadOptions::default()
+    };
+    let mut reader = Lines { bytes, pos: 0 };
+    let (models, _) = tobj::load_obj_buf(&mut reader, &options, |_| {
+        Ok((Vec::new(), Default::default()))
+    })
+    .map_err(|e| {
+        // tobj stops at the line it could not parse; errors found when a group
+        // ends (an index out of range) are searched for.
+        let line = match e {
+            tobj::LoadError::FaceVertexOutOfBounds
+            | tobj::LoadError::FaceNormalOutOfBounds
+            | tobj::LoadError::FaceTexCoordOutOfBounds => first_bad_face(bytes),
+            _ => Some(
+                bytes[..reader.pos]
+                    .iter()
+                    .filter(|&&b| b == b'\n')
+                    .count()
+                    .max(1),
+            ),
+        };
+        error(line, e.to_string())
+    })?;
+
+    let mut positions = Vec::new();
+    let mut normals = Vec::new();
+    let mut faces = Vec::new();
+    let mut face_normals = Vec::new();
+    let with_normals = smooth
+        && models.iter().all(|m| {
+            !m.mesh.normals.is_empty() && m.mesh.normal_indices.len() == m.mesh.indices.len()
+        });
+    for model in &models {
+        let m = &model.mesh;
+        let base = positions.len() as u32;
+        let nbase = normals.len() as u32;
+        positions.extend(
+            m.positions
+                .chunks_exact(3)
+                .map(|p| DVec3::new(p[0], p[1], p[2])),
+        );
+        faces.extend(
+            m.indices
+                .chunks_exact(3)
+                .map(|f| [base + f[0], base + f[1], base + f[2]]),
+        );
+        if with_normals {
+            normals.extend(
+                m.normals
+                    .chunks_exact(3)
+                    .map(|n| DVec3::new(n[0], n[1], n[2])),
+            );
+            face_normals.extend(
+                m.normal_indices
+                    .chunks_exact(3)
+                    .map(|f| [nbase + f[0], nbase + f[1], nbase + f[2]]),
+            );
+        }
+    }
+    if let Some(line) = first_non_finite(bytes) {
+        return Err(error(
+            Some(line),
+            "a coordinate is not a finite number".to_owned(),
+        ));
+    }
+    if faces.is_empty() {
+        return Err(error(None, "has no faces (no `f` lines)".to_owned()));
+    }
+    if with_normals {
+        for n in &mut normals {
+            *n = n.try_normalize().unwrap_or(DVec3::ZERO);
+        }
+    }
+    Ok(Mesh::new(positions, normals, faces, face_normals))
+}
+
+/// The text as a reader that knows how far tobj has read.
+struct Lines<'a> {
+    bytes: &'a [u8],
+    pos: usize,
+}
+
+impl Read for Lines<'_> {
+    fn read(&mut self, out: &mut [u8]) -> std::io::Result<usize> {
+        let n = out.len().min(self.bytes.len() - self.pos);
+        out[..n].copy_from_slice(&self.bytes[self.pos..self.pos + n]);
+        self.pos += n;
+        Ok(n)
+    }
+}
+
+impl BufRead for Lines<'_> {
+    fn fill_buf(&mut self) -> std::io::Result<&[u8]> {
+        Ok(&self.bytes[self.pos..])
+    }
+
+    fn consume(&mut self, amt: usize) {
+        self.pos += amt;
+    }
+}
+
+/// The keyword and fields of each line, numbered from 1.
+fn statements(bytes: &[u8]) -> impl Iterator<Item = (usize, &str, Vec<&str>)> {
+    let text = std::str::from_utf8(bytes).unwrap_or_default();
+    text.lines().enumerate().filter_map(|(i, line)| {
+        let mut words = line.split_whitespace();
+        words.next().map(|key| (i + 1, key, words.collect()))
+    })
+}
+
+/// The first `v` or `vn` line with a coordinate that is NaN or infinite.
+fn first_non_finite(bytes: &[u8]) -> Option<usize> {
+    statements(bytes).find_map(|(line, key, fields)| {
+        let bad = matches!(key, "v" | "vn")
+            && fields
+                .iter()
+                .any(|f| f.parse::<f64>().is_ok_and(|x| !x.is_finite()));
+        bad.then_some(line)
+    })
+}
+
+/// The first face that names a vertex, texture coordinate or normal not defined
+/// in the file.
+fn first_bad_face(bytes: &[u8]) -> Option<usize> {
+    let count = |k: &str| statements(bytes).filter(|(_, key, _)| *key == k).count() as i64;
+    let (v, vt, vn) = (count("v"), count("vt"), count("vn"));
+    statements(bytes).find_map(|(line, key, fields)| {
+        let out = |i: &str, n: i64| i.parse::<i64>().is_ok_and(|i| i == 0 || i > n || i < -n);
+        let bad = key == "f"
+            && fields.iter().any(|f| {
+                let mut parts = f.split('/');
+                let p = parts.next().unwrap_or("");
+                let t = parts.next().unwrap_or("");
+                let n = parts.next().unwrap_or("");
+                out(p, v) || (!t.is_empty() && out(t, vt)) || (!n.is_empty() && out(n, vn))
+            });
+        bad.then_some(line)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const QUAD: &str =
+        "# a unit square\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n";
+
+    #[test]
+    fn a_quad_becomes_two_triangles_with_normals() {
+        let m = parse(QUAD.as_bytes(), "quad.obj", true).unwrap();
+        assert_eq!(m.positions.len(), 4);
+        assert_eq!(m.faces.len(), 2);
+        assert_eq!(m.face_normals.len(), 2);
+        assert_eq!(m.normals, vec![DVec3::Z]);
+        let flat = parse(QUAD.as_bytes(), "quad.obj", false).unwrap();
+        assert!(flat.face_normals.is_empty());
+    }
+
+    #[test]
+    fn errors_name_the_file_and_line() {
+        let cases = [
+            (
+                "v 0 0 0\nv 1 x 0\nv 0 1 0\nf 1 2 3\n",
+                "bad.obj:2: position parse error",
+            ),
+            (
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
+                "bad.obj:4: face vertex index out of bounds",
+            ),
+            (
+                "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 a\n",
+                "bad.obj:4: face parse error",
+            ),
+            (
+                "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
+                "bad.obj:2: a coordinate is not a finite number",
+            ),
+            ("v 0 0 0\n", "bad.obj: has no faces (no `f` lines)"),
+        ];
+        for (text, expected) in cases {
+            let e = parse(text.as_bytes(), "bad.obj", true).unwrap_err();
+            assert_eq!(e.to_string(), expected, "{text:?}");
+        }
+    }
+}

@@ -1,0 +1,100 @@
+//! The local illumination model: `I = I_ambient + I_diffuse + I_specular` (lecture,
+//! "Directly From Light Source"), with Phong's specular term (Bui Tuong Phong,
+//! "Illumination for Computer Generated Pictures", CACM 1975): the highlight is
+//! `k_s · (R·V)^shininess`, with `R` the light direction mirrored about the normal.
+
+use glam::DVec3;
+
+use crate::shading::material::Material;
+
+/// `k_a · color · ambient_light`: the light that arrives from everywhere.
+pub fn ambient(material: &Material, color: DVec3, ambient_light: DVec3) -> DVec3 {
+    material.ambient * color * ambient_light
+}
+
+/// What one light adds at a point its shadow ray reached.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Direct {
+    /// `k_d · color · light · (N·L)`.
+    pub diffuse: DVec3,
+    /// `k_s · light · (R·V)^shininess`.
+    pub specular: DVec3,
+}
+
+/// The diffuse and specular terms for unit normal `n` (facing the viewer), unit
+/// direction to the light `l`, unit direction to the viewer `v`, and the light's
+/// color as it arrives (already scaled by what the shadow ray let through).
+pub fn direct(
+    material: &Material,
+    color: DVec3,
+    n: DVec3,
+    l: DVec3,
+    v: DVec3,
+    light: DVec3,
+) -> Direct {
+    let n_dot_l = n.dot(l);
+    if n_dot_l <= 0.0 {
+        return Direct::default();
+    }
+    let r = 2.0 * n_dot_l * n - l;
+    let r_dot_v = r.dot(v).max(0.0);
+    let highlight = if material.specular > 0.0 && r_dot_v > 0.0 {
+        material.specular * r_dot_v.powf(material.shininess)
+    } else {
+        0.0
+    };
+    Direct {
+        diffuse: material.diffuse * n_dot_l * color * light,
+        specular: highlight * light,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::shading::material::Pattern;
+
+    fn material() -> Material {
+        Material {
+            name: "m".into(),
+            pattern: Pattern::Solid(DVec3::ONE),
+            ambient: 0.1,
+            diffuse: 0.6,
+            specular: 0.5,
+            shininess: 10.0,
+            reflective: 0.0,
+            transparent: 0.0,
+            ior: 1.0,
+        }
+    }
+
+    #[test]
+    fn diffuse_follows_lamberts_cosine_and_highlight_peaks_at_the_mirror_direction() {
+        let m = material();
+        let color = DVec3::new(1.0, 0.5, 0.25);
+        let n = DVec3::Y;
+        // Light 60° from the normal: N·L = cos 60° = 0.5, diffuse = 0.6·0.5·color.
+        let l = DVec3::new(60f64.to_radians().sin(), 60f64.to_radians().cos(), 0.0);
+        // Viewer exactly along the mirror direction R = (-sin 60°, cos 60°, 0): R·V = 1.
+        let v = DVec3::new(-l.x, l.y, 0.0);
+        let d = direct(&m, color, n, l, v, DVec3::ONE);
+        assert!((d.diffuse - 0.3 * color).length() < 1e-15);
+        assert!((d.specular - DVec3::splat(0.5)).length() < 1e-15);
+        // Viewer straight above: R·V = cos 60° = 0.5, highlight 0.5·0.5¹⁰.
+        let d = direct(&m, color, n, l, DVec3::Y, DVec3::ONE);
+        assert!((d.specular.x - 0.5 * 0.5f64.powi(10)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn light_behind_the_surface_adds_nothing() {
+        let d = direct(
+            &material(),
+            DVec3::ONE,
+            DVec3::Y,
+            DVec3::NEG_Y,
+            DVec3::Y,
+            DVec3::ONE,
+        );
+        assert_eq!(d, Direct::default());
+    }
+}

@@ -1,0 +1,397 @@
+//! The lecture's recursive `raytrace(ray)`:
+//!
+//! ```text
+//! P = closest intersection
+//! color_local   = ambient + Σ over lights a shadow ray reaches (diffuse + specular)
+//! color_reflect = raytrace(reflected ray)
+//! color_refract = raytrace(refracted ray)
+//! color = color_local + k_rfl·color_reflect + k_rfa·color_refract
+//! ```
+//!
+//! One tracer serves rendering and recording: every step reports to a
+//! [`Recorder`], which is free when it is [`crate::trace::recorder::NoRecorder`].
+//!
+//! Choices the lecture leaves open:
+//! - **Transparent shadows.** A shadow ray passes through a transparent object and
+//!   keeps `k_rfa` of the light per object crossed, without bending (as POV-Ray
+//!   does without photons); an opaque object blocks it. A glass sphere so casts a
+//!   lighter shadow, not a black one.
+//! - **Total internal reflection** sends the refracted share to the reflected ray.
+//! - **Recursion** stops at `max_depth` or when a branch's weight falls below the
+//!   cutoff (Hall & Greenberg, "A Testbed for Realistic Image Synthesis", 1983).
+
+#![cfg_attr(raytree_no_hooks, allow(unused_variables, unused_imports))]
+
+use std::ops::ControlFlow;
+
+use glam::DVec3;
+
+use crate::geometry::bvh::Tested;
+use crate::geometry::hit::Surface;
+use crate::math::ray::Ray;
+use crate::scene::Scene;
+use crate::shading::material::Material;
+use crate::shading::optics::{Media, reflect, refract};
+use crate::shading::phong;
+use crate::trace::accelerator::Accelerator;
+use crate::trace::recorder::{
+    Branch, BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
+    ShadowOutcome,
+};
+
+/// A shadow ray ends at `t = 1 - SHADOW_EPSILON` of the way to its light, so a
+/// surface the light sits exactly on does not shadow it. Relative, so it needs no
+/// tuning to the scene's size.
+pub const SHADOW_EPSILON: f64 = 1e-9;
+
+/// Traces rays through one scene.
+#[derive(Clone, Debug)]
+pub struct Tracer<'s> {
+    scene: &'s Scene,
+    eye_media: Media,
+    accel: Accelerator,
+}
+
+impl<'s> Tracer<'s> {
+    /// A tracer for `scene` with its current render settings.
+    pub fn new(scene: &'s Scene) -> Self {
+        let eye = scene.camera().eye;
+        Self {
+            scene,
+            eye_media: scene.media_at(eye),
+            accel: Accelerator::new(scene),
+        }
+    }
+
+    /// How the objects are arranged for the rays.
+    pub fn accelerator(&self) -> &Accelerator {
+        &self.accel
+    }
+
+    /// The scene being traced.
+    pub fn scene(&self) -> &'s Scene {
+        self.scene
+    }
+
+    /// Traces a ray from the eye: depth 1, weight 1, in the media around the eye.
+    pub fn trace_primary<R: Recorder>(&self, ray: Ray, rec: &mut R) -> DVec3 {
+        let start = RayStart {
+            kind: RayKind::Primary,
+            depth: 1,
+            ray,
+            weight: 1.0,
+            t_min: 0.0,
+            t_max: f64::INFINITY,
+        };
+        self.trace(&start, &self.eye_media, rec)
+    }
+
+    /// The lecture's `raytrace(ray)`.
+    pub fn trace<R: Recorder>(&self, start: &RayStart, media: &Media, rec: &mut R) -> DVec3 {
+        crate::record!(rec.ray_started(start));
+        let Some((object, t, part)) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec)
+        else {
+            crate::record!(rec.missed());
+            let sum = ColorSum {
+                local: self.scene.background,
+                color: self.scene.background,
+                ..ColorSum::default()
+            };
+            crate::record!(rec.ray_finished(&sum));
+            return sum.color;
+        };
+        let surface = self.scene.objects[object].surface(
+            &start.ray,
+            t,
+            part,
+            self.scene.settings.intersection(),
+        );
+        let hit = self.hit_info(&start.ray, (object, t, part), &surface, media);
+        crate::record!(rec.hit(&hit));
+        let material = self.scene.material_of(object);
+        let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
+
+        // Refraction is worked out first: the reflectance R (0 for the lecture's
+        // constant weights, 1 under total internal reflection) moves that share of
+        // the transmitted light to the reflection.
+        let (mut k_rfl, mut k_rfa) = (material.reflective, material.transparent);
+        let c = start.ray.dir.normalize();
+        let refracted_dir = if k_rfa > 0.0 {
+            refract(c, hit.shading_normal, hit.n1 / hit.n2)
+        } else {
+            None
+        };
+        let total_internal = k_rfa > 0.0 && refracted_dir.is_none();
+        if k_rfa > 0.0 {
+            let r = if total_internal {
+                1.0
+            } else {
+                self.scene
+                    .settings
+                    .weights
+                    .reflectance(-c.dot(hit.shading_normal), hit.n1, hit.n2)
+            };
+            k_rfl += k_rfa * r;
+            k_rfa *= 1.0 - r;
+        }
+        let reflected_dir = reflect(c, hit.shading_normal);
+        let reflected = self.spawn(
+            RayKind::Reflected,
+            k_rfl,
+            reflected_dir,
+            start,
+            &surface,
+            *media,
+            rec,
+        );
+        let refracted = if total_internal {
+            crate::record!(rec.branch(&BranchInfo {
+                kind: RayKind::Refracted,
+                coefficient: material.transparent,
+                branch: Branch::TotalInternalReflection,
+            }));
+            DVec3::ZERO
+        } else {
+            let inside = if hit.entering {
+                media.entered(object)
+            } else {
+                media.left(object)
+            };
+            self.spawn(
+                RayKind::Refracted,
+                k_rfa,
+                refracted_dir.unwrap_or_default(),
+                start,
+                &surface,
+                inside,
+                rec,
+            )
+        };
+        let color = local + k_rfl * reflected + k_rfa * refracted;
+        crate::record!(rec.ray_finished(&ColorSum {
+            ambient,
+            local,
+            k_rfl,
+            reflected,
+            k_rfa,
+            refracted,
+            color,
+        }));
+        color
+    }
+
+    /// The object with the smallest root in `(t_min, t_max)`, that root, and the
+    /// root's part (a mesh's face).
+    #[inline]
+    pub fn closest_hit<R: Recorder>(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: f64,
+        rec: &mut R,
+    ) -> Option<(usize, f64, u32)> {
+        let methods = self.scene.settings.intersection();
+        let mut closest = None;
+        let mut t_closest = t_max;
+        // The hierarchy counts its boxes, the objects their own tests (a mesh's boxes too).
+        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        let _ = self
+            .accel
+            .visit(ray, t_min, &mut t_closest, &mut outer, |i, t_closest| {
+                let roots =
+                    self.scene.objects[i].roots_within(ray, methods, *t_closest, false, &mut inner);
+                if R::ENABLED {
+                    crate::record!(rec.object_tested(i, &roots));
+                }
+                if let Some(t) = roots.first_in(t_min, *t_closest) {
+                    closest = Some((i, roots.part()));
+                    *t_closest = t;
+                }
+                ControlFlow::Continue(())
+            });
+        if R::ENABLED {
+            outer.add(inner);
+            crate::record!(rec.tested(&outer));
+        }
+        closest.map(|(i, part)| (i, t_closest, part))
+    }
+
+    /// Which side the ray hit, and the refractive indices on either side of it.
+    fn hit_info(
+        &self,
+        ray: &Ray,
+        (object, t, part): (usize, f64, u32),
+        surface: &Surface,
+        media: &Media,
+    ) -> HitInfo {
+        let entering = ray.dir.dot(surface.normal) < 0.0;
+        let ior_of = |m: Option<usize>| m.map_or(1.0, |o| self.scene.material_of(o).ior);
+        let inside = self.scene.material_of(object).ior;
+        let (n1, n2) = if entering {
+            (ior_of(media.innermost()), inside)
+        } else {
+            (inside, ior_of(media.left(object).innermost()))
+        };
+        // Which side was hit is the geometric normal's business; lighting uses the
+        // shading normal (interpolated on smooth meshes), turned the same way.
+        let shading_normal = if entering {
+            surface.shading_normal
+        } else {
+            -surface.shading_normal
+        };
+        HitInfo {
+            object,
+            t,
+            part,
+            point: surface.point,
+            normal: surface.normal,
+            shading_normal,
+            entering,
+            n1,
+            n2,
+        }
+    }
+
+    /// `ambient + Σ (diffuse + specular)` over the lights a shadow ray reaches;
+    /// returns the ambient term and the sum.
+    fn local_color<R: Recorder>(
+        &self,
+        ray: &Ray,
+        hit: &HitInfo,
+        surface: &Surface,
+        material: &Material,
+        rec: &mut R,
+    ) -> (DVec3, DVec3) {
+        let color = material.pattern.color_at(surface.pattern_point);
+        let ambient = phong::ambient(material, color, self.scene.ambient_light);
+        let to_eye = -ray.dir.normalize();
+        let mut local = ambient;
+        for (i, light) in self.scene.lights.iter().enumerate() {
+            let shadow = self.shadow_ray(i, hit, surface);
+            crate::record!(rec.shadow_ray(&shadow));
+            let terms = match shadow.outcome {
+                ShadowOutcome::Reaches { transmitted } => {
+                    let to_light = (light.position - surface.point).normalize();
+                    phong::direct(
+                        material,
+                        color,
+                        hit.shading_normal,
+                        to_light,
+                        to_eye,
+                        transmitted * light.color,
+                    )
+                }
+                _ => phong::Direct::default(),
+            };
+            if R::ENABLED {
+                crate::record!(rec.light_term(&LightTerm {
+                    light: i,
+                    diffuse: terms.diffuse,
+                    specular: terms.specular,
+                }));
+            }
+            local += terms.diffuse + terms.specular;
+        }
+        (ambient, local)
+    }
+
+    /// The lecture's shadow ray from the hit toward light `light`: blocked by the
+    /// first opaque object found before the light, dimmed by transparent ones.
+    fn shadow_ray(&self, light: usize, hit: &HitInfo, surface: &Surface) -> ShadowInfo {
+        let position = self.scene.lights[light].position;
+        let t_max = 1.0 - SHADOW_EPSILON;
+        if hit.shading_normal.dot(position - surface.point) <= 0.0 {
+            let ray = Ray::new(surface.point, position - surface.point);
+            return ShadowInfo {
+                light,
+                ray,
+                t_max,
+                outcome: ShadowOutcome::FacesAway,
+                tested: Tested::default(),
+            };
+        }
+        let origin = self
+            .scene
+            .settings
+            .offset
+            .origin(surface, position - surface.point);
+        let ray = Ray::new(origin, position - origin);
+        let methods = self.scene.settings.intersection();
+        let mut transmitted = 1.0;
+        let mut blocked = None;
+        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        // Any opaque hit before the light ends the search: the hierarchy stops there.
+        let _ = self
+            .accel
+            .visit(&ray, 0.0, &mut t_max.clone(), &mut outer, |i, _| {
+                let roots =
+                    self.scene.objects[i].roots_within(&ray, methods, t_max, true, &mut inner);
+                if let Some(t) = roots.first_in(0.0, t_max) {
+                    let k = self.scene.material_of(i).transparent;
+                    if k == 0.0 {
+                        blocked = Some((i, t));
+                        return ControlFlow::Break(());
+                    }
+                    transmitted *= k;
+                }
+                ControlFlow::Continue(())
+            });
+        outer.add(inner);
+        ShadowInfo {
+            light,
+            ray,
+            t_max,
+            outcome: match blocked {
+                Some((object, t)) => ShadowOutcome::Blocked { object, t },
+                None => ShadowOutcome::Reaches { transmitted },
+            },
+            tested: outer,
+        }
+    }
+
+    /// Traces a reflected or refracted child with coefficient `k`, unless its
+    /// coefficient is zero, the parent is at the maximum depth, or its weight
+    /// would fall below the cutoff. Its origin leaves the surface on the side
+    /// it travels into.
+    #[allow(clippy::too_many_arguments)]
+    fn spawn<R: Recorder>(
+        &self,
+        kind: RayKind,
+        k: f64,
+        dir: DVec3,
+        parent: &RayStart,
+        surface: &Surface,
+        media: Media,
+        rec: &mut R,
+    ) -> DVec3 {
+        let settings = &self.scene.settings;
+        let weight = parent.weight * k;
+        let branch = if k == 0.0 {
+            Branch::NoCoefficient
+        } else if parent.depth >= settings.max_depth {
+            Branch::MaxDepth
+        } else if weight < settings.cutoff {
+            Branch::WeightCutoff
+        } else {
+            Branch::Traced
+        };
+        crate::record!(rec.branch(&BranchInfo {
+            kind,
+            coefficient: k,
+            branch,
+        }));
+        if branch != Branch::Traced {
+            return DVec3::ZERO;
+        }
+        let origin = self.scene.settings.offset.origin(surface, dir);
+        let child = RayStart {
+            kind,
+            depth: parent.depth + 1,
+            ray: Ray::new(origin, dir),
+            weight,
+            t_min: 0.0,
+            t_max: f64::INFINITY,
+        };
+        self.trace(&child, &media, rec)
+    }
+}

@@ -1,0 +1,339 @@
+//! The trace document: a pixel's (or one ray's) ray trees with the scene and
+//! settings that made them, as written by `raytree trace --json` and documented
+//! field by field in `book/src/trace-format.md`.
+
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+
+use crate::io::image_file::rgb8;
+use crate::math::ray::Ray;
+use crate::scene::{RenderSettings, Scene};
+use crate::trace::render::pixel_color_at;
+use crate::trace::tracer::Tracer;
+use crate::tree::ray_tree::{RayTree, TreeRecorder};
+use crate::tree::steps::{Step, steps};
+
+/// The value of the `format` field.
+pub const FORMAT: &str = "raytree-trace";
+/// The value of the `version` field: raised whenever a field changes meaning or goes.
+pub const VERSION: u32 = 3;
+
+/// A trace document.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Trace {
+    /// Always `"raytree-trace"`.
+    pub format: String,
+    /// The format's version.
+    pub version: u32,
+    /// Which scene, by name and content hash.
+    pub scene: SceneRef,
+    /// The render settings in force.
+    pub settings: RenderSettings,
+    /// The scene's objects, by index.
+    pub objects: Vec<ObjectRef>,
+    /// The scene's lights, by index.
+    pub lights: Vec<LightRef>,
+    /// The pixel traced (image coordinates), if a pixel was traced.
+    pub pixel: Option<Pixel>,
+    /// The ray traced, if one ray was traced instead of a pixel.
+    pub ray: Option<RayRef>,
+    /// The pixel's (or ray's) final color, linear RGB, unclamped.
+    pub color: DVec3,
+    /// The 8-bit sRGB triple the renderer writes for `color`.
+    pub rgb8: [u8; 3],
+    /// One tree per sample (only the chosen one with `--sample`).
+    pub samples: Vec<Sample>,
+}
+
+/// The scene a trace came from.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SceneRef {
+    /// The scene file as given (`whitted.json (built in)` for the built-in scene).
+    pub file: String,
+    /// `fnv1a64:` and the 64-bit FNV-1a hash of the file's bytes, in hex.
+    pub hash: String,
+}
+
+impl SceneRef {
+    /// Names a scene file and hashes its text.
+    pub fn new(file: &str, text: &str) -> Self {
+        Self {
+            file: file.to_owned(),
+            hash: format!("fnv1a64:{:016x}", fnv1a64(text.as_bytes())),
+        }
+    }
+}
+
+/// 64-bit FNV-1a (Fowler, Noll, Vo): a small, stable content hash.
+fn fnv1a64(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
+}
+
+/// An object, as traces name it.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectRef {
+    /// Its name.
+    pub name: String,
+    /// `sphere` or `plane`.
+    pub kind: String,
+    /// Its material's name.
+    pub material: String,
+    /// Whether it is placed by a transform.
+    pub transformed: bool,
+}
+
+/// A light, as traces name it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightRef {
+    /// Its name.
+    pub name: String,
+    /// Where it is.
+    pub position: DVec3,
+    /// Its color.
+    pub color: DVec3,
+}
+
+/// A pixel in image coordinates: x to the right, y down from the top-left.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Pixel {
+    /// Column.
+    pub x: u32,
+    /// Row from the top.
+    pub y: u32,
+}
+
+/// A ray given by hand.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RayRef {
+    /// Origin.
+    pub origin: DVec3,
+    /// Direction.
+    pub direction: DVec3,
+}
+
+/// One sample's tree.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sample {
+    /// Which sample of the pixel (0 for a single ray).
+    pub index: u32,
+    /// Where it went through the image, in continuous image coordinates
+    /// (pixel centers are integers); `None` for a ray given by hand.
+    pub position: Option<[f64; 2]>,
+    /// Its color.
+    pub color: DVec3,
+    /// Its rays.
+    pub tree: RayTree,
+}
+
+/// Why a trace could not be made.
+#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+pub enum TraceError {
+    /// The pixel is not in the image.
+    #[error("pixel {x},{y} is outside the {width}×{height} image (x is 0 to {}, y is 0 to {})", width - 1, height - 1)]
+    PixelOutside {
+        /// Column asked for.
+        x: u32,
+        /// Row asked for.
+        y: u32,
+        /// Image width.
+        width: u32,
+        /// Image height.
+        height: u32,
+    },
+    /// The sample is not one of the pixel's.
+    #[error("sample {sample} does not exist: a pixel has {spp} samples (0 to {})", spp - 1)]
+    SampleOutside {
+        /// Sample asked for.
+        sample: u32,
+        /// Samples per pixel.
+        spp: u32,
+    },
+    /// The ray cannot be traced.
+    #[error("the ray's direction must be non-zero and every number finite")]
+    BadRay,
+}
+
+impl Trace {
+    fn new(scene: &Scene, source: SceneRef, color: DVec3, samples: Vec<Sample>) -> Self {
+        let s = scene.settings;
+        Trace {
+            format: FORMAT.to_owned(),
+            version: VERSION,
+            scene: source,
+            settings: s,
+            objects: scene
+                .objects
+                .iter()
+                .map(|o| ObjectRef {
+                    name: o.name.clone(),
+                    kind: o.shape.kind().to_owned(),
+                    material: scene.materials[o.material].name.clone(),
+                    transformed: o.transform.is_some(),
+                })
+                .collect(),
+            lights: scene
+                .lights
+                .iter()
+                .map(|l| LightRef {
+                    name: l.name.clone(),
+                    position: l.position,
+                    color: l.color,
+                })
+                .collect(),
+            pixel: None,
+            ray: None,
+            color,
+            rgb8: rgb8(color),
+            samples,
+        }
+    }
+
+    /// Traces pixel `(x, y)` (image coordinates) exactly as the renderer does,
+    /// recording every sample, or only sample `only` if given.
+    pub fn pixel(
+        scene: &Scene,
+        source: SceneRef,
+        x: u32,
+        y: u32,
+        only: Option<u32>,
+    ) -> Result<Trace, TraceError> {
+        let s = scene.settings;
+        if x >= s.width || y >= s.height {
+            return Err(TraceError::PixelOutside {
+                x,
+                y,
+                width: s.width,
+                height: s.height,
+            });
+        }
+        let mut rec = TreeRecorder::new(scene);
+        let mut at = Vec::new();
+        let color = pixel_color_at(
+            &Tracer::new(scene),
+            &scene.camera(),
+            x,
+            y,
+            &mut rec,
+            Some(&mut at),
+        );
+        if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
+            return Err(TraceError::SampleOutside {
+                sample,
+                spp: at.len() as u32,
+            });
+        }
+        let samples = at
+            .into_iter()
+            .zip(rec.trees)
+            .enumerate()
+            .map(|(k, ((sx, sy), tree))| Sample {
+                index: k as u32,
+                position: Some([sx, sy]),
+                color: tree.nodes[0].color(),
+                tree,
+            })
+            .filter(|sample| only.is_none_or(|k| k == sample.index))
+            .collect();
+        Ok(Trace {
+            pixel: Some(Pixel { x, y }),
+            ..Trace::new(scene, source, color, samples)
+        })
+    }
+
+    /// Traces one ray as a primary ray (depth 1, weight 1, from the media around the eye).
+    pub fn ray(scene: &Scene, source: SceneRef, ray: Ray) -> Result<Trace, TraceError> {
+        if !(ray.origin.is_finite() && ray.dir.is_finite())
+            || ray.dir.length_squared() == 0.0
+            || !ray.dir.length_squared().is_finite()
+        {
+            return Err(TraceError::BadRay);
+        }
+        let mut rec = TreeRecorder::new(scene);
+        let color = Tracer::new(scene).trace_primary(ray, &mut rec);
+        let tree = rec.trees.pop().unwrap_or_default();
+        let samples = vec![Sample {
+            index: 0,
+            position: None,
+            color,
+            tree,
+        }];
+        Ok(Trace {
+            ray: Some(RayRef {
+                origin: ray.origin,
+                direction: ray.dir,
+            }),
+            ..Trace::new(scene, source, color, samples)
+        })
+    }
+
+    /// The document as pretty JSON, with arrays of numbers (vectors, colors,
+    /// roots) kept on one line so a tree reads top to bottom.
+    pub fn to_json(&self) -> String {
+        let pretty = serde_json::to_string_pretty(self).expect("a trace always serializes");
+        let mut out = String::with_capacity(pretty.len());
+        let mut lines = pretty.lines().peekable();
+        while let Some(line) = lines.next() {
+            if line.ends_with('[') {
+                // Gather the items up to the closing bracket if they are all numbers.
+                let mut items = Vec::new();
+                let mut look = lines.clone();
+                let mut close = None;
+                for next in look.by_ref() {
+                    let t = next.trim();
+                    if t.starts_with(']') {
+                        close = Some(t);
+                        break;
+                    }
+                    let item = t.trim_end_matches(',');
+                    if item.parse::<f64>().is_err() {
+                        break;
+                    }
+                    items.push(item);
+                }
+                if let Some(close) = close {
+                    out.push_str(line);
+                    out.push_str(&items.join(", "));
+                    out.push_str(close);
+                    out.push('\n');
+                    lines = look;
+                    continue;
+                }
+            }
+            out.push_str(line);
+            out.push('\n');
+        }
+        out
+    }
+
+    /// The steps of sample `k`'s tree, in execution order.
+    pub fn steps(&self, k: usize) -> Vec<Step> {
+        let kind_of = |o: usize| {
+            self.objects
+                .get(o)
+                .map_or_else(|| "object".to_owned(), |o| o.kind.clone())
+        };
+        steps(&self.samples[k].tree, &kind_of)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn fnv1a64_matches_the_reference_values() {
+        // Test vectors from the FNV reference (isthe.com/chongo/tech/comp/fnv).
+        assert_eq!(fnv1a64(b""), 0xcbf29ce484222325);
+        assert_eq!(fnv1a64(b"a"), 0xaf63dc4c8601ec8c);
+        assert_eq!(fnv1a64(b"foobar"), 0x85944171f73967e8);
+    }
+}

@@ -1,0 +1,399 @@
+//! The ray tree: every ray one pixel (or one chosen ray) spawns, with every
+//! number that made its color. Views (the text tree, the JSON trace, the
+//! inspector, the diagrams) read this; none of them looks into the tracer.
+//!
+//! Nodes live in one flat list, parents before children, each naming its parent
+//! and its reflected and refracted children by index: easy to walk, to select in
+//! a UI, and to write as JSON. `nodes[0]` is the primary ray.
+
+use glam::DVec3;
+use serde::{Deserialize, Serialize};
+
+use crate::geometry::bvh::Tested;
+use crate::scene::Scene;
+use crate::trace::recorder::{
+    Branch, BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
+    ShadowOutcome,
+};
+
+/// One ray's tree.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RayTree {
+    /// The rays, parents before children; `nodes[0]` is the root.
+    pub nodes: Vec<RayNode>,
+}
+
+/// One ray and everything that happened to it.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RayNode {
+    /// Primary, reflected or refracted.
+    pub kind: RayKind,
+    /// 1 for the primary ray, one more per bounce.
+    pub depth: u32,
+    /// Index of the node that spawned it; `None` for the root.
+    pub parent: Option<usize>,
+    /// Where it starts.
+    pub origin: DVec3,
+    /// Where it goes (not normalized: a primary ray reaches the image plane at t = 1).
+    pub direction: DVec3,
+    /// Product of the coefficients from the eye down to this ray.
+    pub weight: f64,
+    /// Hits count only for `t_min < t < t_max`.
+    pub t_min: f64,
+    /// `None`: the ray is unbounded.
+    pub t_max: Option<f64>,
+    /// Every object the ray was tested against, in order, with its roots.
+    pub tests: Vec<ObjectTest>,
+    /// How many bounding boxes and primitives the search for the closest hit
+    /// tested: what the hierarchy saved against testing every object.
+    pub tested: Tested,
+    /// The closest hit; `None` when the ray missed everything.
+    pub hit: Option<Hit>,
+    /// One per light, in the scene's order.
+    pub shadow_rays: Vec<ShadowRay>,
+    /// The local color's terms; `None` for a miss.
+    pub local: Option<Local>,
+    /// The reflected branch; `None` for a miss.
+    pub reflected: Option<Child>,
+    /// The refracted branch; `None` for a miss.
+    pub refracted: Option<Child>,
+    /// `color = local + k_rfl·reflected + k_rfa·refracted` with its numbers.
+    pub sum: Sum,
+}
+
+/// The test of one object.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ObjectTest {
+    /// Index of the object.
+    pub object: usize,
+    /// Its name.
+    pub name: String,
+    /// Where the ray's line meets it, ascending; empty for a miss. Roots outside
+    /// the ray's interval (behind it, or beyond a closer hit) are listed too.
+    pub roots: Vec<f64>,
+}
+
+/// The closest hit.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Hit {
+    /// Index of the object.
+    pub object: usize,
+    /// Its name.
+    pub name: String,
+    /// Its material's name.
+    pub material: String,
+    /// Ray parameter of the hit.
+    pub t: f64,
+    /// For a mesh, the index of the face hit.
+    pub face: Option<u32>,
+    /// World-space point.
+    pub point: DVec3,
+    /// Outward unit geometric normal.
+    pub normal: DVec3,
+    /// Unit normal used for shading, facing the incoming ray.
+    pub shading_normal: DVec3,
+    /// Whether the ray enters the object.
+    pub entering: bool,
+    /// Refractive index on the incoming side.
+    pub n1: f64,
+    /// Refractive index on the far side.
+    pub n2: f64,
+}
+
+/// A shadow ray toward one light.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ShadowRay {
+    /// Index of the light.
+    pub light: usize,
+    /// Its name.
+    pub name: String,
+    /// Start (just off the surface).
+    pub origin: DVec3,
+    /// Toward the light: `t = 1` is the light itself.
+    pub direction: DVec3,
+    /// The ray stops just short of the light.
+    pub t_max: f64,
+    /// What it found.
+    pub outcome: Outcome,
+    /// The boxes and primitives it was tested against (it stops at the first
+    /// opaque blocker).
+    pub tested: Tested,
+}
+
+/// What a shadow ray found.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+pub enum Outcome {
+    /// The light is behind the surface: no ray was cast.
+    FacesAway,
+    /// It reached the light, keeping `transmitted` of it (1 unless transparent
+    /// objects were in the way).
+    Reaches {
+        /// Share of the light that arrives.
+        transmitted: f64,
+    },
+    /// An opaque object is in the way.
+    Blocked {
+        /// Index of the blocker.
+        object: usize,
+        /// Its name.
+        name: String,
+        /// Where along the shadow ray.
+        t: f64,
+    },
+}
+
+/// The local color: `ambient + Σ (diffuse + specular)`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Local {
+    /// The ambient term.
+    pub ambient: DVec3,
+    /// One entry per light.
+    pub lights: Vec<LightShare>,
+    /// The sum.
+    pub total: DVec3,
+}
+
+/// One light's part of the local color.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LightShare {
+    /// Index of the light.
+    pub light: usize,
+    /// Its name.
+    pub name: String,
+    /// Diffuse term (zero when the light did not arrive).
+    pub diffuse: DVec3,
+    /// Specular term (likewise).
+    pub specular: DVec3,
+}
+
+/// A reflected or refracted branch.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Child {
+    /// The coefficient its color is weighted by.
+    pub coefficient: f64,
+    /// Traced, or why not.
+    pub outcome: Branch,
+    /// Index of the child node, when traced.
+    pub node: Option<usize>,
+}
+
+/// How the node's color was summed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Sum {
+    /// The local color (the background for a miss).
+    pub local: DVec3,
+    /// Coefficient of the reflected color.
+    pub k_rfl: f64,
+    /// The reflected ray's color.
+    pub reflected: DVec3,
+    /// Coefficient of the refracted color.
+    pub k_rfa: f64,
+    /// The refracted ray's color.
+    pub refracted: DVec3,
+    /// `local + k_rfl·reflected + k_rfa·refracted`.
+    pub color: DVec3,
+}
+
+impl RayNode {
+    /// The node's color.
+    pub fn color(&self) -> DVec3 {
+        self.sum.color
+    }
+
+    /// The children that were traced, reflected first.
+    pub fn children(&self) -> impl Iterator<Item = usize> + '_ {
+        [&self.reflected, &self.refracted]
+            .into_iter()
+            .flatten()
+            .filter_map(|c| c.node)
+    }
+}
+
+/// Builds a ray tree per primary ray from the tracer's events.
+#[derive(Debug)]
+pub struct TreeRecorder<'s> {
+    scene: &'s Scene,
+    /// One tree per primary ray traced, in order.
+    pub trees: Vec<RayTree>,
+    /// The open rays, innermost last.
+    stack: Vec<usize>,
+}
+
+impl<'s> TreeRecorder<'s> {
+    /// A recorder naming objects and lights from `scene`.
+    pub fn new(scene: &'s Scene) -> Self {
+        Self {
+            scene,
+            trees: Vec::new(),
+            stack: Vec::new(),
+        }
+    }
+
+    fn nodes(&mut self) -> &mut Vec<RayNode> {
+        &mut self
+            .trees
+            .last_mut()
+            .expect("a primary ray was started")
+            .nodes
+    }
+
+    fn top(&mut self) -> &mut RayNode {
+        let i = *self.stack.last().expect("inside a ray");
+        &mut self.nodes()[i]
+    }
+}
+
+impl Recorder for TreeRecorder<'_> {
+    const ENABLED: bool = true;
+
+    fn ray_started(&mut self, start: &RayStart) {
+        if start.kind == RayKind::Primary {
+            self.trees.push(RayTree::default());
+            self.stack.clear();
+        }
+        let parent = self.stack.last().copied();
+        let index = self.nodes().len();
+        if let Some(p) = parent {
+            let node = &mut self.nodes()[p];
+            let branch = if start.kind == RayKind::Reflected {
+                &mut node.reflected
+            } else {
+                &mut node.refracted
+            };
+            if let Some(child) = branch {
+                child.node = Some(index);
+            }
+        }
+        self.nodes().push(RayNode {
+            kind: start.kind,
+            depth: start.depth,
+            parent,
+            origin: start.ray.origin,
+            direction: start.ray.dir,
+            weight: start.weight,
+            t_min: start.t_min,
+            t_max: start.t_max.is_finite().then_some(start.t_max),
+            tests: Vec::new(),
+            tested: Tested::default(),
+            hit: None,
+            shadow_rays: Vec::new(),
+            local: None,
+            reflected: None,
+            refracted: None,
+            sum: Sum::default(),
+        });
+        self.stack.push(index);
+    }
+
+    fn object_tested(&mut self, object: usize, roots: &crate::geometry::hit::Roots) {
+        let name = self.scene.objects[object].name.clone();
+        self.top().tests.push(ObjectTest {
+            object,
+            name,
+            roots: roots.as_slice().to_vec(),
+        });
+    }
+
+    fn tested(&mut self, tested: &Tested) {
+        self.top().tested = *tested;
+    }
+
+    fn hit(&mut self, hit: &HitInfo) {
+        let object = &self.scene.objects[hit.object];
+        let h = Hit {
+            object: hit.object,
+            name: object.name.clone(),
+            material: self.scene.materials[object.material].name.clone(),
+            t: hit.t,
+            face: matches!(object.shape, crate::geometry::object::Shape::Mesh(_))
+                .then_some(hit.part),
+            point: hit.point,
+            normal: hit.normal,
+            shading_normal: hit.shading_normal,
+            entering: hit.entering,
+            n1: hit.n1,
+            n2: hit.n2,
+        };
+        let node = self.top();
+        node.hit = Some(h);
+        node.local = Some(Local {
+            ambient: DVec3::ZERO,
+            lights: Vec::new(),
+            total: DVec3::ZERO,
+        });
+    }
+
+    fn shadow_ray(&mut self, s: &ShadowInfo) {
+        let outcome = match s.outcome {
+            ShadowOutcome::FacesAway => Outcome::FacesAway,
+            ShadowOutcome::Reaches { transmitted } => Outcome::Reaches { transmitted },
+            ShadowOutcome::Blocked { object, t } => Outcome::Blocked {
+                object,
+                name: self.scene.objects[object].name.clone(),
+                t,
+            },
+        };
+        let name = self.scene.lights[s.light].name.clone();
+        self.top().shadow_rays.push(ShadowRay {
+            light: s.light,
+            name,
+            origin: s.ray.origin,
+            direction: s.ray.dir,
+            t_max: s.t_max,
+            outcome,
+            tested: s.tested,
+        });
+    }
+
+    fn light_term(&mut self, term: &LightTerm) {
+        let name = self.scene.lights[term.light].name.clone();
+        if let Some(local) = &mut self.top().local {
+            local.lights.push(LightShare {
+                light: term.light,
+                name,
+                diffuse: term.diffuse,
+                specular: term.specular,
+            });
+        }
+    }
+
+    fn branch(&mut self, b: &BranchInfo) {
+        let child = Some(Child {
+            coefficient: b.coefficient,
+            outcome: b.branch,
+            node: None,
+        });
+        let node = self.top();
+        match b.kind {
+            RayKind::Reflected => node.reflected = child,
+            _ => node.refracted = child,
+        }
+    }
+
+    fn ray_finished(&mut self, sum: &ColorSum) {
+        let node = self.top();
+        if let Some(local) = &mut node.local {
+            local.ambient = sum.ambient;
+            local.total = sum.local;
+        }
+        node.sum = Sum {
+            local: sum.local,
+            k_rfl: sum.k_rfl,
+            reflected: sum.reflected,
+            k_rfa: sum.k_rfa,
+            refracted: sum.refracted,
+            color: sum.color,
+        };
+        self.stack.pop();
+    }
+}

@@ -1,0 +1,430 @@
+//! Speed against accuracy: render one scene with a sweep of settings, time each
+//! (median of several runs), measure its error against a converged reference of
+//! the same scene, and chart time against error on log axes, with the Pareto
+//! front (no other setting is both faster and more accurate) and the defaults
+//! marked. Drawn with the project's drawing toolkit ([`crate::views::figure`]).
+//!
+//! Only settings that keep the scene's model are swept: samples per pixel, depth,
+//! cutoff, the ray–sphere method and the origin offset. The weights method
+//! (constant, Schlick, Fresnel) changes what the image should be, so an "error"
+//! against one reference would mean nothing for it.
+
+use std::time::Instant;
+
+use glam::DVec2;
+use indicatif::ProgressBar;
+
+use crate::io::image_file::to_rgb8;
+use crate::methods::{Antialiasing, Offset, SphereMethod};
+use crate::scene::{RenderSettings, Scene};
+use crate::trace::render::{Image, render};
+use crate::views::figure::{Anchor, Figure, Pen, palette};
+
+/// One point of the sweep.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Point {
+    /// What was changed from the defaults.
+    pub label: String,
+    /// The settings rendered.
+    pub settings: RenderSettings,
+    /// Median wall time of the renders, in seconds.
+    pub seconds: f64,
+    /// Root-mean-square error against the reference, linear RGB, per channel.
+    pub rmse: f64,
+    /// Share of pixels whose 8-bit value differs from the reference's by more than 1 in some channel.
+    pub off: f64,
+    /// Whether these are the default settings.
+    pub default: bool,
+}
+
+/// The settings swept: the defaults, then one change at a time.
+pub fn sweep(base: &RenderSettings) -> Vec<(String, RenderSettings, bool)> {
+    let d = RenderSettings {
+        spp: 1,
+        max_depth: 8,
+        cutoff: RenderSettings::DEFAULT_CUTOFF,
+        sphere: SphereMethod::Stable,
+        offset: Offset::Robust,
+        aa: Antialiasing::Grid,
+        ..*base
+    };
+    let mut out = vec![("default".to_owned(), d, true)];
+    let mut add = |label: String, s: RenderSettings| out.push((label, s, false));
+    for spp in [4, 16] {
+        add(format!("{spp} spp"), RenderSettings { spp, ..d });
+    }
+    for max_depth in [2, 4, 16] {
+        add(
+            format!("depth {max_depth}"),
+            RenderSettings { max_depth, ..d },
+        );
+    }
+    add(
+        "fixed depth (no cutoff)".to_owned(),
+        RenderSettings { cutoff: 0.0, ..d },
+    );
+    add(
+        "cutoff 1/64".to_owned(),
+        RenderSettings {
+            cutoff: 1.0 / 64.0,
+            ..d
+        },
+    );
+    add(
+        "lecture sphere".to_owned(),
+        RenderSettings {
+            sphere: SphereMethod::Lecture,
+            ..d
+        },
+    );
+    add(
+        "no offset".to_owned(),
+        RenderSettings {
+            offset: Offset::None,
+            ..d
+        },
+    );
+    add(
+        "epsilon 1e-4".to_owned(),
+        RenderSettings {
+            offset: Offset::Epsilon(1e-4),
+            ..d
+        },
+    );
+    add(
+        "4 spp, depth 16".to_owned(),
+        RenderSettings {
+            spp: 4,
+            max_depth: 16,
+            ..d
+        },
+    );
+    for threshold in [0.05, 0.2] {
+        add(
+            format!("adaptive AA {threshold}"),
+            RenderSettings {
+                aa: Antialiasing::Adaptive {
+                    threshold,
+                    levels: 3,
+                },
+                ..d
+            },
+        );
+    }
+    out
+}
+
+/// The converged reference: 8 × 8 samples, depth 32, no cutoff, robust methods.
+pub fn reference_settings(base: &RenderSettings) -> RenderSettings {
+    RenderSettings {
+        spp: 64,
+        max_depth: 32,
+        cutoff: 0.0,
+        sphere: SphereMethod::Stable,
+        offset: Offset::Robust,
+        aa: Antialiasing::Grid,
+        ..*base
+    }
+}
+
+/// Renders every setting of the sweep `runs` times and measures it.
+pub fn measure(scene: &Scene, runs: usize, progress: &ProgressBar) -> Vec<Point> {
+    let points = sweep(&scene.settings);
+    progress.set_length(points.len() as u64 + 1);
+    let mut reference_scene = scene.clone();
+    reference_scene.settings = reference_settings(&scene.settings);
+    let reference =
+        render(&reference_scene, &ProgressBar::hidden()).expect("the size was validated");
+    progress.inc(1);
+    let reference8 = to_rgb8(&reference);
+    let scenes: Vec<Scene> = points
+        .iter()
+        .map(|(_, settings, _)| {
+            let mut s = scene.clone();
+            s.settings = *settings;
+            s
+        })
+        .collect();
+    // Runs alternate over the settings, so a machine that slows down or speeds up
+    // during the sweep shifts every setting alike.
+    let mut times = vec![Vec::with_capacity(runs); scenes.len()];
+    let mut images = vec![None; scenes.len()];
+    for run in 0..runs.max(1) {
+        for (k, s) in scenes.iter().enumerate() {
+            let started = Instant::now();
+            let image = render(s, &ProgressBar::hidden()).expect("the size was validated");
+            times[k].push(started.elapsed().as_secs_f64());
+            images[k] = Some(image);
+        }
+        progress.set_position(1 + (points.len() * (run + 1) / runs.max(1)) as u64);
+    }
+    points
+        .into_iter()
+        .zip(times)
+        .zip(images)
+        .map(|(((label, settings, default), mut times), image)| {
+            times.sort_by(f64::total_cmp);
+            let image = image.expect("at least one run");
+            Point {
+                label,
+                settings,
+                seconds: times[times.len() / 2],
+                rmse: rmse(&image, &reference),
+                off: share_off(&to_rgb8(&image), &reference8),
+                default,
+            }
+        })
+        .collect()
+}
+
+/// Root-mean-square difference per channel, linear RGB.
+pub fn rmse(a: &Image, b: &Image) -> f64 {
+    let sum: f64 = a
+        .pixels
+        .iter()
+        .zip(&b.pixels)
+        .map(|(p, q)| (*p - *q).length_squared())
+        .sum();
+    (sum / (3.0 * a.pixels.len() as f64)).sqrt()
+}
+
+/// The share of pixels off by more than one 8-bit level in some channel.
+pub fn share_off(a: &[u8], b: &[u8]) -> f64 {
+    let off = a
+        .chunks(3)
+        .zip(b.chunks(3))
+        .filter(|(p, q)| p.iter().zip(q.iter()).any(|(x, y)| x.abs_diff(*y) > 1))
+        .count();
+    off as f64 / (a.len() / 3) as f64
+}
+
+/// Indices of the points on the Pareto front (no other point is at least as fast
+/// and as accurate and better in one), by increasing time.
+pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
+    let mut front: Vec<usize> = (0..points.len())
+        .filter(|&i| {
+            let (t, e) = points[i];
+            !points
+                .iter()
+                .any(|&(t2, e2)| t2 <= t && e2 <= e && (t2 < t || e2 < e))
+        })
+        .collect();
+    front.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
+    front
+}
+
+/// The CSV of every figure, one row per point.
+pub fn csv(points: &[Point]) -> String {
+    let mut out = String::from(
+        "label,default,spp,max_depth,cutoff,sphere,offset,median_seconds,rmse_linear,share_off_by_more_than_1_in_8bit\n",
+    );
+    for p in points {
+        let s = &p.settings;
+        let offset = match s.offset {
+            Offset::None => "none".to_owned(),
+            Offset::Robust => "robust".to_owned(),
+            Offset::Epsilon(e) => format!("epsilon={e}"),
+        };
+        // Labels may hold commas: quoted, with quotes doubled (RFC 4180).
+        let label = format!("\"{}\"", p.label.replace('"', "\"\""));
+        let sphere = format!("{:?}", s.sphere).to_lowercase();
+        out.push_str(&format!(
+            "{label},{},{},{},{},{sphere},{offset},{},{},{}\n",
+            p.default, s.spp, s.max_depth, s.cutoff, p.seconds, p.rmse, p.off
+        ));
+    }
+    out
+}
+
+/// The chart: time (x, log) against RMSE (y, log).
+pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Figure> {
+    let mut fig = Figure::new(width, height, 44.0, 12.0)?;
+    let floor = points
+        .iter()
+        .map(|p| p.rmse)
+        .filter(|&e| e > 0.0)
+        .fold(f64::INFINITY, f64::min)
+        .min(1.0)
+        / 2.0;
+    let xy: Vec<DVec2> = points
+        .iter()
+        .map(|p| DVec2::new(p.seconds.max(1e-6).log10(), p.rmse.max(floor).log10()))
+        .collect();
+    let lo = xy
+        .iter()
+        .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
+    let hi = xy
+        .iter()
+        .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p));
+    // Leave room on the left and below for the axes' labels.
+    let span = (hi - lo).max(DVec2::splat(0.3));
+    fig.fit(
+        lo - span * DVec2::new(0.22, 0.16),
+        hi + span * DVec2::new(0.08, 0.1),
+        0.0,
+    );
+    let (vlo, vhi) = fig.visible();
+    let grid = Pen::solid([225, 225, 225], 1.0);
+    for k in (vlo.x.ceil() as i32)..=(vhi.x.floor() as i32) {
+        let x = f64::from(k);
+        fig.line(DVec2::new(x, vlo.y), DVec2::new(x, vhi.y), grid);
+        fig.label(
+            DVec2::new(x, vlo.y),
+            DVec2::new(0.0, -6.0),
+            &seconds_label(x),
+            13.0,
+            palette::INK,
+            Anchor::Center,
+        );
+    }
+    for k in (vlo.y.ceil() as i32)..=(vhi.y.floor() as i32) {
+        let y = f64::from(k);
+        fig.line(DVec2::new(vlo.x, y), DVec2::new(vhi.x, y), grid);
+        fig.label(
+            DVec2::new(vlo.x, y),
+            DVec2::new(6.0, -4.0),
+            &format!("1e{k}"),
+            13.0,
+            palette::INK,
+            Anchor::Left,
+        );
+    }
+    let front = pareto(
+        &points
+            .iter()
+            .map(|p| (p.seconds, p.rmse))
+            .collect::<Vec<_>>(),
+    );
+    for w in front.windows(2) {
+        fig.line(xy[w[0]], xy[w[1]], Pen::dashed(palette::REFLECTED, 2.0));
+    }
+    // The defaults last, on top.
+    let mut order: Vec<usize> = (0..points.len()).collect();
+    order.sort_by_key(|&i| points[i].default);
+    let mut placed: Vec<(DVec2, DVec2)> = xy
+        .iter()
+        .map(|&p| fig.to_px(p))
+        .map(|c| (c - 6.0, c + 6.0))
+        .collect();
+    for &i in &order {
+        let (p, at) = (&points[i], xy[i]);
+        let color = if p.default {
+            palette::REFRACTED
+        } else if front.contains(&i) {
+            palette::REFLECTED
+        } else {
+            palette::PRIMARY
+        };
+        fig.dot(
+            at,
+            if p.default { 7.0 } else { 5.0 },
+            color,
+            Some(palette::INK),
+        );
+        // The first spot beside the point where the label overlaps no dot and no other label.
+        let c = fig.to_px(at);
+        let w = f64::from(Figure::text_width(&p.label, 13.0));
+        let spots = [
+            (9.0, 4.0),
+            (9.0, 18.0),
+            (9.0, -10.0),
+            (-9.0 - w, 4.0),
+            (9.0, 32.0),
+            (9.0, -24.0),
+            (-9.0 - w, 18.0),
+            (-9.0 - w, -10.0),
+            (9.0, 46.0),
+            (9.0, -38.0),
+        ];
+        let (dx, dy) = spots
+            .into_iter()
+            .find(|&(dx, dy)| {
+                let (lo, hi) = (
+                    c + DVec2::new(dx, dy - 11.0),
+                    c + DVec2::new(dx + w, dy + 3.0),
+                );
+                !placed
+                    .iter()
+                    .any(|&(a, b)| lo.x < b.x && hi.x > a.x && lo.y < b.y && hi.y > a.y)
+            })
+            .unwrap_or(spots[0]);
+        placed.push((
+            c + DVec2::new(dx, dy - 11.0),
+            c + DVec2::new(dx + w, dy + 3.0),
+        ));
+        fig.label(
+            at,
+            DVec2::new(dx, dy),
+            &p.label,
+            13.0,
+            palette::INK,
+            Anchor::Left,
+        );
+    }
+    fig.frame_border();
+    let legend = [
+        (Pen::solid(palette::REFRACTED, 6.0), "the defaults"),
+        (Pen::solid(palette::REFLECTED, 6.0), "on the Pareto front"),
+        (
+            Pen::dashed(palette::REFLECTED, 2.0),
+            "Pareto front: nothing is both faster and more accurate",
+        ),
+        (Pen::solid(palette::PRIMARY, 6.0), "other settings"),
+    ];
+    let boxes = fig.legend_boxes(&legend, 13.0);
+    let marks: Vec<DVec2> = xy.iter().map(|&p| fig.to_px(p)).collect();
+    let covered = |(o, wh): (DVec2, DVec2)| {
+        marks
+            .iter()
+            .filter(|p| p.cmpge(o - 60.0).all() && p.cmple(o + wh + 10.0).all())
+            .count()
+    };
+    let corner = (0..4).min_by_key(|&c| (covered(boxes[c]), c)).unwrap_or(0);
+    fig.legend(&legend, 13.0, corner);
+    fig.caption(&format!("{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"), 15.0);
+    Some(fig)
+}
+
+fn seconds_label(log10: f64) -> String {
+    let s = 10f64.powf(log10);
+    if s < 1e-3 {
+        format!("{} µs", (s * 1e6).round())
+    } else if s < 1.0 {
+        format!("{} ms", (s * 1e3).round())
+    } else {
+        format!("{} s", s.round())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn pareto_front_keeps_only_undominated_points() {
+        // (time, error): b is dominated by a (slower and worse); d by c.
+        let points = [(1.0, 0.5), (2.0, 0.6), (3.0, 0.1), (4.0, 0.2), (0.5, 0.9)];
+        assert_eq!(pareto(&points), vec![4, 0, 2]);
+    }
+
+    #[test]
+    fn errors_count_what_they_say() {
+        use glam::DVec3;
+        let a = Image {
+            width: 2,
+            height: 1,
+            pixels: vec![DVec3::ZERO, DVec3::ONE],
+        };
+        let b = Image {
+            width: 2,
+            height: 1,
+            pixels: vec![DVec3::ZERO, DVec3::new(1.0, 1.0, 0.0)],
+        };
+        // One channel of six differs by 1: RMSE √(1/6).
+        assert!((rmse(&a, &b) - (1.0f64 / 6.0).sqrt()).abs() < 1e-15);
+        assert_eq!(
+            share_off(&[0, 0, 0, 10, 10, 10], &[1, 0, 0, 10, 10, 12]),
+            0.5
+        );
+    }
+}
