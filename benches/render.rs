@@ -12,7 +12,7 @@ use raytree::geometry::plane::Plane;
 use raytree::geometry::sphere::Sphere;
 use raytree::math::ray::Ray;
 use raytree::trace::render;
-use raytree::tree::document::{SceneRef, Trace};
+use raytree::tree::document::SceneRef;
 
 fn main() {
     divan::main();
@@ -88,7 +88,9 @@ fn record_pixel(bencher: Bencher) {
     let source = SceneRef::new("whitted.json", "");
     bencher.counter(ItemsCount::new(pixels.len())).bench(|| {
         for &(x, y) in &pixels {
-            divan::black_box(Trace::pixel(&scene, source.clone(), x, y, None).unwrap());
+            divan::black_box(
+                raytree::tree::record::pixel(&scene, source.clone(), x, y, None).unwrap(),
+            );
         }
     });
 }

@@ -37,7 +37,7 @@ fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
         .collect();
     assert_eq!(
         rows.len(),
-        raytree::views::chart::sweep(&raytree::scene::RenderSettings::default()).len()
+        raytree::trace::sweep::sweep(&raytree::scene::settings::RenderSettings::default()).len()
     );
     let rmse = |label: &str| -> f64 {
         let row = rows

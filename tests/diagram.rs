@@ -13,7 +13,9 @@ use raytree::views::projection::{Outline, Projection, View};
 
 fn whitted_figure(x: u32, y: u32, options: &Options) -> (raytree::scene::Scene, Trace, Figure) {
     let scene = raytree::scene::loader::whitted();
-    let trace = Trace::pixel(&scene, SceneRef::new("scenes/whitted.json", ""), x, y, None).unwrap();
+    let trace =
+        raytree::tree::record::pixel(&scene, SceneRef::new("scenes/whitted.json", ""), x, y, None)
+            .unwrap();
     let figure = draw(&trace, &scene, options).unwrap();
     (scene, trace, figure)
 }

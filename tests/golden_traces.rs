@@ -96,9 +96,10 @@ fn trace(g: &Golden) -> Trace {
     }
     let source = SceneRef::new(&file, &text);
     match g.target {
-        Target::Pixel(x, y) => Trace::pixel(&scene, source, x, y, None).unwrap(),
+        Target::Pixel(x, y) => raytree::tree::record::pixel(&scene, source, x, y, None).unwrap(),
         Target::Ray(o, d) => {
-            Trace::ray(&scene, source, Ray::new(DVec3::from(o), DVec3::from(d))).unwrap()
+            raytree::tree::record::ray(&scene, source, Ray::new(DVec3::from(o), DVec3::from(d)))
+                .unwrap()
         }
     }
 }

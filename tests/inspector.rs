@@ -231,7 +231,7 @@ fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     let (ci, cj) = window.dot_of(416, 209).unwrap();
     for (i, j) in [(5u16, 5u16), (40, 33), (ci, cj + 2)] {
         let (x, y) = window.pixel_at(i, j, 640, 480).unwrap();
-        let [r, g, b] = raytree::io::image_file::rgb8(rendered.get(x, y));
+        let [r, g, b] = raytree::io::image::rgb8(rendered.get(x, y));
         let cell = &buffer[(image.x + i, image.y + j / 2)];
         let shown = if j % 2 == 0 { cell.fg } else { cell.bg };
         assert_eq!(shown, ratatui::style::Color::Rgb(r, g, b), "dot ({i}, {j})");

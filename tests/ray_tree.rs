@@ -29,7 +29,7 @@ fn grid_traces() -> Vec<(String, Scene, Trace)> {
         scene.settings.height = 120;
         for y in (3..120).step_by(9) {
             for x in (5..160).step_by(11) {
-                let trace = Trace::pixel(&scene, source(name), x, y, None).unwrap();
+                let trace = raytree::tree::record::pixel(&scene, source(name), x, y, None).unwrap();
                 out.push((format!("{name} pixel {x},{y}"), scene.clone(), trace));
             }
         }
@@ -163,7 +163,8 @@ fn traced_color_equals_rendered_color_bit_for_bit() {
             let image = render(&scene, &ProgressBar::hidden()).unwrap();
             for y in 0..height {
                 for x in 0..width {
-                    let trace = Trace::pixel(&scene, source(name), x, y, None).unwrap();
+                    let trace =
+                        raytree::tree::record::pixel(&scene, source(name), x, y, None).unwrap();
                     assert_eq!(
                         trace.color,
                         image.get(x, y),
@@ -183,8 +184,9 @@ fn traced_color_equals_rendered_color_bit_for_bit() {
 #[test]
 fn json_reads_back_exactly() {
     let scene = raytree::scene::loader::whitted();
-    let pixel = Trace::pixel(&scene, source("whitted.json"), 416, 209, None).unwrap();
-    let ray = Trace::ray(
+    let pixel =
+        raytree::tree::record::pixel(&scene, source("whitted.json"), 416, 209, None).unwrap();
+    let ray = raytree::tree::record::ray(
         &scene,
         source("whitted.json"),
         Ray::new(DVec3::new(0.0, 1.6, 7.0), DVec3::new(0.1, -0.1, -1.0)),
@@ -233,7 +235,8 @@ fn first_difference(a: &Trace, b: &Trace) -> Option<String> {
 #[test]
 fn reading_rejects_unknown_fields() {
     let scene = raytree::scene::loader::whitted();
-    let trace = Trace::pixel(&scene, source("whitted.json"), 100, 100, None).unwrap();
+    let trace =
+        raytree::tree::record::pixel(&scene, source("whitted.json"), 100, 100, None).unwrap();
     let text = trace.to_json().replacen(
         "\"format\": \"raytree-trace\",",
         "\"format\": \"raytree-trace\", \"extra\": 0,",
@@ -257,10 +260,10 @@ fn every_field_is_documented() {
     let src = source("whitted.json");
     let mut traces: Vec<Trace> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
         .iter()
-        .map(|&(x, y)| Trace::pixel(&scene, src.clone(), x, y, None).unwrap())
+        .map(|&(x, y)| raytree::tree::record::pixel(&scene, src.clone(), x, y, None).unwrap())
         .collect();
     traces.push(
-        Trace::ray(
+        raytree::tree::record::ray(
             &scene,
             src.clone(),
             Ray::new(DVec3::new(0.0, 1.6, 7.0), DVec3::new(0.1, -0.1, -1.0)),
@@ -269,7 +272,7 @@ fn every_field_is_documented() {
     );
     let mut shallow = scene.clone();
     shallow.settings.max_depth = 2;
-    traces.push(Trace::pixel(&shallow, src, 416, 209, None).unwrap());
+    traces.push(raytree::tree::record::pixel(&shallow, src, 416, 209, None).unwrap());
     let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
     for t in &traces {
         collect(&serde_json::to_value(t).unwrap(), &mut keys, &mut tags);
@@ -385,7 +388,8 @@ fn steps_follow_the_algorithm() {
 #[test]
 fn step_texts_carry_their_numbers() {
     let scene = raytree::scene::loader::whitted();
-    let trace = Trace::pixel(&scene, source("whitted.json"), 168, 296, None).unwrap();
+    let trace =
+        raytree::tree::record::pixel(&scene, source("whitted.json"), 168, 296, None).unwrap();
     let steps = trace.steps(0);
     let texts: Vec<&str> = steps.iter().map(|s| s.text.as_str()).collect();
     let blocked = texts

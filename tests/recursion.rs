@@ -5,8 +5,8 @@
 mod common;
 
 use indicatif::ProgressBar;
-use raytree::io::image_file::to_rgb8;
-use raytree::scene::RenderSettings;
+use raytree::io::image::to_rgb8;
+use raytree::scene::settings::RenderSettings;
 use raytree::trace::render::render_counting;
 
 #[test]

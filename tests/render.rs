@@ -37,8 +37,8 @@ fn shipped_scenes_render_finite_colors() {
 #[test]
 fn adaptive_antialiasing_splits_only_where_corners_differ() {
     use raytree::methods::Antialiasing;
+    use raytree::trace::pixel::pixel_color;
     use raytree::trace::recorder::RayCounter;
-    use raytree::trace::render::pixel_color;
     use raytree::trace::tracer::Tracer;
     // A white ball on a black background, 64 × 48: a pixel in the empty corner
     // traces its four corners and stops; a pixel on the ball's edge splits.

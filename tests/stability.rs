@@ -505,7 +505,7 @@ fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
 #[test]
 fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
     use indicatif::ProgressBar;
-    use raytree::io::image_file::to_rgb8;
+    use raytree::io::image::to_rgb8;
     use raytree::trace::render::render_counting;
     let mut s = scene(
         r#"{ "camera": {"eye": [0, 1, 0.5], "look_at": [3, 1, -0.4]},
@@ -526,7 +526,10 @@ fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
     // The default cutoff was chosen for "within one 8-bit level"; a smaller one
     // gives the very same 8-bit image here. Both trace far fewer rays.
     for (cutoff, identical) in [
-        (raytree::scene::RenderSettings::DEFAULT_CUTOFF, false),
+        (
+            raytree::scene::settings::RenderSettings::DEFAULT_CUTOFF,
+            false,
+        ),
         (1e-6, true),
     ] {
         s.settings.cutoff = cutoff;

@@ -25,7 +25,7 @@ fn lit_sphere_head_on_is_ambient_plus_diffuse() {
              "objects": [{"sphere": {}, "material": "m"}] }"#,
     );
     let tracer = Tracer::new(&s);
-    let color = raytree::trace::render::pixel_color(&tracer, &s.camera(), 50, 50, &mut NoRecorder);
+    let color = raytree::trace::pixel::pixel_color(&tracer, &s.camera(), 50, 50, &mut NoRecorder);
     assert!(
         close(color, 0.7 * DVec3::new(1.0, 0.5, 0.25), TOL),
         "{color}"

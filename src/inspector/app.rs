@@ -167,7 +167,7 @@ impl App {
         self.cursor = (x.min(w - 1), y.min(h - 1));
         let Some(scene) = &self.scene else { return };
         let started = Instant::now();
-        match Trace::pixel(
+        match crate::tree::record::pixel(
             scene,
             self.source.clone(),
             self.cursor.0,

@@ -8,10 +8,10 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 
 use rayon::prelude::*;
 
-use crate::io::image_file::rgb8;
+use crate::io::image::rgb8;
 use crate::scene::Scene;
+use crate::trace::pixel::pixel_color;
 use crate::trace::recorder::NoRecorder;
-use crate::trace::render::pixel_color;
 use crate::trace::tracer::Tracer;
 
 /// Which image pixels the pane's dots show: dot `(i, j)` shows the image pixel

@@ -13,7 +13,7 @@ use ratatui::widgets::canvas::{Canvas, Context, Line as CanvasLine, Points};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
 use super::app::{App, Areas, Focus, Item};
-use crate::io::image_file::rgb8;
+use crate::io::image::rgb8;
 use crate::tree::ray_tree::{Outcome, RayNode};
 use crate::tree::steps::kind_name;
 use crate::views::diagram::{Options, layout};

@@ -1,9 +1,7 @@
 //! How far apart two 8-bit images are: what `raytree diff` prints, and how the
 //! POV-Ray comparison judges agreement.
 
-use std::path::Path;
-
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 
 /// The differences between two images of the same size, over every channel of
 /// every pixel, in 8-bit levels.
@@ -15,18 +13,6 @@ pub struct Difference {
     pub max: u8,
     /// Share of pixels where some channel differs by more than 3 levels.
     pub share_over_3: f64,
-}
-
-/// Reads a PNG or PPM as 8-bit RGB.
-pub fn read_rgb8(path: &Path) -> Result<image::RgbImage> {
-    let reader = image::ImageReader::open(path)
-        .with_context(|| format!("cannot read {}", path.display()))?
-        .with_guessed_format()
-        .with_context(|| format!("cannot read {}", path.display()))?;
-    let img = reader
-        .decode()
-        .with_context(|| format!("{}: not an image raytree can read", path.display()))?;
-    Ok(img.to_rgb8())
 }
 
 /// Compares two images.

@@ -1,5 +1,8 @@
-//! Images in and out: the 8-bit sRGB conversion, PNG and PPM files written
-//! atomically, and the difference between two images.
+//! Images in and out: the linear-RGB image and its one conversion to 8-bit
+//! sRGB, image files, output files written atomically, and the difference
+//! between two images.
 
+pub mod image;
 pub mod image_diff;
 pub mod image_file;
+pub mod output;

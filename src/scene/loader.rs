@@ -19,9 +19,10 @@ use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::Triangle;
+use crate::scene::Scene;
 use crate::scene::camera::CameraSpec;
 use crate::scene::light::PointLight;
-use crate::scene::{RenderSettings, Scene};
+use crate::scene::settings::RenderSettings;
 use crate::shading::material::{Material, Pattern};
 
 /// The classic Whitted scene, built into the binary.

@@ -3,6 +3,8 @@
 //! against, and the renderer that traces every pixel.
 
 pub mod accelerator;
+pub mod pixel;
 pub mod recorder;
 pub mod render;
+pub mod sweep;
 pub mod tracer;

@@ -5,12 +5,10 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::io::image_file::rgb8;
-use crate::math::ray::Ray;
-use crate::scene::{RenderSettings, Scene};
-use crate::trace::render::pixel_color_at;
-use crate::trace::tracer::Tracer;
-use crate::tree::ray_tree::{RayTree, TreeRecorder};
+use crate::io::image::rgb8;
+use crate::scene::Scene;
+use crate::scene::settings::RenderSettings;
+use crate::tree::ray_tree::RayTree;
 use crate::tree::steps::{Step, steps};
 
 /// The value of the `format` field.
@@ -134,36 +132,10 @@ pub struct Sample {
     pub tree: RayTree,
 }
 
-/// Why a trace could not be made.
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
-pub enum TraceError {
-    /// The pixel is not in the image.
-    #[error("pixel {x},{y} is outside the {width}×{height} image (x is 0 to {}, y is 0 to {})", width - 1, height - 1)]
-    PixelOutside {
-        /// Column asked for.
-        x: u32,
-        /// Row asked for.
-        y: u32,
-        /// Image width.
-        width: u32,
-        /// Image height.
-        height: u32,
-    },
-    /// The sample is not one of the pixel's.
-    #[error("sample {sample} does not exist: a pixel has {spp} samples (0 to {})", spp - 1)]
-    SampleOutside {
-        /// Sample asked for.
-        sample: u32,
-        /// Samples per pixel.
-        spp: u32,
-    },
-    /// The ray cannot be traced.
-    #[error("the ray's direction must be non-zero and every number finite")]
-    BadRay,
-}
-
 impl Trace {
-    fn new(scene: &Scene, source: SceneRef, color: DVec3, samples: Vec<Sample>) -> Self {
+    /// A document of `samples` traced in `scene`, with the scene's objects and
+    /// lights named; the caller sets `pixel` or `ray`.
+    pub fn new(scene: &Scene, source: SceneRef, color: DVec3, samples: Vec<Sample>) -> Self {
         let s = scene.settings;
         Trace {
             format: FORMAT.to_owned(),
@@ -195,84 +167,6 @@ impl Trace {
             rgb8: rgb8(color),
             samples,
         }
-    }
-
-    /// Traces pixel `(x, y)` (image coordinates) exactly as the renderer does,
-    /// recording every sample, or only sample `only` if given.
-    pub fn pixel(
-        scene: &Scene,
-        source: SceneRef,
-        x: u32,
-        y: u32,
-        only: Option<u32>,
-    ) -> Result<Trace, TraceError> {
-        let s = scene.settings;
-        if x >= s.width || y >= s.height {
-            return Err(TraceError::PixelOutside {
-                x,
-                y,
-                width: s.width,
-                height: s.height,
-            });
-        }
-        let mut rec = TreeRecorder::new(scene);
-        let mut at = Vec::new();
-        let color = pixel_color_at(
-            &Tracer::new(scene),
-            &scene.camera(),
-            x,
-            y,
-            &mut rec,
-            Some(&mut at),
-        );
-        if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
-            return Err(TraceError::SampleOutside {
-                sample,
-                spp: at.len() as u32,
-            });
-        }
-        let samples = at
-            .into_iter()
-            .zip(rec.trees)
-            .enumerate()
-            .map(|(k, ((sx, sy), tree))| Sample {
-                index: k as u32,
-                position: Some([sx, sy]),
-                color: tree.nodes[0].color(),
-                tree,
-            })
-            .filter(|sample| only.is_none_or(|k| k == sample.index))
-            .collect();
-        Ok(Trace {
-            pixel: Some(Pixel { x, y }),
-            ..Trace::new(scene, source, color, samples)
-        })
-    }
-
-    /// Traces one ray as a primary ray (depth 1, weight 1, from the media around the eye).
-    pub fn ray(scene: &Scene, source: SceneRef, ray: Ray) -> Result<Trace, TraceError> {
-        if !(ray.origin.is_finite() && ray.dir.is_finite())
-            || ray.dir.length_squared() == 0.0
-            || !ray.dir.length_squared().is_finite()
-        {
-            return Err(TraceError::BadRay);
-        }
-        let mut rec = TreeRecorder::new(scene);
-        let color = Tracer::new(scene).trace_primary(ray, &mut rec);
-        let tree = rec.trees.pop().unwrap_or_default();
-        let samples = vec![Sample {
-            index: 0,
-            position: None,
-            color,
-            tree,
-        }];
-        Ok(Trace {
-            ray: Some(RayRef {
-                origin: ray.origin,
-                direction: ray.dir,
-            }),
-            ..Trace::new(scene, source, color, samples)
-        })
     }
 
     /// The document as pretty JSON, with arrays of numbers (vectors, colors,

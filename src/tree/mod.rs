@@ -3,4 +3,5 @@
 
 pub mod document;
 pub mod ray_tree;
+pub mod record;
 pub mod steps;

@@ -541,7 +541,7 @@ fn pale(material: &crate::shading::material::Material) -> (Rgb, u8) {
         Pattern::Solid(c) => c,
         Pattern::Checker { colors, .. } => (colors[0] + colors[1]) / 2.0,
     };
-    let srgb = crate::io::image_file::rgb8(c.min(DVec3::ONE));
+    let srgb = crate::io::image::rgb8(c.min(DVec3::ONE));
     (
         srgb.map(|v| (255 - (255 - u16::from(v)) * 35 / 100) as u8),
         255,

@@ -264,7 +264,8 @@ mod tests {
     fn glass_trace() -> (crate::scene::Scene, Trace) {
         let scene = crate::scene::loader::whitted();
         let trace =
-            Trace::pixel(&scene, SceneRef::new("whitted.json", ""), 416, 209, None).unwrap();
+            crate::tree::record::pixel(&scene, SceneRef::new("whitted.json", ""), 416, 209, None)
+                .unwrap();
         (scene, trace)
     }
 

@@ -11,7 +11,8 @@ use clap::{ArgGroup, Args, Parser, Subcommand};
 use glam::DVec3;
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 
-use raytree::io::image_file::{self, PendingFile};
+use raytree::io::image_file;
+use raytree::io::output::PendingFile;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
 use raytree::scene::loader;
@@ -53,8 +54,8 @@ struct DiffArgs {
 }
 
 fn run_diff(args: &DiffArgs) -> Result<()> {
-    let a = raytree::io::image_diff::read_rgb8(&args.a)?;
-    let b = raytree::io::image_diff::read_rgb8(&args.b)?;
+    let a = raytree::io::image_file::read_rgb8(&args.a)?;
+    let b = raytree::io::image_file::read_rgb8(&args.b)?;
     let d = raytree::io::image_diff::difference(&a, &b)?;
     println!(
         "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255",
@@ -345,8 +346,8 @@ struct TargetArgs {
 impl TargetArgs {
     fn trace(&self, scene: &Scene, source: SceneRef) -> Result<Trace> {
         Ok(match (self.pixel, self.ray) {
-            (Some((x, y)), _) => Trace::pixel(scene, source, x, y, self.sample)?,
-            (_, Some(ray)) => Trace::ray(scene, source, ray)?,
+            (Some((x, y)), _) => raytree::tree::record::pixel(scene, source, x, y, self.sample)?,
+            (_, Some(ray)) => raytree::tree::record::ray(scene, source, ray)?,
             _ => unreachable!("clap requires --pixel or --ray"),
         })
     }
@@ -562,7 +563,7 @@ fn run_chart(args: &ChartArgs) -> Result<()> {
         .expect("valid template")
         .progress_chars("=> "),
     );
-    let points = raytree::views::chart::measure(&scene, args.runs as usize, &progress);
+    let points = raytree::trace::sweep::measure(&scene, args.runs as usize, &progress);
     progress.finish_and_clear();
     let s = &scene.settings;
     let title = format!(
