@@ -11,8 +11,8 @@ use indicatif::ProgressBar;
 use raytree::geometry::plane::Plane;
 use raytree::geometry::sphere::Sphere;
 use raytree::math::ray::Ray;
+use raytree::scene::source::SceneRef;
 use raytree::trace::render;
-use raytree::tree::document::SceneRef;
 
 fn main() {
     divan::main();

@@ -13,7 +13,7 @@ use crate::math::float::offset_ray_origin;
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize, clap::ValueEnum)]
 #[serde(rename_all = "snake_case")]
 pub enum SphereMethod {
-    /// The lecture's quadratic as written ([`crate::geometry::sphere::Sphere::lecture_roots`]).
+    /// The lecture's quadratic as written.
     Lecture,
     /// The numerically stable form (Ray Tracing Gems ch. 7).
     #[default]
@@ -25,7 +25,7 @@ pub enum SphereMethod {
 #[serde(rename_all = "snake_case")]
 pub enum TriangleMethod {
     /// The textbook Möller–Trumbore test: rays through shared edges can slip
-    /// between two triangles ([`crate::geometry::triangle::Triangle::moller_trumbore`]).
+    /// between two triangles.
     MollerTrumbore,
     /// Woop, Benthin & Wald's watertight test (JCGT 2013).
     #[default]
@@ -37,12 +37,12 @@ pub enum TriangleMethod {
 #[serde(rename_all = "snake_case")]
 pub enum Accel {
     /// Chosen from the scene: a hierarchy once there are enough objects to pay
-    /// for its box tests ([`crate::trace::accelerator::AUTO_MIN_OBJECTS`]), none below.
+    /// for its box tests, none below.
     #[default]
     Auto,
     /// Test every object, as the lecture's `raytrace` does.
     None,
-    /// A bounding volume hierarchy over the objects ([`crate::geometry::bvh`]).
+    /// A bounding volume hierarchy over the objects.
     Bvh,
 }
 
@@ -93,6 +93,29 @@ impl Offset {
     }
 }
 
+impl std::str::FromStr for Offset {
+    type Err = String;
+
+    /// `none`, `robust` or `epsilon=E` with `E > 0`, as the command line writes it.
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s {
+            "none" => Ok(Offset::None),
+            "robust" => Ok(Offset::Robust),
+            _ => {
+                let e = s
+                    .strip_prefix("epsilon=")
+                    .ok_or("expected none, robust or epsilon=E (e.g. epsilon=1e-4)")?;
+                let e: f64 = e.parse().map_err(|_| format!("'{e}' is not a number"))?;
+                if e.is_finite() && e > 0.0 {
+                    Ok(Offset::Epsilon(e))
+                } else {
+                    Err(format!("the epsilon must be > 0, got {e}"))
+                }
+            }
+        }
+    }
+}
+
 /// How a pixel is sampled.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "snake_case")]
@@ -111,6 +134,32 @@ pub enum Antialiasing {
         /// How many times a square may be split (3: down to 1/8 of a pixel).
         levels: u32,
     },
+}
+
+impl std::str::FromStr for Antialiasing {
+    type Err = String;
+
+    /// `grid`, `adaptive` (threshold 0.05) or `adaptive=T` with `T ≥ 0`, three
+    /// levels of subdivision, as the command line writes it.
+    fn from_str(s: &str) -> Result<Self, String> {
+        match s.split_once('=') {
+            None if s == "grid" => Ok(Antialiasing::Grid),
+            None if s == "adaptive" => Ok(Antialiasing::Adaptive {
+                threshold: 0.05,
+                levels: 3,
+            }),
+            Some(("adaptive", t)) => match t.parse::<f64>() {
+                Ok(threshold) if threshold.is_finite() && threshold >= 0.0 => {
+                    Ok(Antialiasing::Adaptive {
+                        threshold,
+                        levels: 3,
+                    })
+                }
+                _ => Err(format!("'{t}' is not a threshold (a number ≥ 0)")),
+            },
+            _ => Err("expected grid, adaptive or adaptive=T (e.g. adaptive=0.05)".to_owned()),
+        }
+    }
 }
 
 /// How a transparent surface splits its light between the reflected and the

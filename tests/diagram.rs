@@ -6,7 +6,8 @@
 
 use glam::DVec2;
 use raytree::geometry::object::Shape;
-use raytree::tree::document::{SceneRef, Trace};
+use raytree::scene::source::SceneRef;
+use raytree::tree::document::Trace;
 use raytree::views::diagram::{Labels, Options, draw};
 use raytree::views::figure::{Figure, palette};
 use raytree::views::projection::{Outline, Projection, View};

@@ -15,7 +15,8 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 use raytree::math::ray::Ray;
-use raytree::tree::document::{SceneRef, Trace};
+use raytree::scene::source::SceneRef;
+use raytree::tree::document::Trace;
 use serde_json::Value;
 
 const REL_TOL: f64 = 1e-9;

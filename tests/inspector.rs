@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{
 };
 use ratatui::layout::Rect;
 use raytree::inspector::{App, Areas, Focus, Item, draw};
-use raytree::tree::document::SceneRef;
+use raytree::scene::source::SceneRef;
 
 fn key(app: &mut App, code: KeyCode) {
     app.on_key(KeyEvent::new(code, KeyModifiers::NONE));

@@ -11,9 +11,10 @@ use indicatif::ProgressBar;
 use raytree::math::ray::Ray;
 use raytree::methods::Antialiasing;
 use raytree::scene::Scene;
+use raytree::scene::source::SceneRef;
 use raytree::trace::recorder::Branch;
 use raytree::trace::render::render;
-use raytree::tree::document::{SceneRef, Trace};
+use raytree::tree::document::Trace;
 use raytree::tree::ray_tree::RayTree;
 use raytree::tree::steps::StepKind;
 

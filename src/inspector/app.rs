@@ -12,8 +12,9 @@ use ratatui::layout::Rect;
 
 use super::preview::{Picture, Window, Worker};
 use crate::scene::Scene;
+use crate::scene::source::SceneRef;
 use crate::trace::recorder::Branch;
-use crate::tree::document::{SceneRef, Trace};
+use crate::tree::document::Trace;
 use crate::tree::steps::Step;
 
 /// Which pane the arrow keys drive.

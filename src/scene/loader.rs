@@ -22,6 +22,7 @@ use crate::geometry::triangle::Triangle;
 use crate::scene::Scene;
 use crate::scene::camera::CameraSpec;
 use crate::scene::light::PointLight;
+use crate::scene::overrides::Overrides;
 use crate::scene::settings::RenderSettings;
 use crate::shading::material::{Material, Pattern};
 
@@ -134,7 +135,7 @@ struct SceneFile {
     #[serde(default)]
     camera: CameraFile,
     #[serde(default)]
-    render: RenderFile,
+    render: Overrides,
     #[serde(default)]
     background: Option<DVec3>,
     #[serde(default)]
@@ -160,22 +161,6 @@ struct CameraFile {
     half_width: Option<f64>,
     half_height: Option<f64>,
     distance: Option<f64>,
-}
-
-#[derive(Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct RenderFile {
-    width: Option<u32>,
-    height: Option<u32>,
-    spp: Option<u32>,
-    max_depth: Option<u32>,
-    cutoff: Option<f64>,
-    sphere: Option<crate::methods::SphereMethod>,
-    offset: Option<crate::methods::Offset>,
-    weights: Option<crate::methods::Weights>,
-    aa: Option<crate::methods::Antialiasing>,
-    triangle: Option<crate::methods::TriangleMethod>,
-    accel: Option<crate::methods::Accel>,
 }
 
 #[derive(Deserialize, Default)]
@@ -339,21 +324,8 @@ impl Builder<'_> {
         })
     }
 
-    fn settings(&self, r: &RenderFile) -> Result<RenderSettings, SceneError> {
-        let d = RenderSettings::default();
-        let s = RenderSettings {
-            width: r.width.unwrap_or(d.width),
-            height: r.height.unwrap_or(d.height),
-            spp: r.spp.unwrap_or(d.spp),
-            max_depth: r.max_depth.unwrap_or(d.max_depth),
-            cutoff: r.cutoff.unwrap_or(d.cutoff),
-            sphere: r.sphere.unwrap_or(d.sphere),
-            offset: r.offset.unwrap_or(d.offset),
-            weights: r.weights.unwrap_or(d.weights),
-            aa: r.aa.unwrap_or(d.aa),
-            triangle: r.triangle.unwrap_or(d.triangle),
-            accel: r.accel.unwrap_or(d.accel),
-        };
+    fn settings(&self, r: &Overrides) -> Result<RenderSettings, SceneError> {
+        let s = r.apply(&RenderSettings::default());
         s.validate()
             .map_err(|(field, msg)| self.invalid(format_args!("render.{field}"), msg))?;
         Ok(s)

@@ -6,7 +6,9 @@ pub mod generate;
 pub mod light;
 pub mod loader;
 pub mod obj;
+pub mod overrides;
 pub mod settings;
+pub mod source;
 
 use glam::DVec3;
 

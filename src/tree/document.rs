@@ -2,12 +2,15 @@
 //! settings that made them, as written by `raytree trace --json` and documented
 //! field by field in `book/src/trace-format.md`.
 
+use std::path::Path;
+
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::io::image::rgb8;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
+use crate::scene::source::{BUILT_IN, SceneRef};
 use crate::tree::ray_tree::RayTree;
 use crate::tree::steps::{Step, steps};
 
@@ -42,33 +45,6 @@ pub struct Trace {
     pub rgb8: [u8; 3],
     /// One tree per sample (only the chosen one with `--sample`).
     pub samples: Vec<Sample>,
-}
-
-/// The scene a trace came from.
-#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct SceneRef {
-    /// The scene file as given (`whitted.json (built in)` for the built-in scene).
-    pub file: String,
-    /// `fnv1a64:` and the 64-bit FNV-1a hash of the file's bytes, in hex.
-    pub hash: String,
-}
-
-impl SceneRef {
-    /// Names a scene file and hashes its text.
-    pub fn new(file: &str, text: &str) -> Self {
-        Self {
-            file: file.to_owned(),
-            hash: format!("fnv1a64:{:016x}", fnv1a64(text.as_bytes())),
-        }
-    }
-}
-
-/// 64-bit FNV-1a (Fowler, Noll, Vo): a small, stable content hash.
-fn fnv1a64(bytes: &[u8]) -> u64 {
-    bytes.iter().fold(0xcbf2_9ce4_8422_2325, |h, &b| {
-        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-    })
 }
 
 /// An object, as traces name it.
@@ -219,15 +195,45 @@ impl Trace {
     }
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn fnv1a64_matches_the_reference_values() {
-        // Test vectors from the FNV reference (isthe.com/chongo/tech/comp/fnv).
-        assert_eq!(fnv1a64(b""), 0xcbf29ce484222325);
-        assert_eq!(fnv1a64(b"a"), 0xaf63dc4c8601ec8c);
-        assert_eq!(fnv1a64(b"foobar"), 0x85944171f73967e8);
+/// Reads a saved trace document (`raytree trace --json -o FILE`), checking it
+/// is one this raytree writes. Errors are one line naming the file.
+pub fn read(path: &Path) -> anyhow::Result<Trace> {
+    let text = crate::scene::loader::read(path)?;
+    let trace: Trace = serde_json::from_str(&text).map_err(|e| {
+        anyhow::anyhow!(
+            "{}:{}:{}: not a raytree trace: {}",
+            path.display(),
+            e.line(),
+            e.column(),
+            without_position(&e.to_string())
+        )
+    })?;
+    if trace.format != FORMAT || trace.version != VERSION {
+        anyhow::bail!(
+            "{}: a {} version {} document; this raytree reads {} version {}",
+            path.display(),
+            trace.format,
+            trace.version,
+            FORMAT,
+            VERSION
+        );
     }
+    Ok(trace)
+}
+
+/// The scene a saved trace names, with the trace's settings, if its file is
+/// found; and whether the file's text still hashes the same.
+pub fn find_scene(trace: &Trace) -> Option<(Scene, bool)> {
+    let path = (trace.scene.file != BUILT_IN).then(|| Path::new(&trace.scene.file));
+    let (mut scene, now) = crate::scene::source::load(path).ok()?;
+    scene.settings = trace.settings;
+    scene.settings.validate().ok()?;
+    Some((scene, now.hash == trace.scene.hash))
+}
+
+/// serde_json's message without its " at line L column C".
+fn without_position(message: &str) -> &str {
+    message
+        .rfind(" at line ")
+        .map_or(message, |i| &message[..i])
 }

@@ -7,13 +7,14 @@ use glam::DVec3;
 use crate::geometry::bvh::Tested;
 use crate::math::ray::Ray;
 use crate::scene::Scene;
+use crate::scene::source::SceneRef;
 use crate::trace::pixel::pixel_color_at;
 use crate::trace::recorder::{
     BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
     ShadowOutcome,
 };
 use crate::trace::tracer::Tracer;
-use crate::tree::document::{Pixel, RayRef, Sample, SceneRef, Trace};
+use crate::tree::document::{Pixel, RayRef, Sample, Trace};
 use crate::tree::ray_tree::{
     Child, Hit, LightShare, Local, ObjectTest, Outcome, RayNode, RayTree, ShadowRay, Sum,
 };

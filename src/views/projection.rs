@@ -259,7 +259,7 @@ impl Outline {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::tree::document::SceneRef;
+    use crate::scene::source::SceneRef;
 
     fn glass_trace() -> (crate::scene::Scene, Trace) {
         let scene = crate::scene::loader::whitted();

@@ -1,0 +1,128 @@
+//! Argument groups several commands share (the scene with its overrides, the
+//! pixel or ray to trace) and the parsers of their values.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, bail};
+use glam::DVec3;
+use raytree::math::ray::Ray;
+use raytree::scene::Scene;
+use raytree::scene::overrides::Overrides;
+use raytree::scene::source::{self, SceneRef};
+use raytree::tree::document::Trace;
+use raytree::tree::record;
+
+/// A scene and the settings that override its `render` block.
+#[derive(clap::Args)]
+pub struct SceneArgs {
+    /// Scene file (JSON, see scenes/README.md); the built-in Whitted scene if omitted.
+    pub scene: Option<PathBuf>,
+    #[command(flatten)]
+    pub overrides: Overrides,
+}
+
+impl SceneArgs {
+    /// The scene with the command line's settings applied and checked, and
+    /// what names it in a trace.
+    pub fn load(&self) -> Result<(Scene, SceneRef)> {
+        let (mut scene, source) = source::load(self.scene.as_deref())?;
+        scene.settings = self.overrides.apply(&scene.settings);
+        if let Err((field, message)) = scene.settings.validate() {
+            bail!("--{}: {message}", field.replace('_', "-"));
+        }
+        Ok((scene, source))
+    }
+
+    /// The scene's file stem, or "whitted" for the built-in scene: the start of
+    /// default output names.
+    pub fn stem(&self) -> String {
+        self.scene.as_ref().and_then(|p| p.file_stem()).map_or_else(
+            || "whitted".to_owned(),
+            |s| s.to_string_lossy().into_owned(),
+        )
+    }
+}
+
+/// What to trace: a pixel or a ray.
+#[derive(clap::Args)]
+#[command(group(clap::ArgGroup::new("target").required(true).args(["pixel", "ray"])))]
+pub struct TargetArgs {
+    /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    pub pixel: Option<(u32, u32)>,
+    /// Trace one ray instead of a pixel: its origin and direction in world coordinates.
+    #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
+    pub ray: Option<Ray>,
+    /// With several samples per pixel, keep only sample K (0-based, row by row from the top-left).
+    #[arg(long, value_name = "K", conflicts_with = "ray")]
+    pub sample: Option<u32>,
+}
+
+impl TargetArgs {
+    /// Records the pixel's or the ray's trees.
+    pub fn record(&self, scene: &Scene, source: SceneRef) -> Result<Trace> {
+        Ok(match (self.pixel, self.ray) {
+            (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample)?,
+            (_, Some(ray)) => record::ray(scene, source, ray)?,
+            _ => unreachable!("clap requires --pixel or --ray"),
+        })
+    }
+}
+
+/// `WxH`, each side 64 to 8192 pixels.
+pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = s
+        .split_once(['x', 'X'])
+        .ok_or("expected WxH, e.g. 1200x800")?;
+    let side = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .ok()
+            .filter(|&n| (64..=8192).contains(&n))
+            .ok_or_else(|| format!("'{v}' is not a size from 64 to 8192 pixels"))
+    };
+    Ok((side(w)?, side(h)?))
+}
+
+/// `X,Y` in image coordinates.
+pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
+    let (x, y) = s.split_once(',').ok_or("expected X,Y, e.g. 320,240")?;
+    let coord = |v: &str| {
+        v.trim()
+            .parse::<u32>()
+            .map_err(|_| format!("'{v}' is not a pixel coordinate (a whole number ≥ 0)"))
+    };
+    Ok((coord(x)?, coord(y)?))
+}
+
+/// `OX,OY,OZ:DX,DY,DZ`, finite numbers, a direction that is not zero.
+fn parse_ray(s: &str) -> Result<Ray, String> {
+    let (o, d) = s
+        .split_once(':')
+        .ok_or("expected OX,OY,OZ:DX,DY,DZ, e.g. 0,1,5:0,0,-1")?;
+    let [ox, oy, oz] = parse_numbers::<3>(o)?;
+    let [dx, dy, dz] = parse_numbers::<3>(d)?;
+    if dx == 0.0 && dy == 0.0 && dz == 0.0 {
+        return Err("the direction must not be zero".to_owned());
+    }
+    Ok(Ray::new(DVec3::new(ox, oy, oz), DVec3::new(dx, dy, dz)))
+}
+
+fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
+    let parts: Vec<&str> = s.split(',').map(str::trim).collect();
+    if parts.len() != N {
+        return Err(format!(
+            "expected {N} comma-separated numbers, got {}",
+            parts.len()
+        ));
+    }
+    let mut out = [0.0; N];
+    for (o, p) in out.iter_mut().zip(parts) {
+        *o = p
+            .parse::<f64>()
+            .ok()
+            .filter(|v| v.is_finite())
+            .ok_or_else(|| format!("'{p}' is not a finite number"))?;
+    }
+    Ok(out)
+}

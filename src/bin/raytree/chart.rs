@@ -1,0 +1,61 @@
+//! `raytree chart`: speed against accuracy over a sweep of settings.
+
+use std::path::PathBuf;
+
+use anyhow::{Context, Result};
+use raytree::trace::sweep;
+use raytree::views::chart;
+
+use crate::args::{SceneArgs, parse_size};
+use crate::output;
+
+#[derive(clap::Args)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Output chart (.png) [default: the scene's name with -chart.png].
+    #[arg(short, long, value_name = "OUT.png")]
+    output: Option<PathBuf>,
+    /// Also write every raw figure to this CSV file.
+    #[arg(long, value_name = "FILE")]
+    csv: Option<PathBuf>,
+    /// Renders per setting; the chart shows the median time.
+    #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100))]
+    runs: u32,
+    /// Chart size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
+    size: (u32, u32),
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let (scene, source) = args.scene.load()?;
+    let path = output::name_or(&args.output, || format!("{}-chart.png", args.scene.stem()));
+    output::require_png(&path, "a chart")?;
+    let png = output::create(&path)?;
+    let csv = args.csv.as_deref().map(output::create).transpose()?;
+    let progress = output::progress_bar(
+        false,
+        "{spinner} charting [{bar:40}] {pos}/{len} settings, {elapsed}",
+    );
+    let points = sweep::measure(&scene, args.runs as usize, &progress);
+    progress.finish_and_clear();
+    let s = &scene.settings;
+    let title = format!(
+        "{} at {}×{}, {} runs each",
+        source.file, s.width, s.height, args.runs
+    );
+    let figure = chart::draw(&points, &title, args.size.0, args.size.1)
+        .context("the chart size is too small")?;
+    png.commit(&figure.png())?;
+    if let Some(file) = csv {
+        file.commit(chart::csv(&points).as_bytes())?;
+    }
+    eprintln!(
+        "wrote {}{}",
+        path.display(),
+        args.csv
+            .as_ref()
+            .map_or(String::new(), |c| format!(" and {}", c.display()))
+    );
+    Ok(())
+}

@@ -1,0 +1,88 @@
+//! `raytree render`: every pixel of a scene, on all cores, to a PNG or PPM file.
+
+use std::path::PathBuf;
+use std::time::Instant;
+
+use anyhow::{Context, Result, bail};
+use raytree::io::image_file;
+use raytree::trace::render;
+
+use crate::args::SceneArgs;
+use crate::output;
+
+#[derive(clap::Args)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    /// Output image (.png or .ppm) [default: the scene's name with .png, in the current folder].
+    #[arg(short, long, value_name = "OUT")]
+    output: Option<PathBuf>,
+    /// Worker threads [default: one per core].
+    #[arg(long, value_name = "N")]
+    threads: Option<usize>,
+    /// Print nothing but errors.
+    #[arg(short, long)]
+    quiet: bool,
+    /// Also count the rays cast, by kind, and report rays per second (about 1% slower).
+    #[arg(long, conflicts_with = "quiet")]
+    stats: bool,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let (scene, _) = args.scene.load()?;
+    let path = output::name_or(&args.output, || format!("{}.png", args.scene.stem()));
+    let format = image_file::format_of(&path)?;
+    let pending = output::create(&path)?;
+    let threads = match args.threads {
+        Some(0) => bail!("--threads: must be at least 1"),
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("cannot start worker threads")?;
+    let progress = output::progress_bar(
+        args.quiet,
+        "{spinner} rendering [{bar:40}] {pos}/{len} rows, {elapsed} (eta {eta})",
+    );
+    let s = &scene.settings;
+    let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
+    let started = Instant::now();
+    let (image, rays) = if args.stats {
+        let (image, rays) = pool
+            .install(|| render::render_counting(&scene, &progress))
+            .map_err(no_memory)?;
+        (image, Some(rays))
+    } else {
+        let image = pool
+            .install(|| render::render(&scene, &progress))
+            .map_err(no_memory)?;
+        (image, None)
+    };
+    let seconds = started.elapsed().as_secs_f64();
+    progress.finish_and_clear();
+    pending.commit(&image_file::encode(&image, format)?)?;
+    if !args.quiet {
+        eprintln!(
+            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.2} s on {threads} threads",
+            path.display(),
+            s.width,
+            s.height,
+            s.spp,
+            s.max_depth
+        );
+    }
+    if let Some(r) = rays {
+        eprintln!(
+            "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {:.1} M rays/s",
+            r.total(),
+            r.primary,
+            r.shadow,
+            r.reflected,
+            r.refracted,
+            r.total() as f64 / seconds / 1e6
+        );
+    }
+    Ok(())
+}

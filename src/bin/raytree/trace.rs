@@ -1,0 +1,46 @@
+//! `raytree trace`: one pixel's (or one ray's) ray tree as text or JSON.
+
+use std::path::PathBuf;
+
+use anyhow::Result;
+use raytree::views::text;
+
+use crate::args::{SceneArgs, TargetArgs};
+use crate::output;
+
+#[derive(clap::Args)]
+pub struct Args {
+    #[command(flatten)]
+    scene: SceneArgs,
+    #[command(flatten)]
+    target: TargetArgs,
+    /// Print the JSON trace document (book/src/trace-format.md) instead of the text tree.
+    #[arg(long)]
+    json: bool,
+    /// Number the steps, in the order the algorithm runs them.
+    #[arg(long, conflicts_with = "json")]
+    steps: bool,
+    /// Write to this file (atomically) instead of standard output; a .json name implies --json.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let (scene, source) = args.scene.load()?;
+    let json = args.json
+        || args.output.as_ref().is_some_and(|p| {
+            p.extension()
+                .is_some_and(|e| e.eq_ignore_ascii_case("json"))
+        });
+    let pending = args.output.as_deref().map(output::create).transpose()?;
+    let trace = args.target.record(&scene, source)?;
+    let text = if json {
+        trace.to_json()
+    } else {
+        text::render(&trace, args.steps)
+    };
+    match pending {
+        Some(file) => file.commit(text.as_bytes()),
+        None => output::write_stdout(text.as_bytes()),
+    }
+}

@@ -1,0 +1,135 @@
+//! The render settings a scene file's `render` block and the command line may
+//! set: one struct for both, read by serde from the file and by clap from the
+//! flags, so a new setting is one field in [`RenderSettings`] and one line here.
+//!
+//! This is the one file of the scene model that names clap, by design: the
+//! flags are these fields.
+
+use serde::{Deserialize, Serialize};
+
+use crate::methods::{Accel, Antialiasing, Offset, SphereMethod, TriangleMethod, Weights};
+use crate::scene::settings::RenderSettings;
+
+/// Declares [`Overrides`], one `Option` per listed setting, and its `apply`,
+/// which puts each given value in place; listing a setting once here is all
+/// it takes (the field's doc comment is its `--help` line).
+macro_rules! overrides {
+    ($($(#[$attr:meta])* $field:ident: $ty:ty,)*) => {
+        /// Settings to change; a field left out keeps the value it is applied to.
+        /// Each field has the name and type of its [`RenderSettings`] field,
+        /// wrapped in `Option` (a test checks the two structs stay in step).
+        #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize, clap::Args)]
+        #[serde(deny_unknown_fields)]
+        pub struct Overrides {
+            $(
+                $(#[$attr])*
+                #[serde(skip_serializing_if = "Option::is_none")]
+                pub $field: Option<$ty>,
+            )*
+        }
+
+        impl Overrides {
+            /// `settings` with every field given here put in its place.
+            pub fn apply(&self, settings: &RenderSettings) -> RenderSettings {
+                let mut out = *settings;
+                $(
+                    if let Some(value) = self.$field {
+                        out.$field = value;
+                    }
+                )*
+                out
+            }
+        }
+    };
+}
+
+overrides! {
+    /// Image width in pixels.
+    #[arg(long, value_name = "W")]
+    width: u32,
+    /// Image height in pixels.
+    #[arg(long, value_name = "H")]
+    height: u32,
+    /// Samples per pixel, a square number (1, 4, 9, 16, …) for an n×n stratified grid.
+    #[arg(long, value_name = "N")]
+    spp: u32,
+    /// Deepest ray traced: 1 traces only primary rays (default 8).
+    #[arg(long, value_name = "D")]
+    max_depth: u32,
+    /// Skip reflected and refracted rays whose weight (product of coefficients) is below this; 0 turns it off.
+    #[arg(long, value_name = "W")]
+    cutoff: f64,
+    /// Ray–sphere intersection: the lecture's quadratic as written, or the stable form [default: stable].
+    #[arg(long, value_enum)]
+    sphere: SphereMethod,
+    /// Where secondary rays start: none (at the hit: acne), epsilon=E (E along the normal), robust [default: robust].
+    #[arg(long, value_name = "none|robust|epsilon=E")]
+    offset: Offset,
+    /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
+    #[arg(long, value_enum)]
+    weights: Weights,
+    /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980), with an optional threshold [default: grid].
+    #[arg(long, value_name = "grid|adaptive[=T]")]
+    aa: Antialiasing,
+    /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].
+    #[arg(long, value_enum)]
+    triangle: TriangleMethod,
+    /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), auto (a hierarchy from 16 bounded objects up) [default: auto].
+    #[arg(long, value_enum)]
+    accel: Accel,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Settings with every field away from its default.
+    fn unusual() -> RenderSettings {
+        RenderSettings {
+            width: 33,
+            height: 21,
+            spp: 9,
+            max_depth: 3,
+            cutoff: 0.125,
+            sphere: SphereMethod::Lecture,
+            offset: Offset::Epsilon(0.25),
+            weights: Weights::Fresnel,
+            aa: Antialiasing::Adaptive {
+                threshold: 0.5,
+                levels: 2,
+            },
+            triangle: TriangleMethod::MollerTrumbore,
+            accel: Accel::Bvh,
+        }
+    }
+
+    #[test]
+    fn every_setting_has_an_override_and_each_applies() {
+        // Reading the settings' own JSON as overrides fails on a setting that has
+        // no override (unknown field); applying them must give every value back.
+        let json = serde_json::to_value(unusual()).unwrap();
+        let all: Overrides = serde_json::from_value(json).unwrap();
+        assert_eq!(all.apply(&RenderSettings::default()), unusual());
+        // And an override with no setting would not serialize back into one.
+        let back: RenderSettings = serde_json::from_value(serde_json::to_value(all).unwrap())
+            .expect("every override names a setting");
+        assert_eq!(back, unusual());
+    }
+
+    #[test]
+    fn fields_left_out_keep_their_value() {
+        let only = Overrides {
+            spp: Some(4),
+            ..Overrides::default()
+        };
+        let s = only.apply(&unusual());
+        assert_eq!(
+            s,
+            RenderSettings {
+                spp: 4,
+                ..unusual()
+            }
+        );
+        assert_eq!(Overrides::default().apply(&unusual()), unusual());
+    }
+}
