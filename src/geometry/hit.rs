@@ -3,6 +3,9 @@
 
 use glam::DVec3;
 
+use crate::math::float::offset_ray_origin;
+use crate::methods::Offset;
+
 /// The parameters `t` where a ray meets a surface, ascending; at most two
 /// (a quadric has two, a plane one). Kept whole, not just the nearest, so the
 /// ray tree can show every value the lecture's quadratic produced.
@@ -86,4 +89,45 @@ pub struct Surface {
     /// Where a pattern (the checkerboard) is evaluated: the object-space point,
     /// flattened onto the plane for planes so squares never flicker.
     pub pattern_point: DVec3,
+}
+
+impl Surface {
+    /// The origin of a ray leaving the surface in direction `dir`, placed as
+    /// `offset` says: at the point (acne), a fixed epsilon along the normal, or
+    /// just past the point's own error bound ([`offset_ray_origin`]).
+    #[inline]
+    pub fn ray_origin(&self, offset: Offset, dir: DVec3) -> DVec3 {
+        match offset {
+            Offset::None => self.point,
+            Offset::Epsilon(e) => {
+                self.point + if dir.dot(self.normal) < 0.0 { -e } else { e } * self.normal
+            }
+            Offset::Robust => offset_ray_origin(self.point, self.point_error, self.normal, dir),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn epsilon_offset_moves_along_the_normal_toward_the_ray() {
+        let s = Surface {
+            point: DVec3::ZERO,
+            point_error: DVec3::ZERO,
+            normal: DVec3::Y,
+            shading_normal: DVec3::Y,
+            pattern_point: DVec3::ZERO,
+        };
+        assert_eq!(
+            s.ray_origin(Offset::Epsilon(0.1), DVec3::new(1.0, 1.0, 0.0)),
+            DVec3::new(0.0, 0.1, 0.0)
+        );
+        assert_eq!(
+            s.ray_origin(Offset::Epsilon(0.1), DVec3::new(1.0, -1.0, 0.0)),
+            DVec3::new(0.0, -0.1, 0.0)
+        );
+        assert_eq!(s.ray_origin(Offset::None, DVec3::Y), DVec3::ZERO);
+    }
 }

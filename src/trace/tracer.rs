@@ -31,7 +31,7 @@ use crate::geometry::hit::Surface;
 use crate::math::ray::Ray;
 use crate::scene::Scene;
 use crate::shading::material::Material;
-use crate::shading::optics::{Media, reflect, refract};
+use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
 use crate::trace::recorder::{
@@ -83,101 +83,61 @@ impl<'s> Tracer<'s> {
             t_min: 0.0,
             t_max: f64::INFINITY,
         };
-        self.trace(&start, &self.eye_media, rec)
+        self.raytrace(&start, &self.eye_media, rec)
     }
 
-    /// The lecture's `raytrace(ray)`.
-    pub fn trace<R: Recorder>(&self, start: &RayStart, media: &Media, rec: &mut R) -> DVec3 {
+    /// The lecture's `raytrace(ray)`, one line of its pseudo-code (in the module
+    /// documentation) per comment below; `media` are the transparent objects the
+    /// ray travels inside, for the refractive indices at its hit.
+    pub fn raytrace<R: Recorder>(&self, start: &RayStart, media: &Media, rec: &mut R) -> DVec3 {
         crate::record!(rec.ray_started(start));
-        let Some((object, t, part)) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec)
-        else {
-            crate::record!(rec.missed());
-            let sum = ColorSum {
-                local: self.scene.background,
-                color: self.scene.background,
-                ..ColorSum::default()
-            };
-            crate::record!(rec.ray_finished(&sum));
-            return sum.color;
+        // P = closest intersection; no hit returns the background.
+        let Some(found) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec) else {
+            return self.background(rec);
         };
-        let surface = self.scene.objects[object].surface(
-            &start.ray,
-            t,
-            part,
-            self.scene.settings.intersection(),
-        );
-        let hit = self.hit_info(&start.ray, (object, t, part), &surface, media);
+        let (hit, surface) = self.hit_at(&start.ray, found, media);
         crate::record!(rec.hit(&hit));
-        let material = self.scene.material_of(object);
+        let material = self.scene.material_of(hit.object);
+        // color_local = ambient + what each light's shadow ray lets through.
         let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
-
-        // Refraction is worked out first: the reflectance R (0 for the lecture's
-        // constant weights, 1 under total internal reflection) moves that share of
-        // the transmitted light to the reflection.
-        let (mut k_rfl, mut k_rfa) = (material.reflective, material.transparent);
-        let c = start.ray.dir.normalize();
-        let refracted_dir = if k_rfa > 0.0 {
-            refract(c, hit.shading_normal, hit.n1 / hit.n2)
-        } else {
-            None
-        };
-        let total_internal = k_rfa > 0.0 && refracted_dir.is_none();
-        if k_rfa > 0.0 {
-            let r = if total_internal {
-                1.0
-            } else {
-                self.scene
-                    .settings
-                    .weights
-                    .reflectance(-c.dot(hit.shading_normal), hit.n1, hit.n2)
-            };
-            k_rfl += k_rfa * r;
-            k_rfa *= 1.0 - r;
-        }
-        let reflected_dir = reflect(c, hit.shading_normal);
-        let reflected = self.spawn(
-            RayKind::Reflected,
-            k_rfl,
-            reflected_dir,
-            start,
-            &surface,
-            *media,
-            rec,
+        // k_rfl and k_rfa; total internal reflection hands k_rfa to the reflection.
+        let (c, n) = (start.ray.dir.normalize(), hit.shading_normal);
+        let shares = optics::shares(
+            c,
+            n,
+            (hit.n1, hit.n2),
+            material,
+            self.scene.settings.weights,
         );
-        let refracted = if total_internal {
-            crate::record!(rec.branch(&BranchInfo {
-                kind: RayKind::Refracted,
-                coefficient: material.transparent,
-                branch: Branch::TotalInternalReflection,
-            }));
-            DVec3::ZERO
-        } else {
-            let inside = if hit.entering {
-                media.entered(object)
-            } else {
-                media.left(object)
-            };
-            self.spawn(
-                RayKind::Refracted,
-                k_rfa,
-                refracted_dir.unwrap_or_default(),
-                start,
-                &surface,
-                inside,
-                rec,
-            )
-        };
-        let color = local + k_rfl * reflected + k_rfa * refracted;
+        // color_reflect = raytrace(reflected ray).
+        let reflected = self.spawn(RayKind::Reflected, &shares, start, &surface, *media, rec);
+        // color_refract = raytrace(refracted ray), in the media beyond the surface.
+        let beyond = media.crossed(hit.object, hit.entering);
+        let refracted = self.spawn(RayKind::Refracted, &shares, start, &surface, beyond, rec);
+        // color = color_local + k_rfl·color_reflect + k_rfa·color_refract.
+        let color = local + shares.k_rfl * reflected + shares.k_rfa * refracted;
         crate::record!(rec.ray_finished(&ColorSum {
             ambient,
             local,
-            k_rfl,
+            k_rfl: shares.k_rfl,
             reflected,
-            k_rfa,
+            k_rfa: shares.k_rfa,
             refracted,
             color,
         }));
         color
+    }
+
+    /// What a ray that hits nothing returns: the scene's background.
+    fn background<R: Recorder>(&self, rec: &mut R) -> DVec3 {
+        crate::record!(rec.missed());
+        let sum = ColorSum {
+            local: self.scene.background,
+            color: self.scene.background,
+            ..ColorSum::default()
+        };
+        crate::record!(rec.ray_finished(&sum));
+        sum.color
     }
 
     /// The object with the smallest root in `(t_min, t_max)`, that root, and the
@@ -216,14 +176,16 @@ impl<'s> Tracer<'s> {
         closest.map(|(i, part)| (i, t_closest, part))
     }
 
-    /// Which side the ray hit, and the refractive indices on either side of it.
-    fn hit_info(
+    /// The surface at a found hit, which side the ray hit, and the refractive
+    /// indices on either side of it.
+    fn hit_at(
         &self,
         ray: &Ray,
         (object, t, part): (usize, f64, u32),
-        surface: &Surface,
         media: &Media,
-    ) -> HitInfo {
+    ) -> (HitInfo, Surface) {
+        let methods = self.scene.settings.intersection();
+        let surface = self.scene.objects[object].surface(ray, t, part, methods);
         let entering = ray.dir.dot(surface.normal) < 0.0;
         let ior_of = |m: Option<usize>| m.map_or(1.0, |o| self.scene.material_of(o).ior);
         let inside = self.scene.material_of(object).ior;
@@ -239,7 +201,7 @@ impl<'s> Tracer<'s> {
         } else {
             -surface.shading_normal
         };
-        HitInfo {
+        let hit = HitInfo {
             object,
             t,
             part,
@@ -249,7 +211,8 @@ impl<'s> Tracer<'s> {
             entering,
             n1,
             n2,
-        }
+        };
+        (hit, surface)
     }
 
     /// `ambient + Σ (diffuse + specular)` over the lights a shadow ray reaches;
@@ -310,11 +273,7 @@ impl<'s> Tracer<'s> {
                 tested: Tested::default(),
             };
         }
-        let origin = self
-            .scene
-            .settings
-            .offset
-            .origin(surface, position - surface.point);
+        let origin = surface.ray_origin(self.scene.settings.offset, position - surface.point);
         let ray = Ray::new(origin, position - origin);
         let methods = self.scene.settings.intersection();
         let mut transmitted = 1.0;
@@ -349,49 +308,52 @@ impl<'s> Tracer<'s> {
         }
     }
 
-    /// Traces a reflected or refracted child with coefficient `k`, unless its
-    /// coefficient is zero, the parent is at the maximum depth, or its weight
-    /// would fall below the cutoff. Its origin leaves the surface on the side
-    /// it travels into.
-    #[allow(clippy::too_many_arguments)]
+    /// Traces the reflected or refracted child at a hit, unless there is none:
+    /// refraction is impossible (total internal reflection), its coefficient is
+    /// zero, the parent is at the maximum depth, or its weight would fall below
+    /// the cutoff. It starts just off the surface, on the side it travels into.
     fn spawn<R: Recorder>(
         &self,
         kind: RayKind,
-        k: f64,
-        dir: DVec3,
+        shares: &Shares,
         parent: &RayStart,
         surface: &Surface,
         media: Media,
         rec: &mut R,
     ) -> DVec3 {
         let settings = &self.scene.settings;
+        let (k, dir) = match kind {
+            RayKind::Reflected => (shares.k_rfl, shares.reflected),
+            _ => (shares.k_rfa, shares.refracted.unwrap_or_default()),
+        };
         let weight = parent.weight * k;
-        let branch = if k == 0.0 {
-            Branch::NoCoefficient
+        let (coefficient, branch) = if kind == RayKind::Refracted && shares.total_internal {
+            (shares.transmitted, Branch::TotalInternalReflection)
+        } else if k == 0.0 {
+            (k, Branch::NoCoefficient)
         } else if parent.depth >= settings.max_depth {
-            Branch::MaxDepth
+            (k, Branch::MaxDepth)
         } else if weight < settings.cutoff {
-            Branch::WeightCutoff
+            (k, Branch::WeightCutoff)
         } else {
-            Branch::Traced
+            (k, Branch::Traced)
         };
         crate::record!(rec.branch(&BranchInfo {
             kind,
-            coefficient: k,
+            coefficient,
             branch,
         }));
         if branch != Branch::Traced {
             return DVec3::ZERO;
         }
-        let origin = self.scene.settings.offset.origin(surface, dir);
         let child = RayStart {
             kind,
             depth: parent.depth + 1,
-            ray: Ray::new(origin, dir),
+            ray: Ray::new(surface.ray_origin(settings.offset, dir), dir),
             weight,
             t_min: 0.0,
             t_max: f64::INFINITY,
         };
-        self.trace(&child, &media, rec)
+        self.raytrace(&child, &media, rec)
     }
 }
