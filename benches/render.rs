@@ -11,7 +11,7 @@ use indicatif::ProgressBar;
 use raytree::geometry::plane::Plane;
 use raytree::geometry::sphere::Sphere;
 use raytree::math::ray::Ray;
-use raytree::scene::source::SceneRef;
+use raytree::scene::source::SceneSource;
 use raytree::trace::render;
 
 fn main() {
@@ -85,7 +85,7 @@ fn record_pixel(bencher: Bencher) {
     let pixels: Vec<(u32, u32)> = (0..12)
         .flat_map(|j| (0..16).map(move |i| (20 + 40 * i, 20 + 40 * j)))
         .collect();
-    let source = SceneRef::new("whitted.json", "");
+    let source = SceneSource::new("whitted.json", "");
     bencher.counter(ItemsCount::new(pixels.len())).bench(|| {
         for &(x, y) in &pixels {
             divan::black_box(
@@ -102,7 +102,7 @@ fn inspector_on_whitted() -> raytree::inspector::App {
     use ratatui::layout::Rect;
     let scene = raytree::scene::loader::whitted();
     let mut app =
-        raytree::inspector::App::new(scene, SceneRef::new("whitted.json", ""), None, false);
+        raytree::inspector::App::new(scene, SceneSource::new("whitted.json", ""), None, false);
     app.areas = raytree::inspector::Areas {
         image: Rect::new(1, 1, 78, 27),
         tree: Rect::new(81, 1, 78, 19),
@@ -133,7 +133,7 @@ fn inspector_first_frame(bencher: Bencher) {
         let mut app = inspector_on_whitted();
         let window = app.window();
         app.picture =
-            raytree::inspector::trace_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);
+            raytree::inspector::render_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);
         let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
         terminal
             .draw(|f| raytree::inspector::draw(f, &mut app))

@@ -44,18 +44,18 @@ pub enum Accel {
 
 /// The intersection methods a ray is tested with.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Intersection {
+pub struct IntersectionMethods {
     /// For spheres.
     pub sphere: SphereMethod,
     /// For triangles and meshes.
     pub triangle: TriangleMethod,
 }
 
-impl From<SphereMethod> for Intersection {
+impl From<SphereMethod> for IntersectionMethods {
     fn from(sphere: SphereMethod) -> Self {
-        Intersection {
+        IntersectionMethods {
             sphere,
-            ..Intersection::default()
+            ..IntersectionMethods::default()
         }
     }
 }

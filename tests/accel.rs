@@ -4,7 +4,7 @@
 use std::fmt::Write;
 
 use glam::DVec3;
-use raytree::geometry::bvh::Tested;
+use raytree::geometry::hit::{Search, TestCounts};
 use raytree::math::ray::Ray;
 use raytree::methods::{Accel, TriangleMethod};
 use raytree::trace::recorder::NoRecorder;
@@ -136,11 +136,11 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
 
 /// Keeps the counts the tracer reports.
 #[derive(Default)]
-struct Counts(Tested);
+struct Counts(TestCounts);
 
 impl raytree::trace::recorder::Recorder for Counts {
     const ENABLED: bool = true;
-    fn tested(&mut self, t: &Tested) {
+    fn tested(&mut self, t: &TestCounts) {
         self.0 = *t;
     }
 }
@@ -171,8 +171,13 @@ fn watertight_triangles_have_no_cracks_where_moller_trumbore_does() {
                     .into_iter()
                     .enumerate()
                 {
-                    let roots =
-                        mesh.roots(&ray, method, f64::INFINITY, false, &mut Tested::default());
+                    let roots = mesh.roots(
+                        &ray,
+                        method,
+                        f64::INFINITY,
+                        Search::Closest,
+                        &mut TestCounts::default(),
+                    );
                     misses[k] += usize::from(roots.as_slice().is_empty());
                 }
             }

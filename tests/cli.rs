@@ -490,7 +490,8 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let trace: raytree::tree::document::Trace = serde_json::from_slice(&out.stdout).unwrap();
+    let trace: raytree::tree::document::TraceDocument =
+        serde_json::from_slice(&out.stdout).unwrap();
     assert_eq!(
         (trace.format.as_str(), trace.version),
         ("raytree-trace", raytree::tree::document::VERSION)
@@ -513,7 +514,7 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
         &dir,
     );
     assert!(one.status.success() && one.stdout.is_empty());
-    let picked: raytree::tree::document::Trace =
+    let picked: raytree::tree::document::TraceDocument =
         serde_json::from_str(&std::fs::read_to_string(dir.join("t.json")).unwrap()).unwrap();
     assert_eq!(picked.samples.len(), 1);
     assert_eq!(picked.samples[0], trace.samples[2]);
@@ -526,7 +527,7 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
         &["trace", scene, "--ray", "0,1.6,7:0.1,-0.1,-1", "--json"],
         &dir,
     );
-    let ray: raytree::tree::document::Trace = serde_json::from_slice(&ray.stdout).unwrap();
+    let ray: raytree::tree::document::TraceDocument = serde_json::from_slice(&ray.stdout).unwrap();
     assert!(ray.pixel.is_none() && ray.ray.is_some() && ray.samples.len() == 1);
     std::fs::remove_dir_all(&dir).unwrap();
 }

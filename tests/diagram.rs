@@ -6,17 +6,26 @@
 
 use glam::DVec2;
 use raytree::geometry::object::Shape;
-use raytree::scene::source::SceneRef;
-use raytree::tree::document::Trace;
+use raytree::scene::source::SceneSource;
+use raytree::tree::document::TraceDocument;
 use raytree::views::diagram::{Labels, Options, draw};
 use raytree::views::figure::{Figure, palette};
 use raytree::views::projection::{Outline, Projection, View};
 
-fn whitted_figure(x: u32, y: u32, options: &Options) -> (raytree::scene::Scene, Trace, Figure) {
+fn whitted_figure(
+    x: u32,
+    y: u32,
+    options: &Options,
+) -> (raytree::scene::Scene, TraceDocument, Figure) {
     let scene = raytree::scene::loader::whitted();
-    let trace =
-        raytree::tree::record::pixel(&scene, SceneRef::new("scenes/whitted.json", ""), x, y, None)
-            .unwrap();
+    let trace = raytree::tree::record::pixel(
+        &scene,
+        SceneSource::new("scenes/whitted.json", ""),
+        x,
+        y,
+        None,
+    )
+    .unwrap();
     let figure = draw(&trace, &scene, options).unwrap();
     (scene, trace, figure)
 }

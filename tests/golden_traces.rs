@@ -15,8 +15,8 @@ use std::path::PathBuf;
 
 use glam::DVec3;
 use raytree::math::ray::Ray;
-use raytree::scene::source::SceneRef;
-use raytree::tree::document::Trace;
+use raytree::scene::source::SceneSource;
+use raytree::tree::document::TraceDocument;
 use serde_json::Value;
 
 const REL_TOL: f64 = 1e-9;
@@ -88,14 +88,14 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn trace(g: &Golden) -> Trace {
+fn trace(g: &Golden) -> TraceDocument {
     let file = format!("scenes/{}", g.scene);
     let text = std::fs::read_to_string(root().join(&file)).unwrap();
     let mut scene = raytree::scene::loader::parse(&text, &file).unwrap();
     if let Some(spp) = g.spp {
         scene.settings.spp = spp;
     }
-    let source = SceneRef::new(&file, &text);
+    let source = SceneSource::new(&file, &text);
     match g.target {
         Target::Pixel(x, y) => raytree::tree::record::pixel(&scene, source, x, y, None).unwrap(),
         Target::Ray(o, d) => {
@@ -157,7 +157,7 @@ fn golden_traces_still_hold() {
         }
         let text = std::fs::read_to_string(&path)
             .unwrap_or_else(|e| panic!("{}: {e} (make it with RAYTREE_BLESS=1)", path.display()));
-        let golden: Trace = serde_json::from_str(&text)
+        let golden: TraceDocument = serde_json::from_str(&text)
             .unwrap_or_else(|e| panic!("{}: not a trace: {e}", path.display()));
         if golden.scene.hash != fresh.scene.hash {
             failures.push(format!("{}: scenes/{} changed since the golden was made (re-bless after checking the change)", g.name, g.scene));
@@ -181,39 +181,33 @@ fn golden_traces_still_hold() {
 #[test]
 fn golden_traces_show_what_they_are_named_for() {
     use raytree::trace::recorder::{Branch, RayKind};
-    use raytree::tree::ray_tree::Outcome;
-    let load = |name: &str| -> Trace {
+    use raytree::tree::ray_tree::ShadowOutcomeRecord;
+    let load = |name: &str| -> TraceDocument {
         serde_json::from_str(
             &std::fs::read_to_string(root().join("tests/traces").join(format!("{name}.json")))
                 .unwrap(),
         )
         .unwrap()
     };
-    let root_node = |t: &Trace| t.samples[0].tree.nodes[0].clone();
+    let root_node = |t: &TraceDocument| t.samples[0].tree.nodes[0].clone();
 
     let diffuse = root_node(&load("whitted-diffuse"));
     assert_eq!(diffuse.hit.as_ref().unwrap().name, "floor");
-    assert!(
-        diffuse
-            .shadow_rays
-            .iter()
-            .all(|s| matches!(s.outcome, Outcome::Reaches { transmitted } if transmitted == 1.0))
-    );
+    assert!(diffuse.shadow_rays.iter().all(
+        |s| matches!(s.outcome, ShadowOutcomeRecord::Reaches { transmitted } if transmitted == 1.0)
+    ));
 
     let through_glass = root_node(&load("whitted-glass-shadow"));
-    assert!(
-        through_glass
-            .shadow_rays
-            .iter()
-            .all(|s| matches!(s.outcome, Outcome::Reaches { transmitted } if transmitted == 0.88))
-    );
+    assert!(through_glass.shadow_rays.iter().all(
+        |s| matches!(s.outcome, ShadowOutcomeRecord::Reaches { transmitted } if transmitted == 0.88)
+    ));
 
     let shadow = root_node(&load("whitted-shadow"));
     assert!(
         shadow
             .shadow_rays
             .iter()
-            .all(|s| matches!(s.outcome, Outcome::Blocked { .. }))
+            .all(|s| matches!(s.outcome, ShadowOutcomeRecord::Blocked { .. }))
     );
 
     let mirror = load("whitted-mirror");

@@ -8,7 +8,7 @@ use ratatui::crossterm::event::{
 };
 use ratatui::layout::Rect;
 use raytree::inspector::{App, Areas, Focus, Item, draw};
-use raytree::scene::source::SceneRef;
+use raytree::scene::source::SceneSource;
 
 fn key(app: &mut App, code: KeyCode) {
     app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
@@ -24,7 +24,7 @@ fn keys(app: &mut App, text: &str) {
 fn app_at(pixel: Option<(u32, u32)>) -> App {
     let mut app = App::new(
         raytree::scene::loader::whitted(),
-        SceneRef::new("scenes/whitted.json", ""),
+        SceneSource::new("scenes/whitted.json", ""),
         pixel,
         false,
     );

@@ -11,19 +11,19 @@ use indicatif::ProgressBar;
 use raytree::math::ray::Ray;
 use raytree::methods::Antialiasing;
 use raytree::scene::Scene;
-use raytree::scene::source::SceneRef;
+use raytree::scene::source::SceneSource;
 use raytree::trace::recorder::Branch;
 use raytree::trace::render::render;
-use raytree::tree::document::Trace;
+use raytree::tree::document::TraceDocument;
 use raytree::tree::ray_tree::RayTree;
 use raytree::tree::steps::StepKind;
 
-fn source(name: &str) -> SceneRef {
-    SceneRef::new(&format!("scenes/{name}"), "")
+fn source(name: &str) -> SceneSource {
+    SceneSource::new(&format!("scenes/{name}"), "")
 }
 
 /// Traces of a coarse grid of pixels of every shipped scene at 160×120.
-fn grid_traces() -> Vec<(String, Scene, Trace)> {
+fn grid_traces() -> Vec<(String, Scene, TraceDocument)> {
     let mut out = Vec::new();
     for (name, mut scene) in common::shipped() {
         scene.settings.width = 160;
@@ -195,13 +195,14 @@ fn json_reads_back_exactly() {
     .unwrap();
     for trace in [pixel, ray] {
         // Compared as values so a failure names the field rather than printing two trees.
-        let back: Trace = serde_json::from_str(&trace.to_json()).unwrap();
+        let back: TraceDocument = serde_json::from_str(&trace.to_json()).unwrap();
         assert!(
             back == trace,
             "pretty JSON changed a value: {:?}",
             first_difference(&back, &trace)
         );
-        let compact: Trace = serde_json::from_str(&serde_json::to_string(&trace).unwrap()).unwrap();
+        let compact: TraceDocument =
+            serde_json::from_str(&serde_json::to_string(&trace).unwrap()).unwrap();
         assert!(
             compact == trace,
             "compact JSON changed a value: {:?}",
@@ -211,7 +212,7 @@ fn json_reads_back_exactly() {
 }
 
 /// The path and values of the first field where two traces differ.
-fn first_difference(a: &Trace, b: &Trace) -> Option<String> {
+fn first_difference(a: &TraceDocument, b: &TraceDocument) -> Option<String> {
     fn walk(a: &serde_json::Value, b: &serde_json::Value, path: String) -> Option<String> {
         use serde_json::Value::{Array, Object};
         match (a, b) {
@@ -243,7 +244,7 @@ fn reading_rejects_unknown_fields() {
         "\"format\": \"raytree-trace\", \"extra\": 0,",
         1,
     );
-    let err = serde_json::from_str::<Trace>(&text)
+    let err = serde_json::from_str::<TraceDocument>(&text)
         .unwrap_err()
         .to_string();
     assert!(err.contains("unknown field `extra`"), "{err}");
@@ -259,7 +260,7 @@ fn every_field_is_documented() {
     .unwrap();
     let scene = raytree::scene::loader::whitted();
     let src = source("whitted.json");
-    let mut traces: Vec<Trace> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
+    let mut traces: Vec<TraceDocument> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
         .iter()
         .map(|&(x, y)| raytree::tree::record::pixel(&scene, src.clone(), x, y, None).unwrap())
         .collect();
@@ -398,7 +399,7 @@ fn step_texts_carry_their_numbers() {
         .find(|t| t.starts_with("shadow ray to light 'key': blocked by 'mirror' at t = "))
         .expect("the key light is blocked by the mirror");
     let t = match &trace.samples[0].tree.nodes[0].shadow_rays[0].outcome {
-        raytree::tree::ray_tree::Outcome::Blocked { t, .. } => *t,
+        raytree::tree::ray_tree::ShadowOutcomeRecord::Blocked { t, .. } => *t,
         other => panic!("{other:?}"),
     };
     assert!(

@@ -29,7 +29,7 @@ mod common;
 use common::scene;
 use glam::{DQuat, DVec3};
 use raytree::methods::Offset;
-use raytree::trace::recorder::{HitInfo, Recorder, ShadowInfo, ShadowOutcome};
+use raytree::trace::recorder::{HitEvent, Recorder, ShadowEvent, ShadowOutcome};
 use raytree::trace::tracer::Tracer;
 
 const GAP: f64 = 1e-4;
@@ -107,16 +107,16 @@ fn passes_near_egg(p: DVec3) -> bool {
 /// Keeps the primary hit and its first shadow ray.
 #[derive(Default)]
 struct FirstHit {
-    hit: Option<HitInfo>,
-    shadow: Option<ShadowInfo>,
+    hit: Option<HitEvent>,
+    shadow: Option<ShadowEvent>,
 }
 
 impl Recorder for FirstHit {
     const ENABLED: bool = false;
-    fn hit(&mut self, hit: &HitInfo) {
+    fn hit(&mut self, hit: &HitEvent) {
         self.hit.get_or_insert(*hit);
     }
-    fn shadow_ray(&mut self, shadow: &ShadowInfo) {
+    fn shadow_ray(&mut self, shadow: &ShadowEvent) {
         self.shadow.get_or_insert(*shadow);
     }
 }
@@ -480,7 +480,7 @@ fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
         else {
             continue;
         };
-        let surface = object.surface(&ray, t, 0, s.settings.intersection());
+        let surface = object.surface(&ray, t, 0, s.settings.intersection_methods());
         let turn = DQuat::from_rotation_z(30f64.to_radians());
         let q = turn.inverse() * surface.point;
         let analytic = turn * DVec3::new(q.x, q.y / 1e-8, q.z);

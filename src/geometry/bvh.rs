@@ -16,7 +16,8 @@ use std::ops::ControlFlow;
 
 use glam::DVec3;
 
-use crate::math::bounds::{Aabb, RayBox};
+use crate::geometry::hit::TestCounts;
+use crate::math::bounds::{Bounds, RayBox};
 
 /// Candidate split planes per node.
 pub const BINS: usize = 16;
@@ -25,30 +26,12 @@ pub const MAX_LEAF: usize = 4;
 /// Cost of a box test relative to a primitive test, for the heuristic.
 const TRAVERSAL_COST: f64 = 0.5;
 
-/// How much work a ray cost: what the hierarchy saved shows in these counts.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
-#[serde(deny_unknown_fields)]
-pub struct Tested {
-    /// Bounding boxes tested.
-    pub boxes: u32,
-    /// Primitives tested: objects, and the triangles of meshes.
-    pub primitives: u32,
-}
-
-impl Tested {
-    /// Adds another count.
-    pub fn add(&mut self, other: Tested) {
-        self.boxes += other.boxes;
-        self.primitives += other.primitives;
-    }
-}
-
 /// One node of the flattened tree, aligned to a cache line so visiting a node
 /// never waits for two lines from memory (56 bytes would straddle half of them).
 #[derive(Clone, Copy, Debug, PartialEq)]
 #[repr(align(64))]
 struct Node {
-    bounds: Aabb,
+    bounds: Bounds,
     /// Leaf: first index into `order`. Interior: index of the second child.
     offset: u32,
     /// Primitives in a leaf; 0 for an interior node.
@@ -68,14 +51,14 @@ pub struct Bvh {
 /// A primitive while building: its box and its box's center.
 #[derive(Clone, Copy)]
 struct Item {
-    bounds: Aabb,
+    bounds: Bounds,
     centroid: DVec3,
     index: u32,
 }
 
 impl Bvh {
     /// Builds the hierarchy over primitives with these (non-empty) bounds.
-    pub fn build(bounds: &[Aabb]) -> Bvh {
+    pub fn build(bounds: &[Bounds]) -> Bvh {
         let mut items: Vec<Item> = bounds
             .iter()
             .enumerate()
@@ -97,8 +80,8 @@ impl Bvh {
 
     /// Appends the subtree over `items` depth-first; returns its index.
     fn build_node(&mut self, items: &mut [Item]) -> usize {
-        let bounds = items.iter().fold(Aabb::EMPTY, |b, it| b.union(it.bounds));
-        let centroids = Aabb::around(items.iter().map(|it| it.centroid));
+        let bounds = items.iter().fold(Bounds::EMPTY, |b, it| b.union(it.bounds));
+        let centroids = Bounds::around(items.iter().map(|it| it.centroid));
         let at = self.nodes.len();
         self.nodes.push(Node {
             bounds,
@@ -166,8 +149,8 @@ impl Bvh {
     }
 
     /// The box around everything.
-    pub fn bounds(&self) -> Aabb {
-        self.nodes.first().map_or(Aabb::EMPTY, |n| n.bounds)
+    pub fn bounds(&self) -> Bounds {
+        self.nodes.first().map_or(Bounds::EMPTY, |n| n.bounds)
     }
 
     /// Calls `visit(primitive, t_max)` for every primitive in a leaf whose box the
@@ -180,7 +163,7 @@ impl Bvh {
         ray: &RayBox,
         t_min: f64,
         t_max: &mut f64,
-        tested: &mut Tested,
+        tested: &mut TestCounts,
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         if self.nodes.is_empty() {
@@ -222,12 +205,17 @@ impl Bvh {
 
 /// The index that splits `items` (partitioned in place) at the binned SAH's best
 /// plane along `axis`, or `None` when a leaf is expected to be cheaper.
-fn sah_split(items: &mut [Item], bounds: &Aabb, centroids: &Aabb, axis: usize) -> Option<usize> {
+fn sah_split(
+    items: &mut [Item],
+    bounds: &Bounds,
+    centroids: &Bounds,
+    axis: usize,
+) -> Option<usize> {
     let lo = centroids.min[axis];
     let scale = BINS as f64 / (centroids.max[axis] - lo);
     let bin_of = |c: DVec3| (((c[axis] - lo) * scale) as usize).min(BINS - 1);
     let mut count = [0usize; BINS];
-    let mut boxes = [Aabb::EMPTY; BINS];
+    let mut boxes = [Bounds::EMPTY; BINS];
     for it in items.iter() {
         let b = bin_of(it.centroid);
         count[b] += 1;
@@ -235,13 +223,13 @@ fn sah_split(items: &mut [Item], bounds: &Aabb, centroids: &Aabb, axis: usize) -
     }
     // Cost of splitting after bin i: sweep from the right, then from the left.
     let mut right_cost = [0.0; BINS];
-    let (mut acc, mut n) = (Aabb::EMPTY, 0);
+    let (mut acc, mut n) = (Bounds::EMPTY, 0);
     for i in (1..BINS).rev() {
         acc = acc.union(boxes[i]);
         n += count[i];
         right_cost[i - 1] = n as f64 * acc.area();
     }
-    let (mut acc, mut n) = (Aabb::EMPTY, 0);
+    let (mut acc, mut n) = (Bounds::EMPTY, 0);
     let mut best = (f64::INFINITY, 0);
     for i in 0..BINS - 1 {
         acc = acc.union(boxes[i]);
@@ -272,15 +260,15 @@ mod tests {
     use super::*;
     use crate::math::ray::Ray;
 
-    fn cube(at: DVec3) -> Aabb {
-        Aabb {
+    fn cube(at: DVec3) -> Bounds {
+        Bounds {
             min: at - 0.25,
             max: at + 0.25,
         }
     }
 
     /// 1,000 small cubes on a 10 × 10 × 10 grid of spacing 1.
-    fn ten_by_ten_by_ten() -> Vec<Aabb> {
+    fn ten_by_ten_by_ten() -> Vec<Bounds> {
         (0..1000)
             .map(|i| {
                 cube(DVec3::new(
@@ -293,7 +281,7 @@ mod tests {
     }
 
     /// Every primitive a brute-force slab test says the ray meets.
-    fn met(boxes: &[Aabb], ray: &Ray) -> Vec<usize> {
+    fn met(boxes: &[Bounds], ray: &Ray) -> Vec<usize> {
         let rb = RayBox::new(ray);
         (0..boxes.len())
             .filter(|&i| rb.hits(&boxes[i], 0.0, f64::INFINITY))
@@ -316,7 +304,7 @@ mod tests {
         let bvh = Bvh::build(&boxes);
         let ray = Ray::new(DVec3::new(-1.0, 4.1, 3.9), DVec3::new(1.0, 0.01, 0.02));
         let mut visited = Vec::new();
-        let mut tested = Tested::default();
+        let mut tested = TestCounts::default();
         let _ = bvh.traverse(
             &RayBox::new(&ray),
             0.0,
@@ -341,7 +329,7 @@ mod tests {
 
     #[test]
     fn breaking_stops_the_traversal() {
-        let boxes: Vec<Aabb> = (0..100)
+        let boxes: Vec<Bounds> = (0..100)
             .map(|i| cube(DVec3::new(i as f64, 0.0, 0.0)))
             .collect();
         let bvh = Bvh::build(&boxes);
@@ -351,7 +339,7 @@ mod tests {
             &RayBox::new(&ray),
             0.0,
             &mut { f64::INFINITY },
-            &mut Tested::default(),
+            &mut TestCounts::default(),
             |_, _| {
                 visited += 1;
                 ControlFlow::Break(())

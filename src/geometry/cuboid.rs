@@ -4,20 +4,20 @@
 use glam::DVec3;
 
 use crate::geometry::hit::{Roots, Surface};
-use crate::math::bounds::Aabb;
+use crate::math::bounds::Bounds;
 use crate::math::float::gamma;
 use crate::math::ray::Ray;
 
 /// The solid box `min ≤ p ≤ max`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct AlignedBox {
+pub struct Cuboid {
     /// The smallest corner.
     pub min: DVec3,
     /// The largest corner, greater than `min` on every axis.
     pub max: DVec3,
 }
 
-impl AlignedBox {
+impl Cuboid {
     /// The slab method (Kay & Kajiya 1986): on each axis the ray is between the two
     /// planes for `t` in `[(min - S)/c, (max - S)/c]` (ordered); it is inside the box
     /// where all three intervals overlap, entering at the largest start and leaving
@@ -76,8 +76,8 @@ impl AlignedBox {
     }
 
     /// Its own bounds.
-    pub fn bounds(&self) -> Aabb {
-        Aabb {
+    pub fn bounds(&self) -> Bounds {
+        Bounds {
             min: self.min,
             max: self.max,
         }
@@ -88,8 +88,8 @@ impl AlignedBox {
 mod tests {
     use super::*;
 
-    fn unit() -> AlignedBox {
-        AlignedBox {
+    fn unit() -> Cuboid {
+        Cuboid {
             min: DVec3::splat(-1.0),
             max: DVec3::ONE,
         }

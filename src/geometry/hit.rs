@@ -12,8 +12,8 @@ use crate::methods::Offset;
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Roots {
     len: u8,
-    /// Which part of a compound object the root belongs to: a mesh's face.
-    part: u32,
+    /// Which face of a mesh the root belongs to (0 for other shapes).
+    face: u32,
     t: [f64; 2],
 }
 
@@ -21,7 +21,7 @@ impl Roots {
     /// No intersection.
     pub const NONE: Roots = Roots {
         len: 0,
-        part: 0,
+        face: 0,
         t: [0.0; 2],
     };
 
@@ -29,30 +29,30 @@ impl Roots {
     pub fn one(t: f64) -> Self {
         Roots {
             len: 1,
-            part: 0,
+            face: 0,
             t: [t, 0.0],
         }
     }
 
-    /// One root on part `part` of a compound object (a mesh's nearest face).
-    pub fn on_part(t: f64, part: u32) -> Self {
+    /// One root on face `face` of a mesh (its nearest face).
+    pub fn on_face(t: f64, face: u32) -> Self {
         Roots {
             len: 1,
-            part,
+            face,
             t: [t, 0.0],
         }
     }
 
-    /// The part the roots belong to (0 for a simple shape).
-    pub fn part(&self) -> u32 {
-        self.part
+    /// The mesh face the roots belong to (0 for other shapes).
+    pub fn face(&self) -> u32 {
+        self.face
     }
 
     /// Two roots, in any order.
     pub fn two(a: f64, b: f64) -> Self {
         Roots {
             len: 2,
-            part: 0,
+            face: 0,
             t: [a.min(b), a.max(b)],
         }
     }
@@ -73,6 +73,17 @@ impl Roots {
     }
 }
 
+/// What an intersection search wants: the closest hit (a camera, reflected or
+/// refracted ray), or any hit at all (a shadow ray asks only whether something
+/// is in the way, so a mesh may stop at its first face).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Search {
+    /// The nearest root.
+    Closest,
+    /// The first root found.
+    Any,
+}
+
 /// The surface at a kept hit, in whichever space it was computed.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Surface {
@@ -89,6 +100,24 @@ pub struct Surface {
     /// Where a pattern (the checkerboard) is evaluated: the object-space point,
     /// flattened onto the plane for planes so squares never flicker.
     pub pattern_point: DVec3,
+}
+
+/// How much work a ray cost: what the hierarchy saved shows in these counts.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct TestCounts {
+    /// Bounding boxes tested.
+    pub boxes: u32,
+    /// Primitives tested: objects, and the triangles of meshes.
+    pub primitives: u32,
+}
+
+impl TestCounts {
+    /// Adds another count.
+    pub fn add(&mut self, other: TestCounts) {
+        self.boxes += other.boxes;
+        self.primitives += other.primitives;
+    }
 }
 
 impl Surface {

@@ -5,10 +5,11 @@ use std::ops::ControlFlow;
 
 use glam::DVec3;
 
-use crate::geometry::bvh::{Bvh, Tested};
-use crate::geometry::hit::{Roots, Surface};
+use crate::geometry::bvh::Bvh;
+
+use crate::geometry::hit::{Roots, Search, Surface, TestCounts};
 use crate::geometry::triangle::{ShearedRay, Triangle, TriangleHit};
-use crate::math::bounds::{Aabb, RayBox};
+use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;
 use crate::methods::TriangleMethod;
 
@@ -42,10 +43,10 @@ impl Mesh {
             face_normals,
             bvh: Bvh::build(&[]),
         };
-        let bounds: Vec<Aabb> = (0..mesh.faces.len())
+        let bounds: Vec<Bounds> = (0..mesh.faces.len())
             .map(|f| {
                 let t = mesh.triangle(f);
-                Aabb::around([t.a, t.b, t.c])
+                Bounds::around([t.a, t.b, t.c])
             })
             .collect();
         mesh.bvh = Bvh::build(&bounds);
@@ -64,7 +65,7 @@ impl Mesh {
     }
 
     /// The box around the mesh.
-    pub fn bounds(&self) -> Aabb {
+    pub fn bounds(&self) -> Bounds {
         self.bvh.bounds()
     }
 
@@ -73,16 +74,16 @@ impl Mesh {
         &self.bvh
     }
 
-    /// The nearest hit in `(0, t_max)` as a root whose part is the face; with
-    /// `any`, the first hit found (enough for a shadow ray).
+    /// The nearest hit in `(0, t_max)` as a root on its face; with
+    /// [`Search::Any`], the first hit found (enough for a shadow ray).
     #[inline(never)]
     pub fn roots(
         &self,
         ray: &Ray,
         method: TriangleMethod,
         mut t_max: f64,
-        any: bool,
-        tested: &mut Tested,
+        search: Search,
+        tested: &mut TestCounts,
     ) -> Roots {
         let sheared = ShearedRay::new(ray);
         let mut nearest = None;
@@ -94,14 +95,14 @@ impl Mesh {
                 if let Some(hit) = self.hit_face(face, ray, &sheared, method, *t_max) {
                     *t_max = hit.t;
                     nearest = Some((hit.t, face));
-                    if any {
+                    if search == Search::Any {
                         return ControlFlow::Break(());
                     }
                 }
                 ControlFlow::Continue(())
             });
         tested.primitives += faces;
-        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_part(t, face as u32))
+        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_face(t, face as u32))
     }
 
     #[inline]
@@ -164,16 +165,16 @@ mod tests {
     fn finds_the_face_and_its_surface() {
         let m = square();
         let ray = Ray::new(DVec3::new(0.2, 0.7, 1.0), DVec3::NEG_Z);
-        let mut tested = Tested::default();
+        let mut tested = TestCounts::default();
         let roots = m.roots(
             &ray,
             TriangleMethod::Watertight,
             f64::INFINITY,
-            false,
+            Search::Closest,
             &mut tested,
         );
         assert_eq!(roots.as_slice(), &[1.0]);
-        assert_eq!(roots.part(), 1);
+        assert_eq!(roots.face(), 1);
         assert!(tested.primitives >= 1 && tested.boxes >= 1);
         let s = m.surface(&ray, 1.0, 1, TriangleMethod::Watertight);
         assert_eq!(s.normal, DVec3::Z);
@@ -184,8 +185,14 @@ mod tests {
     fn t_max_cuts_the_search() {
         let m = square();
         let ray = Ray::new(DVec3::new(0.2, 0.7, 1.0), DVec3::NEG_Z);
-        let mut tested = Tested::default();
-        let roots = m.roots(&ray, TriangleMethod::Watertight, 0.5, false, &mut tested);
+        let mut tested = TestCounts::default();
+        let roots = m.roots(
+            &ray,
+            TriangleMethod::Watertight,
+            0.5,
+            Search::Closest,
+            &mut tested,
+        );
         assert!(roots.as_slice().is_empty());
     }
 }

@@ -4,17 +4,16 @@ use std::sync::Arc;
 
 use glam::DVec3;
 
-use crate::geometry::bvh::Tested;
-use crate::geometry::cuboid::AlignedBox;
-use crate::geometry::hit::{Roots, Surface};
+use crate::geometry::cuboid::Cuboid;
+use crate::geometry::hit::{Roots, Search, Surface, TestCounts};
 use crate::geometry::mesh::Mesh;
 use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::{ShearedRay, Triangle};
-use crate::math::bounds::Aabb;
+use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
-use crate::methods::{Intersection, SphereMethod, TriangleMethod};
+use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
 
 /// The primitive shapes, in their own (object) space.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,7 +23,7 @@ pub enum Shape {
     /// An infinite plane bounding a half-space.
     Plane(Plane),
     /// An axis-aligned box.
-    Box(AlignedBox),
+    Box(Cuboid),
     /// A single triangle.
     Triangle(Triangle),
     /// A triangle mesh (shared: scenes are cloned, meshes can be large).
@@ -33,16 +32,16 @@ pub enum Shape {
 
 impl Shape {
     /// The roots of the ray with the shape in `(0, t_max)` as far as a mesh is
-    /// concerned (its nearest face, or with `any` the first found); every root for
+    /// concerned (its nearest face, or with [`Search::Any`] the first found); every root for
     /// the other shapes. Primitive and box tests are counted in `tested`.
     #[inline]
     pub fn roots(
         &self,
         ray: &Ray,
-        methods: Intersection,
+        methods: IntersectionMethods,
         t_max: f64,
-        any: bool,
-        tested: &mut Tested,
+        search: Search,
+        tested: &mut TestCounts,
     ) -> Roots {
         // The analytic shapes inline into the tracer's loop; meshes and single
         // triangles stay out of line so they do not bloat it.
@@ -67,12 +66,12 @@ impl Shape {
                 tested.primitives += 1;
                 triangle_roots(tri, ray, methods.triangle)
             }
-            Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, any, tested),
+            Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, search, tested),
         }
     }
 
-    /// The surface at `ray.at(t)`; `part` is the root's part (a mesh's face).
-    pub fn surface(&self, ray: &Ray, t: f64, part: u32, methods: Intersection) -> Surface {
+    /// The surface at `ray.at(t)`; `face` is the root's mesh face (see [`Roots::face`]).
+    pub fn surface(&self, ray: &Ray, t: f64, face: u32, methods: IntersectionMethods) -> Surface {
         match self {
             Shape::Sphere(s) => s.surface(ray, t),
             Shape::Plane(p) => p.surface(ray, t),
@@ -84,7 +83,7 @@ impl Shape {
                 };
                 tri.surface(&hit, None)
             }
-            Shape::Mesh(m) => m.surface(ray, t, part as usize, methods.triangle),
+            Shape::Mesh(m) => m.surface(ray, t, face as usize, methods.triangle),
         }
     }
 
@@ -100,15 +99,15 @@ impl Shape {
     }
 
     /// The box around the shape in its own space; `None` for a plane.
-    pub fn bounds(&self) -> Option<Aabb> {
+    pub fn bounds(&self) -> Option<Bounds> {
         match self {
-            Shape::Sphere(s) => Some(Aabb {
+            Shape::Sphere(s) => Some(Bounds {
                 min: s.center - s.radius,
                 max: s.center + s.radius,
             }),
             Shape::Plane(_) => None,
             Shape::Box(b) => Some(b.bounds()),
-            Shape::Triangle(t) => Some(Aabb::around([t.a, t.b, t.c])),
+            Shape::Triangle(t) => Some(Bounds::around([t.a, t.b, t.c])),
             Shape::Mesh(m) => Some(m.bounds()),
         }
     }
@@ -163,13 +162,13 @@ pub struct Object {
 
 impl Object {
     /// Every root of a world ray with the object; `t` refers to the world ray.
-    pub fn roots(&self, ray: &Ray, methods: impl Into<Intersection>) -> Roots {
+    pub fn roots(&self, ray: &Ray, methods: impl Into<IntersectionMethods>) -> Roots {
         self.roots_within(
             ray,
             methods.into(),
             f64::INFINITY,
-            false,
-            &mut Tested::default(),
+            Search::Closest,
+            &mut TestCounts::default(),
         )
     }
 
@@ -178,25 +177,25 @@ impl Object {
     pub fn roots_within(
         &self,
         ray: &Ray,
-        methods: Intersection,
+        methods: IntersectionMethods,
         t_max: f64,
-        any: bool,
-        tested: &mut Tested,
+        search: Search,
+        tested: &mut TestCounts,
     ) -> Roots {
         match &self.transform {
-            None => self.shape.roots(ray, methods, t_max, any, tested),
+            None => self.shape.roots(ray, methods, t_max, search, tested),
             Some(tf) => self
                 .shape
-                .roots(&tf.ray_to_object(ray), methods, t_max, any, tested),
+                .roots(&tf.ray_to_object(ray), methods, t_max, search, tested),
         }
     }
 
-    /// The world-space surface at `ray.at(t)` on part `part` (see [`Roots::part`]).
-    pub fn surface(&self, ray: &Ray, t: f64, part: u32, methods: Intersection) -> Surface {
+    /// The world-space surface at `ray.at(t)` on mesh face `face` (see [`Roots::face`]).
+    pub fn surface(&self, ray: &Ray, t: f64, face: u32, methods: IntersectionMethods) -> Surface {
         match &self.transform {
-            None => self.shape.surface(ray, t, part, methods),
+            None => self.shape.surface(ray, t, face, methods),
             Some(tf) => {
-                tf.surface_to_world(self.shape.surface(&tf.ray_to_object(ray), t, part, methods))
+                tf.surface_to_world(self.shape.surface(&tf.ray_to_object(ray), t, face, methods))
             }
         }
     }
@@ -210,7 +209,7 @@ impl Object {
     }
 
     /// The world-space box around the object; `None` for an unbounded plane.
-    pub fn bounds(&self) -> Option<Aabb> {
+    pub fn bounds(&self) -> Option<Bounds> {
         let b = self.shape.bounds()?;
         Some(match &self.transform {
             None => b,

@@ -12,9 +12,9 @@ use ratatui::layout::Rect;
 
 use super::preview::{Picture, Window, Worker};
 use crate::scene::Scene;
-use crate::scene::source::SceneRef;
+use crate::scene::source::SceneSource;
 use crate::trace::recorder::Branch;
-use crate::tree::document::Trace;
+use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
 
 /// Which pane the arrow keys drive.
@@ -58,13 +58,13 @@ pub struct App {
     /// The scene, when known (a saved trace may come without it).
     pub scene: Option<Arc<Scene>>,
     /// Names the scene in traces.
-    pub source: SceneRef,
+    pub source: SceneSource,
     /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
     pub cursor: (u32, u32),
     /// Zoom level: 0 fits the whole image; each level doubles the magnification.
     pub zoom: u32,
     /// The selected pixel's trace.
-    pub trace: Option<Trace>,
+    pub trace: Option<TraceDocument>,
     /// Nodes whose children are shown.
     pub expanded: BTreeSet<usize>,
     /// The selected line of the tree pane.
@@ -98,7 +98,7 @@ pub struct App {
 impl App {
     /// An inspector on `scene`, the cursor at `start` (or the center). `live`
     /// starts the preview worker; tests leave it off and call [`App::render_picture_now`].
-    pub fn new(scene: Scene, source: SceneRef, start: Option<(u32, u32)>, live: bool) -> Self {
+    pub fn new(scene: Scene, source: SceneSource, start: Option<(u32, u32)>, live: bool) -> Self {
         let s = scene.settings;
         let scene = Arc::new(scene);
         let worker = live.then(|| Worker::start(Arc::clone(&scene)));
@@ -108,7 +108,7 @@ impl App {
     }
 
     /// An inspector on a saved trace; `scene` is the scene it names, when found.
-    pub fn from_trace(trace: Trace, scene: Option<Scene>, live: bool) -> Self {
+    pub fn from_trace(trace: TraceDocument, scene: Option<Scene>, live: bool) -> Self {
         let scene = scene.map(Arc::new);
         let worker = if live {
             scene.as_ref().map(|s| Worker::start(Arc::clone(s)))
@@ -128,7 +128,7 @@ impl App {
         app
     }
 
-    fn empty(scene: Option<Arc<Scene>>, source: SceneRef, worker: Option<Worker>) -> Self {
+    fn empty(scene: Option<Arc<Scene>>, source: SceneSource, worker: Option<Worker>) -> Self {
         Self {
             scene,
             source,
@@ -183,7 +183,7 @@ impl App {
         }
     }
 
-    fn set_trace(&mut self, trace: Trace) {
+    fn set_trace(&mut self, trace: TraceDocument) {
         self.steps = trace.steps(0);
         self.trace = Some(trace);
         self.expanded = BTreeSet::from([0]);
@@ -505,7 +505,7 @@ impl App {
     /// Traces the picture of the current window here and now (tests, benchmarks).
     pub fn render_picture_now(&mut self) {
         if let Some(scene) = &self.scene {
-            self.picture = super::preview::trace_picture(scene, self.window(), 1, &|| false);
+            self.picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
         }
     }
 

@@ -24,7 +24,7 @@ use ratatui::crossterm::terminal::{
 };
 
 pub use app::{App, Areas, Focus, Item};
-pub use preview::{Picture, Window, trace_picture};
+pub use preview::{Picture, Window, render_picture};
 pub use ui::{KEYS, draw, truecolor};
 
 static ACTIVE: AtomicBool = AtomicBool::new(false);

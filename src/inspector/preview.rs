@@ -62,7 +62,7 @@ pub struct Picture {
 /// Traces the picture for `window`: pass 0 traces one dot in every 4 × 4 block
 /// and fills the block; pass 1 traces every dot. Stops early (returns `None`)
 /// when `cancelled` says a newer window is wanted.
-pub fn trace_picture(
+pub fn render_picture(
     scene: &Scene,
     window: Window,
     pass: u8,
@@ -140,7 +140,7 @@ impl Worker {
                 let mine = newest.load(Ordering::SeqCst);
                 let stale = || newest.load(Ordering::SeqCst) != mine;
                 for pass in 0..2 {
-                    match trace_picture(&scene, window, pass, &stale) {
+                    match render_picture(&scene, window, pass, &stale) {
                         Some(p) => {
                             if outbox.send(p).is_err() {
                                 return;
@@ -210,13 +210,13 @@ mod tests {
             cols: 40,
             rows: 30,
         };
-        let coarse = trace_picture(&scene, window, 0, &|| false).unwrap();
-        let fine = trace_picture(&scene, window, 1, &|| false).unwrap();
+        let coarse = render_picture(&scene, window, 0, &|| false).unwrap();
+        let fine = render_picture(&scene, window, 1, &|| false).unwrap();
         assert!(coarse.dots.iter().all(Option::is_some) && fine.dots.iter().all(Option::is_some));
         assert!(!coarse.complete && fine.complete);
         // The coarse pass is exact on the dots it traced.
         assert_eq!(coarse.dots[4 * 40 + 8], fine.dots[4 * 40 + 8]);
         // A cancelled pass gives nothing.
-        assert!(trace_picture(&scene, window, 1, &|| true).is_none());
+        assert!(render_picture(&scene, window, 1, &|| true).is_none());
     }
 }

@@ -14,7 +14,7 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 
 use super::app::{App, Areas, Focus, Item};
 use crate::io::image::rgb8;
-use crate::tree::ray_tree::{Outcome, RayNode};
+use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::tree::steps::kind_name;
 use crate::views::diagram::{Options, layout};
 use crate::views::figure::{Rgb, clip_line, clip_ray, clip_segment, palette};
@@ -232,12 +232,16 @@ fn ray_line(app: &App, node: &RayNode, n: usize, tc: bool) -> Vec<Span<'static>>
 fn shadow_text(node: &RayNode, k: usize) -> String {
     let s = &node.shadow_rays[k];
     let what = match &s.outcome {
-        Outcome::FacesAway => "faces away".to_owned(),
-        Outcome::Reaches { transmitted } if *transmitted == 1.0 => "reaches the light".to_owned(),
-        Outcome::Reaches { transmitted } => {
+        ShadowOutcomeRecord::FacesAway => "faces away".to_owned(),
+        ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
+            "reaches the light".to_owned()
+        }
+        ShadowOutcomeRecord::Reaches { transmitted } => {
             format!("reaches the light, keeping {}", num(*transmitted))
         }
-        Outcome::Blocked { name, t, .. } => format!("blocked by '{name}' at t = {}", num(*t)),
+        ShadowOutcomeRecord::Blocked { name, t, .. } => {
+            format!("blocked by '{name}' at t = {}", num(*t))
+        }
     };
     format!("shadow → '{}': {what}", s.name)
 }

@@ -8,36 +8,36 @@ use crate::math::ray::Ray;
 
 /// The box `min ≤ p ≤ max`. The empty box has `min > max`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Aabb {
+pub struct Bounds {
     /// The smallest corner.
     pub min: DVec3,
     /// The largest corner.
     pub max: DVec3,
 }
 
-impl Aabb {
-    /// Contains nothing; the identity of [`Aabb::union`].
-    pub const EMPTY: Aabb = Aabb {
+impl Bounds {
+    /// Contains nothing; the identity of [`Bounds::union`].
+    pub const EMPTY: Bounds = Bounds {
         min: DVec3::INFINITY,
         max: DVec3::NEG_INFINITY,
     };
 
     /// The smallest box holding every point.
-    pub fn around(points: impl IntoIterator<Item = DVec3>) -> Aabb {
-        points.into_iter().fold(Aabb::EMPTY, Aabb::grown)
+    pub fn around(points: impl IntoIterator<Item = DVec3>) -> Bounds {
+        points.into_iter().fold(Bounds::EMPTY, Bounds::grown)
     }
 
     /// This box grown to hold `p`.
-    pub fn grown(self, p: DVec3) -> Aabb {
-        Aabb {
+    pub fn grown(self, p: DVec3) -> Bounds {
+        Bounds {
             min: self.min.min(p),
             max: self.max.max(p),
         }
     }
 
     /// The smallest box holding both.
-    pub fn union(self, other: Aabb) -> Aabb {
-        Aabb {
+    pub fn union(self, other: Bounds) -> Bounds {
+        Bounds {
             min: self.min.min(other.min),
             max: self.max.max(other.max),
         }
@@ -64,11 +64,11 @@ impl Aabb {
     }
 
     /// The box around this one carried by `m`: the eight transformed corners.
-    pub fn transformed(&self, m: &DAffine3) -> Aabb {
+    pub fn transformed(&self, m: &DAffine3) -> Bounds {
         if self.is_empty() {
             return *self;
         }
-        Aabb::around((0..8).map(|i| {
+        Bounds::around((0..8).map(|i| {
             let pick = |bit: usize, lo: f64, hi: f64| if i & bit == 0 { lo } else { hi };
             m.transform_point3(DVec3::new(
                 pick(1, self.min.x, self.max.x),
@@ -116,7 +116,7 @@ impl RayBox {
     /// §6.1.2). Plain comparisons, not `min`/`max`: a NaN (a ray lying in a slab's
     /// plane) then leaves the interval as it was, and the box is kept.
     #[inline]
-    pub fn hits(&self, b: &Aabb, t_min: f64, t_max: f64) -> bool {
+    pub fn hits(&self, b: &Bounds, t_min: f64, t_max: f64) -> bool {
         let near = DVec3::select(self.neg, b.max, b.min);
         let far = DVec3::select(self.neg, b.min, b.max);
         let t0 = (near - self.origin) * self.inv_dir;
@@ -133,8 +133,8 @@ impl RayBox {
 mod tests {
     use super::*;
 
-    fn unit() -> Aabb {
-        Aabb {
+    fn unit() -> Bounds {
+        Bounds {
             min: DVec3::ZERO,
             max: DVec3::ONE,
         }
@@ -158,7 +158,7 @@ mod tests {
     #[test]
     fn a_flat_box_is_still_hit() {
         // A triangle in the plane y = 0 has a box of zero height.
-        let flat = Aabb {
+        let flat = Bounds {
             min: DVec3::new(0.0, 0.0, 0.0),
             max: DVec3::new(1.0, 0.0, 1.0),
         };
@@ -169,7 +169,7 @@ mod tests {
     #[test]
     fn area_and_transform() {
         assert_eq!(unit().area(), 6.0);
-        assert_eq!(Aabb::EMPTY.area(), 0.0);
+        assert_eq!(Bounds::EMPTY.area(), 0.0);
         let m = DAffine3::from_rotation_z(std::f64::consts::FRAC_PI_4);
         let r = unit().transformed(&m);
         // The unit square turned 45° spans x = -√2/2..√2/2 and y = 0..√2.

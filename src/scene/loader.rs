@@ -13,7 +13,7 @@ use std::path::Path;
 use glam::{DAffine3, DVec3};
 use serde::Deserialize;
 
-use crate::geometry::cuboid::AlignedBox;
+use crate::geometry::cuboid::Cuboid;
 use crate::geometry::object::{Object, Shape};
 use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
@@ -525,7 +525,7 @@ impl Builder<'_> {
                         ),
                     ));
                 }
-                Shape::Box(AlignedBox { min, max })
+                Shape::Box(Cuboid { min, max })
             }
             _ if o.triangle.is_some() => {
                 let [a, b, c] = o.triangle.as_ref().expect("checked").vertices;

@@ -2,7 +2,7 @@
 //! recursion goes, and which method each numerical step uses.
 
 use crate::methods::{
-    Accel, Antialiasing, Intersection, Offset, SphereMethod, TriangleMethod, Weights,
+    Accel, Antialiasing, IntersectionMethods, Offset, SphereMethod, TriangleMethod, Weights,
 };
 
 /// How to render: image size, sampling, recursion limits and methods.
@@ -47,8 +47,8 @@ impl RenderSettings {
     pub const DEFAULT_CUTOFF: f64 = 1.0 / 1024.0;
 
     /// The intersection methods.
-    pub fn intersection(&self) -> Intersection {
-        Intersection {
+    pub fn intersection_methods(&self) -> IntersectionMethods {
+        IntersectionMethods {
             sphere: self.sphere,
             triangle: self.triangle,
         }

@@ -14,14 +14,14 @@ pub const BUILT_IN: &str = "whitted.json (built in)";
 /// The scene a trace came from.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct SceneRef {
+pub struct SceneSource {
     /// The scene file as given (`whitted.json (built in)` for the built-in scene).
     pub file: String,
     /// `fnv1a64:` and the 64-bit FNV-1a hash of the file's bytes, in hex.
     pub hash: String,
 }
 
-impl SceneRef {
+impl SceneSource {
     /// Names a scene file and hashes its text.
     pub fn new(file: &str, text: &str) -> Self {
         Self {
@@ -40,14 +40,14 @@ fn fnv1a64(bytes: &[u8]) -> u64 {
 
 /// Reads the scene file at `path`, or the built-in Whitted scene without one,
 /// and names it for traces.
-pub fn load(path: Option<&Path>) -> Result<(Scene, SceneRef), SceneError> {
+pub fn load(path: Option<&Path>) -> Result<(Scene, SceneSource), SceneError> {
     match path {
         Some(path) => {
             let text = loader::read(path)?;
             let name = path.display().to_string();
-            Ok((loader::parse(&text, &name)?, SceneRef::new(&name, &text)))
+            Ok((loader::parse(&text, &name)?, SceneSource::new(&name, &text)))
         }
-        None => Ok((loader::whitted(), SceneRef::new(BUILT_IN, WHITTED))),
+        None => Ok((loader::whitted(), SceneSource::new(BUILT_IN, WHITTED))),
     }
 }
 

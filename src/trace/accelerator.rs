@@ -4,8 +4,9 @@
 
 use std::ops::ControlFlow;
 
-use crate::geometry::bvh::{Bvh, Tested};
-use crate::math::bounds::{Aabb, RayBox};
+use crate::geometry::bvh::Bvh;
+use crate::geometry::hit::TestCounts;
+use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;
 use crate::methods::Accel;
 use crate::scene::Scene;
@@ -27,7 +28,7 @@ pub struct Accelerator {
 impl Accelerator {
     /// Arranges `scene`'s objects as its settings ask.
     pub fn new(scene: &Scene) -> Self {
-        let bounds: Vec<Option<Aabb>> = scene.objects.iter().map(|o| o.bounds()).collect();
+        let bounds: Vec<Option<Bounds>> = scene.objects.iter().map(|o| o.bounds()).collect();
         let bounded_count = bounds.iter().flatten().count();
         let use_bvh = match scene.settings.accel {
             Accel::None => false,
@@ -43,7 +44,7 @@ impl Accelerator {
         }
         let (bounded, always): (Vec<u32>, Vec<u32>) =
             all.partition(|&i| bounds[i as usize].is_some());
-        let boxes: Vec<Aabb> = bounded
+        let boxes: Vec<Bounds> = bounded
             .iter()
             .map(|&i| bounds[i as usize].expect("bounded"))
             .collect();
@@ -69,7 +70,7 @@ impl Accelerator {
         ray: &Ray,
         t_min: f64,
         t_max: &mut f64,
-        tested: &mut Tested,
+        tested: &mut TestCounts,
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         for &i in &self.always {

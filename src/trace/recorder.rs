@@ -7,8 +7,8 @@
 
 use glam::DVec3;
 
-use crate::geometry::bvh::Tested;
 use crate::geometry::hit::Roots;
+use crate::geometry::hit::TestCounts;
 
 /// Calls a recorder hook. Built with `RUSTFLAGS="--cfg raytree_no_hooks"`, every
 /// hook disappears from the source, which gives the baseline the benchmark
@@ -59,13 +59,13 @@ pub struct RayStart {
 
 /// The closest hit of a ray.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HitInfo {
+pub struct HitEvent {
     /// Index of the object in the scene.
     pub object: usize,
     /// Ray parameter of the hit.
     pub t: f64,
-    /// The part of the object hit (a mesh's face; 0 otherwise).
-    pub part: u32,
+    /// The mesh face hit (0 for other shapes).
+    pub face: u32,
     /// World-space hit point.
     pub point: DVec3,
     /// Outward unit geometric normal.
@@ -102,7 +102,7 @@ pub enum ShadowOutcome {
 
 /// A shadow ray from a hit toward one light.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct ShadowInfo {
+pub struct ShadowEvent {
     /// Index of the light.
     pub light: usize,
     /// Origin (offset off the surface) and direction (to the light: `t = 1` is the light).
@@ -112,12 +112,12 @@ pub struct ShadowInfo {
     /// What it found.
     pub outcome: ShadowOutcome,
     /// The boxes and primitives it was tested against.
-    pub tested: Tested,
+    pub tested: TestCounts,
 }
 
 /// One light's share of the local color at a hit.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct LightTerm {
+pub struct LightEvent {
     /// Index of the light.
     pub light: usize,
     /// Diffuse term (zero if the shadow ray did not reach the light).
@@ -144,7 +144,7 @@ pub enum Branch {
 
 /// A reflected or refracted branch at a hit.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct BranchInfo {
+pub struct BranchEvent {
     /// Reflected or refracted.
     pub kind: RayKind,
     /// The coefficient its color is multiplied by: `k_rfl` or `k_rfa`. After total
@@ -158,7 +158,7 @@ pub struct BranchInfo {
 /// How a ray's color was made: `color = local + k_rfl·reflected + k_rfa·refracted`,
 /// with `local = ambient + Σ (diffuse + specular)` over the lights.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct ColorSum {
+pub struct SumEvent {
     /// The ambient term.
     pub ambient: DVec3,
     /// The local color (for a miss, the background).
@@ -187,19 +187,19 @@ pub trait Recorder {
     fn object_tested(&mut self, _object: usize, _roots: &Roots) {}
     /// The search for the closest hit is over; it tested this many boxes and
     /// primitives (every object without a hierarchy).
-    fn tested(&mut self, _tested: &Tested) {}
+    fn tested(&mut self, _tested: &TestCounts) {}
     /// The closest hit was found.
-    fn hit(&mut self, _hit: &HitInfo) {}
+    fn hit(&mut self, _hit: &HitEvent) {}
     /// Nothing was hit: the ray returns the background.
     fn missed(&mut self) {}
     /// A shadow ray was cast (or skipped because the light faces away).
-    fn shadow_ray(&mut self, _shadow: &ShadowInfo) {}
+    fn shadow_ray(&mut self, _shadow: &ShadowEvent) {}
     /// One light's terms of the local color.
-    fn light_term(&mut self, _term: &LightTerm) {}
+    fn light_term(&mut self, _term: &LightEvent) {}
     /// The reflected or refracted branch was decided (a traced child follows).
-    fn branch(&mut self, _branch: &BranchInfo) {}
+    fn branch(&mut self, _branch: &BranchEvent) {}
     /// The ray's color is known.
-    fn ray_finished(&mut self, _sum: &ColorSum) {}
+    fn ray_finished(&mut self, _sum: &SumEvent) {}
 }
 
 /// Records nothing: what the renderer uses.
@@ -251,7 +251,7 @@ impl Recorder for RayCounter {
         }
     }
 
-    fn shadow_ray(&mut self, shadow: &ShadowInfo) {
+    fn shadow_ray(&mut self, shadow: &ShadowEvent) {
         if shadow.outcome != ShadowOutcome::FacesAway {
             self.shadow += 1;
         }

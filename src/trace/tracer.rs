@@ -26,8 +26,8 @@ use std::ops::ControlFlow;
 
 use glam::DVec3;
 
-use crate::geometry::bvh::Tested;
-use crate::geometry::hit::Surface;
+use crate::geometry::hit::TestCounts;
+use crate::geometry::hit::{Search, Surface};
 use crate::math::ray::Ray;
 use crate::scene::Scene;
 use crate::shading::material::Material;
@@ -35,8 +35,8 @@ use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
 use crate::trace::recorder::{
-    Branch, BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
-    ShadowOutcome,
+    Branch, BranchEvent, HitEvent, LightEvent, RayKind, RayStart, Recorder, ShadowEvent,
+    ShadowOutcome, SumEvent,
 };
 
 /// A shadow ray ends at `t = 1 - SHADOW_EPSILON` of the way to its light, so a
@@ -116,7 +116,7 @@ impl<'s> Tracer<'s> {
         let refracted = self.spawn(RayKind::Refracted, &shares, start, &surface, beyond, rec);
         // color = color_local + k_rfl·color_reflect + k_rfa·color_refract.
         let color = local + shares.k_rfl * reflected + shares.k_rfa * refracted;
-        crate::record!(rec.ray_finished(&ColorSum {
+        crate::record!(rec.ray_finished(&SumEvent {
             ambient,
             local,
             k_rfl: shares.k_rfl,
@@ -131,17 +131,17 @@ impl<'s> Tracer<'s> {
     /// What a ray that hits nothing returns: the scene's background.
     fn background<R: Recorder>(&self, rec: &mut R) -> DVec3 {
         crate::record!(rec.missed());
-        let sum = ColorSum {
+        let sum = SumEvent {
             local: self.scene.background,
             color: self.scene.background,
-            ..ColorSum::default()
+            ..SumEvent::default()
         };
         crate::record!(rec.ray_finished(&sum));
         sum.color
     }
 
     /// The object with the smallest root in `(t_min, t_max)`, that root, and the
-    /// root's part (a mesh's face).
+    /// root's mesh face (0 for other shapes).
     #[inline]
     pub fn closest_hit<R: Recorder>(
         &self,
@@ -150,21 +150,26 @@ impl<'s> Tracer<'s> {
         t_max: f64,
         rec: &mut R,
     ) -> Option<(usize, f64, u32)> {
-        let methods = self.scene.settings.intersection();
+        let methods = self.scene.settings.intersection_methods();
         let mut closest = None;
         let mut t_closest = t_max;
         // The hierarchy counts its boxes, the objects their own tests (a mesh's boxes too).
-        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        let (mut outer, mut inner) = (TestCounts::default(), TestCounts::default());
         let _ = self
             .accel
             .visit(ray, t_min, &mut t_closest, &mut outer, |i, t_closest| {
-                let roots =
-                    self.scene.objects[i].roots_within(ray, methods, *t_closest, false, &mut inner);
+                let roots = self.scene.objects[i].roots_within(
+                    ray,
+                    methods,
+                    *t_closest,
+                    Search::Closest,
+                    &mut inner,
+                );
                 if R::ENABLED {
                     crate::record!(rec.object_tested(i, &roots));
                 }
                 if let Some(t) = roots.first_in(t_min, *t_closest) {
-                    closest = Some((i, roots.part()));
+                    closest = Some((i, roots.face()));
                     *t_closest = t;
                 }
                 ControlFlow::Continue(())
@@ -173,7 +178,7 @@ impl<'s> Tracer<'s> {
             outer.add(inner);
             crate::record!(rec.tested(&outer));
         }
-        closest.map(|(i, part)| (i, t_closest, part))
+        closest.map(|(i, face)| (i, t_closest, face))
     }
 
     /// The surface at a found hit, which side the ray hit, and the refractive
@@ -181,11 +186,11 @@ impl<'s> Tracer<'s> {
     fn hit_at(
         &self,
         ray: &Ray,
-        (object, t, part): (usize, f64, u32),
+        (object, t, face): (usize, f64, u32),
         media: &Media,
-    ) -> (HitInfo, Surface) {
-        let methods = self.scene.settings.intersection();
-        let surface = self.scene.objects[object].surface(ray, t, part, methods);
+    ) -> (HitEvent, Surface) {
+        let methods = self.scene.settings.intersection_methods();
+        let surface = self.scene.objects[object].surface(ray, t, face, methods);
         let entering = ray.dir.dot(surface.normal) < 0.0;
         let ior_of = |m: Option<usize>| m.map_or(1.0, |o| self.scene.material_of(o).ior);
         let inside = self.scene.material_of(object).ior;
@@ -201,10 +206,10 @@ impl<'s> Tracer<'s> {
         } else {
             -surface.shading_normal
         };
-        let hit = HitInfo {
+        let hit = HitEvent {
             object,
             t,
-            part,
+            face,
             point: surface.point,
             normal: surface.normal,
             shading_normal,
@@ -220,7 +225,7 @@ impl<'s> Tracer<'s> {
     fn local_color<R: Recorder>(
         &self,
         ray: &Ray,
-        hit: &HitInfo,
+        hit: &HitEvent,
         surface: &Surface,
         material: &Material,
         rec: &mut R,
@@ -247,7 +252,7 @@ impl<'s> Tracer<'s> {
                 _ => phong::Direct::default(),
             };
             if R::ENABLED {
-                crate::record!(rec.light_term(&LightTerm {
+                crate::record!(rec.light_term(&LightEvent {
                     light: i,
                     diffuse: terms.diffuse,
                     specular: terms.specular,
@@ -260,31 +265,36 @@ impl<'s> Tracer<'s> {
 
     /// The lecture's shadow ray from the hit toward light `light`: blocked by the
     /// first opaque object found before the light, dimmed by transparent ones.
-    fn shadow_ray(&self, light: usize, hit: &HitInfo, surface: &Surface) -> ShadowInfo {
+    fn shadow_ray(&self, light: usize, hit: &HitEvent, surface: &Surface) -> ShadowEvent {
         let position = self.scene.lights[light].position;
         let t_max = 1.0 - SHADOW_EPSILON;
         if hit.shading_normal.dot(position - surface.point) <= 0.0 {
             let ray = Ray::new(surface.point, position - surface.point);
-            return ShadowInfo {
+            return ShadowEvent {
                 light,
                 ray,
                 t_max,
                 outcome: ShadowOutcome::FacesAway,
-                tested: Tested::default(),
+                tested: TestCounts::default(),
             };
         }
         let origin = surface.ray_origin(self.scene.settings.offset, position - surface.point);
         let ray = Ray::new(origin, position - origin);
-        let methods = self.scene.settings.intersection();
+        let methods = self.scene.settings.intersection_methods();
         let mut transmitted = 1.0;
         let mut blocked = None;
-        let (mut outer, mut inner) = (Tested::default(), Tested::default());
+        let (mut outer, mut inner) = (TestCounts::default(), TestCounts::default());
         // Any opaque hit before the light ends the search: the hierarchy stops there.
         let _ = self
             .accel
             .visit(&ray, 0.0, &mut t_max.clone(), &mut outer, |i, _| {
-                let roots =
-                    self.scene.objects[i].roots_within(&ray, methods, t_max, true, &mut inner);
+                let roots = self.scene.objects[i].roots_within(
+                    &ray,
+                    methods,
+                    t_max,
+                    Search::Any,
+                    &mut inner,
+                );
                 if let Some(t) = roots.first_in(0.0, t_max) {
                     let k = self.scene.material_of(i).transparent;
                     if k == 0.0 {
@@ -296,7 +306,7 @@ impl<'s> Tracer<'s> {
                 ControlFlow::Continue(())
             });
         outer.add(inner);
-        ShadowInfo {
+        ShadowEvent {
             light,
             ray,
             t_max,
@@ -338,7 +348,7 @@ impl<'s> Tracer<'s> {
         } else {
             (k, Branch::Traced)
         };
-        crate::record!(rec.branch(&BranchInfo {
+        crate::record!(rec.branch(&BranchEvent {
             kind,
             coefficient,
             branch,

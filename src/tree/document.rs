@@ -10,7 +10,7 @@ use serde::{Deserialize, Serialize};
 use crate::io::image::rgb8;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
-use crate::scene::source::{BUILT_IN, SceneRef};
+use crate::scene::source::{BUILT_IN, SceneSource};
 use crate::tree::ray_tree::RayTree;
 use crate::tree::steps::{Step, steps};
 
@@ -22,23 +22,23 @@ pub const VERSION: u32 = 3;
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Trace {
+pub struct TraceDocument {
     /// Always `"raytree-trace"`.
     pub format: String,
     /// The format's version.
     pub version: u32,
     /// Which scene, by name and content hash.
-    pub scene: SceneRef,
+    pub scene: SceneSource,
     /// The render settings in force.
     pub settings: RenderSettings,
     /// The scene's objects, by index.
-    pub objects: Vec<ObjectRef>,
+    pub objects: Vec<ObjectEntry>,
     /// The scene's lights, by index.
-    pub lights: Vec<LightRef>,
+    pub lights: Vec<LightEntry>,
     /// The pixel traced (image coordinates), if a pixel was traced.
     pub pixel: Option<Pixel>,
     /// The ray traced, if one ray was traced instead of a pixel.
-    pub ray: Option<RayRef>,
+    pub ray: Option<GivenRay>,
     /// The pixel's (or ray's) final color, linear RGB, unclamped.
     pub color: DVec3,
     /// The 8-bit sRGB triple the renderer writes for `color`.
@@ -50,7 +50,7 @@ pub struct Trace {
 /// An object, as traces name it.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct ObjectRef {
+pub struct ObjectEntry {
     /// Its name.
     pub name: String,
     /// `sphere` or `plane`.
@@ -64,7 +64,7 @@ pub struct ObjectRef {
 /// A light, as traces name it.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct LightRef {
+pub struct LightEntry {
     /// Its name.
     pub name: String,
     /// Where it is.
@@ -86,7 +86,7 @@ pub struct Pixel {
 /// A ray given by hand.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct RayRef {
+pub struct GivenRay {
     /// Origin.
     pub origin: DVec3,
     /// Direction.
@@ -108,12 +108,12 @@ pub struct Sample {
     pub tree: RayTree,
 }
 
-impl Trace {
+impl TraceDocument {
     /// A document of `samples` traced in `scene`, with the scene's objects and
     /// lights named; the caller sets `pixel` or `ray`.
-    pub fn new(scene: &Scene, source: SceneRef, color: DVec3, samples: Vec<Sample>) -> Self {
+    pub fn new(scene: &Scene, source: SceneSource, color: DVec3, samples: Vec<Sample>) -> Self {
         let s = scene.settings;
-        Trace {
+        TraceDocument {
             format: FORMAT.to_owned(),
             version: VERSION,
             scene: source,
@@ -121,7 +121,7 @@ impl Trace {
             objects: scene
                 .objects
                 .iter()
-                .map(|o| ObjectRef {
+                .map(|o| ObjectEntry {
                     name: o.name.clone(),
                     kind: o.shape.kind().to_owned(),
                     material: scene.materials[o.material].name.clone(),
@@ -131,7 +131,7 @@ impl Trace {
             lights: scene
                 .lights
                 .iter()
-                .map(|l| LightRef {
+                .map(|l| LightEntry {
                     name: l.name.clone(),
                     position: l.position,
                     color: l.color,
@@ -197,9 +197,9 @@ impl Trace {
 
 /// Reads a saved trace document (`raytree trace --json -o FILE`), checking it
 /// is one this raytree writes. Errors are one line naming the file.
-pub fn read(path: &Path) -> anyhow::Result<Trace> {
+pub fn read(path: &Path) -> anyhow::Result<TraceDocument> {
     let text = crate::scene::loader::read(path)?;
-    let trace: Trace = serde_json::from_str(&text).map_err(|e| {
+    let trace: TraceDocument = serde_json::from_str(&text).map_err(|e| {
         anyhow::anyhow!(
             "{}:{}:{}: not a raytree trace: {}",
             path.display(),
@@ -223,7 +223,7 @@ pub fn read(path: &Path) -> anyhow::Result<Trace> {
 
 /// The scene a saved trace names, with the trace's settings, if its file is
 /// found; and whether the file's text still hashes the same.
-pub fn find_scene(trace: &Trace) -> Option<(Scene, bool)> {
+pub fn find_scene(trace: &TraceDocument) -> Option<(Scene, bool)> {
     let path = (trace.scene.file != BUILT_IN).then(|| Path::new(&trace.scene.file));
     let (mut scene, now) = crate::scene::source::load(path).ok()?;
     scene.settings = trace.settings;

@@ -9,7 +9,7 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::geometry::bvh::Tested;
+use crate::geometry::hit::TestCounts;
 use crate::trace::recorder::{Branch, RayKind};
 
 /// One ray's tree.
@@ -41,28 +41,28 @@ pub struct RayNode {
     /// `None`: the ray is unbounded.
     pub t_max: Option<f64>,
     /// Every object the ray was tested against, in order, with its roots.
-    pub tests: Vec<ObjectTest>,
+    pub tests: Vec<TestRecord>,
     /// How many bounding boxes and primitives the search for the closest hit
     /// tested: what the hierarchy saved against testing every object.
-    pub tested: Tested,
+    pub tested: TestCounts,
     /// The closest hit; `None` when the ray missed everything.
-    pub hit: Option<Hit>,
+    pub hit: Option<HitRecord>,
     /// One per light, in the scene's order.
-    pub shadow_rays: Vec<ShadowRay>,
+    pub shadow_rays: Vec<ShadowRecord>,
     /// The local color's terms; `None` for a miss.
-    pub local: Option<Local>,
+    pub local: Option<LocalRecord>,
     /// The reflected branch; `None` for a miss.
-    pub reflected: Option<Child>,
+    pub reflected: Option<BranchRecord>,
     /// The refracted branch; `None` for a miss.
-    pub refracted: Option<Child>,
+    pub refracted: Option<BranchRecord>,
     /// `color = local + k_rfl·reflected + k_rfa·refracted` with its numbers.
-    pub sum: Sum,
+    pub sum: SumRecord,
 }
 
 /// The test of one object.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct ObjectTest {
+pub struct TestRecord {
     /// Index of the object.
     pub object: usize,
     /// Its name.
@@ -75,7 +75,7 @@ pub struct ObjectTest {
 /// The closest hit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Hit {
+pub struct HitRecord {
     /// Index of the object.
     pub object: usize,
     /// Its name.
@@ -103,7 +103,7 @@ pub struct Hit {
 /// A shadow ray toward one light.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct ShadowRay {
+pub struct ShadowRecord {
     /// Index of the light.
     pub light: usize,
     /// Its name.
@@ -115,16 +115,16 @@ pub struct ShadowRay {
     /// The ray stops just short of the light.
     pub t_max: f64,
     /// What it found.
-    pub outcome: Outcome,
+    pub outcome: ShadowOutcomeRecord,
     /// The boxes and primitives it was tested against (it stops at the first
     /// opaque blocker).
-    pub tested: Tested,
+    pub tested: TestCounts,
 }
 
 /// What a shadow ray found.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
-pub enum Outcome {
+pub enum ShadowOutcomeRecord {
     /// The light is behind the surface: no ray was cast.
     FacesAway,
     /// It reached the light, keeping `transmitted` of it (1 unless transparent
@@ -147,11 +147,11 @@ pub enum Outcome {
 /// The local color: `ambient + Σ (diffuse + specular)`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Local {
+pub struct LocalRecord {
     /// The ambient term.
     pub ambient: DVec3,
     /// One entry per light.
-    pub lights: Vec<LightShare>,
+    pub lights: Vec<LightRecord>,
     /// The sum.
     pub total: DVec3,
 }
@@ -159,7 +159,7 @@ pub struct Local {
 /// One light's part of the local color.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct LightShare {
+pub struct LightRecord {
     /// Index of the light.
     pub light: usize,
     /// Its name.
@@ -173,7 +173,7 @@ pub struct LightShare {
 /// A reflected or refracted branch.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Child {
+pub struct BranchRecord {
     /// The coefficient its color is weighted by.
     pub coefficient: f64,
     /// Traced, or why not.
@@ -185,7 +185,7 @@ pub struct Child {
 /// How the node's color was summed.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
-pub struct Sum {
+pub struct SumRecord {
     /// The local color (the background for a miss).
     pub local: DVec3,
     /// Coefficient of the reflected color.

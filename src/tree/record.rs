@@ -4,19 +4,20 @@
 
 use glam::DVec3;
 
-use crate::geometry::bvh::Tested;
+use crate::geometry::hit::TestCounts;
 use crate::math::ray::Ray;
 use crate::scene::Scene;
-use crate::scene::source::SceneRef;
+use crate::scene::source::SceneSource;
 use crate::trace::pixel::pixel_color_at;
 use crate::trace::recorder::{
-    BranchInfo, ColorSum, HitInfo, LightTerm, RayKind, RayStart, Recorder, ShadowInfo,
-    ShadowOutcome,
+    BranchEvent, HitEvent, LightEvent, RayKind, RayStart, Recorder, ShadowEvent, ShadowOutcome,
+    SumEvent,
 };
 use crate::trace::tracer::Tracer;
-use crate::tree::document::{Pixel, RayRef, Sample, Trace};
+use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    Child, Hit, LightShare, Local, ObjectTest, Outcome, RayNode, RayTree, ShadowRay, Sum,
+    BranchRecord, HitRecord, LightRecord, LocalRecord, RayNode, RayTree, ShadowOutcomeRecord,
+    ShadowRecord, SumRecord, TestRecord,
 };
 
 /// Why a trace could not be made.
@@ -51,11 +52,11 @@ pub enum TraceError {
 /// recording every sample, or only sample `only` if given.
 pub fn pixel(
     scene: &Scene,
-    source: SceneRef,
+    source: SceneSource,
     x: u32,
     y: u32,
     only: Option<u32>,
-) -> Result<Trace, TraceError> {
+) -> Result<TraceDocument, TraceError> {
     let s = scene.settings;
     if x >= s.width || y >= s.height {
         return Err(TraceError::PixelOutside {
@@ -93,14 +94,14 @@ pub fn pixel(
         })
         .filter(|sample| only.is_none_or(|k| k == sample.index))
         .collect();
-    Ok(Trace {
+    Ok(TraceDocument {
         pixel: Some(Pixel { x, y }),
-        ..Trace::new(scene, source, color, samples)
+        ..TraceDocument::new(scene, source, color, samples)
     })
 }
 
 /// Traces one ray as a primary ray (depth 1, weight 1, from the media around the eye).
-pub fn ray(scene: &Scene, source: SceneRef, ray: Ray) -> Result<Trace, TraceError> {
+pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument, TraceError> {
     if !(ray.origin.is_finite() && ray.dir.is_finite())
         || ray.dir.length_squared() == 0.0
         || !ray.dir.length_squared().is_finite()
@@ -116,12 +117,12 @@ pub fn ray(scene: &Scene, source: SceneRef, ray: Ray) -> Result<Trace, TraceErro
         color,
         tree,
     }];
-    Ok(Trace {
-        ray: Some(RayRef {
+    Ok(TraceDocument {
+        ray: Some(GivenRay {
             origin: ray.origin,
             direction: ray.dir,
         }),
-        ..Trace::new(scene, source, color, samples)
+        ..TraceDocument::new(scene, source, color, samples)
     })
 }
 
@@ -190,39 +191,39 @@ impl Recorder for TreeRecorder<'_> {
             t_min: start.t_min,
             t_max: start.t_max.is_finite().then_some(start.t_max),
             tests: Vec::new(),
-            tested: Tested::default(),
+            tested: TestCounts::default(),
             hit: None,
             shadow_rays: Vec::new(),
             local: None,
             reflected: None,
             refracted: None,
-            sum: Sum::default(),
+            sum: SumRecord::default(),
         });
         self.stack.push(index);
     }
 
     fn object_tested(&mut self, object: usize, roots: &crate::geometry::hit::Roots) {
         let name = self.scene.objects[object].name.clone();
-        self.top().tests.push(ObjectTest {
+        self.top().tests.push(TestRecord {
             object,
             name,
             roots: roots.as_slice().to_vec(),
         });
     }
 
-    fn tested(&mut self, tested: &Tested) {
+    fn tested(&mut self, tested: &TestCounts) {
         self.top().tested = *tested;
     }
 
-    fn hit(&mut self, hit: &HitInfo) {
+    fn hit(&mut self, hit: &HitEvent) {
         let object = &self.scene.objects[hit.object];
-        let h = Hit {
+        let h = HitRecord {
             object: hit.object,
             name: object.name.clone(),
             material: self.scene.materials[object.material].name.clone(),
             t: hit.t,
             face: matches!(object.shape, crate::geometry::object::Shape::Mesh(_))
-                .then_some(hit.part),
+                .then_some(hit.face),
             point: hit.point,
             normal: hit.normal,
             shading_normal: hit.shading_normal,
@@ -232,25 +233,25 @@ impl Recorder for TreeRecorder<'_> {
         };
         let node = self.top();
         node.hit = Some(h);
-        node.local = Some(Local {
+        node.local = Some(LocalRecord {
             ambient: DVec3::ZERO,
             lights: Vec::new(),
             total: DVec3::ZERO,
         });
     }
 
-    fn shadow_ray(&mut self, s: &ShadowInfo) {
+    fn shadow_ray(&mut self, s: &ShadowEvent) {
         let outcome = match s.outcome {
-            ShadowOutcome::FacesAway => Outcome::FacesAway,
-            ShadowOutcome::Reaches { transmitted } => Outcome::Reaches { transmitted },
-            ShadowOutcome::Blocked { object, t } => Outcome::Blocked {
+            ShadowOutcome::FacesAway => ShadowOutcomeRecord::FacesAway,
+            ShadowOutcome::Reaches { transmitted } => ShadowOutcomeRecord::Reaches { transmitted },
+            ShadowOutcome::Blocked { object, t } => ShadowOutcomeRecord::Blocked {
                 object,
                 name: self.scene.objects[object].name.clone(),
                 t,
             },
         };
         let name = self.scene.lights[s.light].name.clone();
-        self.top().shadow_rays.push(ShadowRay {
+        self.top().shadow_rays.push(ShadowRecord {
             light: s.light,
             name,
             origin: s.ray.origin,
@@ -261,10 +262,10 @@ impl Recorder for TreeRecorder<'_> {
         });
     }
 
-    fn light_term(&mut self, term: &LightTerm) {
+    fn light_term(&mut self, term: &LightEvent) {
         let name = self.scene.lights[term.light].name.clone();
         if let Some(local) = &mut self.top().local {
-            local.lights.push(LightShare {
+            local.lights.push(LightRecord {
                 light: term.light,
                 name,
                 diffuse: term.diffuse,
@@ -273,8 +274,8 @@ impl Recorder for TreeRecorder<'_> {
         }
     }
 
-    fn branch(&mut self, b: &BranchInfo) {
-        let child = Some(Child {
+    fn branch(&mut self, b: &BranchEvent) {
+        let child = Some(BranchRecord {
             coefficient: b.coefficient,
             outcome: b.branch,
             node: None,
@@ -286,13 +287,13 @@ impl Recorder for TreeRecorder<'_> {
         }
     }
 
-    fn ray_finished(&mut self, sum: &ColorSum) {
+    fn ray_finished(&mut self, sum: &SumEvent) {
         let node = self.top();
         if let Some(local) = &mut node.local {
             local.ambient = sum.ambient;
             local.total = sum.local;
         }
-        node.sum = Sum {
+        node.sum = SumRecord {
             local: sum.local,
             k_rfl: sum.k_rfl,
             reflected: sum.reflected,

@@ -7,7 +7,7 @@
 use serde::Serialize;
 
 use crate::trace::recorder::{Branch, RayKind};
-use crate::tree::ray_tree::{Child, Outcome, RayNode, RayTree};
+use crate::tree::ray_tree::{BranchRecord, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::views::numbers::{num, vec3};
 
 /// What kind of step.
@@ -58,7 +58,7 @@ pub fn steps(tree: &RayTree, kind_of: &dyn Fn(usize) -> String) -> Vec<Step> {
 }
 
 /// How much searching a ray's closest hit took.
-pub fn searched(t: &crate::geometry::bvh::Tested) -> String {
+pub fn searched(t: &crate::geometry::hit::TestCounts) -> String {
     let s = |n: u32| if n == 1 { "" } else { "s" };
     if t.boxes == 0 {
         format!("{} object test{}", t.primitives, s(t.primitives))
@@ -145,15 +145,19 @@ fn walk(tree: &RayTree, i: usize, kind_of: &dyn Fn(usize) -> String, out: &mut V
     );
     for s in &node.shadow_rays {
         let what = match &s.outcome {
-            Outcome::FacesAway => "the light is behind the surface: no ray cast".to_owned(),
-            Outcome::Reaches { transmitted } if *transmitted == 1.0 => {
+            ShadowOutcomeRecord::FacesAway => {
+                "the light is behind the surface: no ray cast".to_owned()
+            }
+            ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
                 "reaches the light".to_owned()
             }
-            Outcome::Reaches { transmitted } => format!(
+            ShadowOutcomeRecord::Reaches { transmitted } => format!(
                 "reaches the light through transparent objects, keeping {}",
                 num(*transmitted)
             ),
-            Outcome::Blocked { name, t, .. } => format!("blocked by '{name}' at t = {}", num(*t)),
+            ShadowOutcomeRecord::Blocked { name, t, .. } => {
+                format!("blocked by '{name}' at t = {}", num(*t))
+            }
         };
         push(
             StepKind::Shadow,
@@ -223,7 +227,7 @@ fn walk(tree: &RayTree, i: usize, kind_of: &dyn Fn(usize) -> String, out: &mut V
     });
 }
 
-fn branch_text(kind: StepKind, child: &Child, node: &RayNode) -> String {
+fn branch_text(kind: StepKind, child: &BranchRecord, node: &RayNode) -> String {
     let (name, k) = if kind == StepKind::Reflect {
         ("reflected", "k_rfl")
     } else {

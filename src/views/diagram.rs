@@ -8,8 +8,8 @@ use glam::{DVec2, DVec3};
 use crate::scene::Scene;
 use crate::shading::material::Pattern;
 use crate::trace::recorder::RayKind;
-use crate::tree::document::Trace;
-use crate::tree::ray_tree::Outcome;
+use crate::tree::document::TraceDocument;
+use crate::tree::ray_tree::ShadowOutcomeRecord;
 use crate::views::figure::{Anchor, Figure, Pen, Rgb, clip_line, clip_ray, clip_segment, palette};
 use crate::views::projection::{Outline, Projection, View};
 
@@ -135,7 +135,7 @@ pub struct Layout {
 /// bounded objects the tree touches); farther points join it only when near,
 /// and rays to the others run to the frame's edge, so one far bounce does not
 /// shrink the interesting part to a speck.
-pub fn layout(trace: &Trace, scene: &Scene, options: &Options) -> Result<Layout, String> {
+pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Layout, String> {
     let sample = trace
         .samples
         .get(options.sample)
@@ -185,9 +185,9 @@ pub fn layout(trace: &Trace, scene: &Scene, options: &Options) -> Result<Layout,
         }
         for s in &node.shadow_rays {
             let (end, pen) = match &s.outcome {
-                Outcome::FacesAway => continue,
-                Outcome::Reaches { .. } => (s.origin + s.direction, SHADOW_REACHES),
-                Outcome::Blocked { object, t, .. } => {
+                ShadowOutcomeRecord::FacesAway => continue,
+                ShadowOutcomeRecord::Reaches { .. } => (s.origin + s.direction, SHADOW_REACHES),
+                ShadowOutcomeRecord::Blocked { object, t, .. } => {
                     touched.push(*object);
                     (s.origin + *t * s.direction, SHADOW_BLOCKED)
                 }
@@ -250,7 +250,7 @@ pub fn layout(trace: &Trace, scene: &Scene, options: &Options) -> Result<Layout,
 
 /// Draws sample `options.sample` of `trace` over `scene` (the scene it was traced
 /// in, with the same settings).
-pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, String> {
+pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Figure, String> {
     let Layout {
         proj,
         segments,
@@ -471,7 +471,7 @@ pub fn draw(trace: &Trace, scene: &Scene, options: &Options) -> Result<Figure, S
 /// the image's rectangle, and the pixel's point on it.
 fn image_plane_segment(
     proj: &Projection,
-    trace: &Trace,
+    trace: &TraceDocument,
     sample: usize,
     camera: &crate::scene::camera::Camera,
 ) -> Option<(DVec2, DVec2, DVec2)> {

@@ -10,7 +10,7 @@ use glam::{DMat3, DVec2, DVec3};
 
 use crate::geometry::object::{Object, Shape};
 use crate::scene::camera::Camera;
-use crate::tree::document::Trace;
+use crate::tree::document::TraceDocument;
 
 /// Which plane to project onto.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
@@ -40,7 +40,7 @@ pub struct Projection {
 
 impl Projection {
     /// The projection for sample `sample` of `trace`, seen from `view`.
-    pub fn new(view: View, trace: &Trace, sample: usize, camera: &Camera) -> Self {
+    pub fn new(view: View, trace: &TraceDocument, sample: usize, camera: &Camera) -> Self {
         let root = &trace.samples[sample].tree.nodes[0];
         let d = root.direction.normalize();
         let origin = root.hit.as_ref().map_or(root.origin, |h| h.point);
@@ -259,13 +259,18 @@ impl Outline {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::source::SceneRef;
+    use crate::scene::source::SceneSource;
 
-    fn glass_trace() -> (crate::scene::Scene, Trace) {
+    fn glass_trace() -> (crate::scene::Scene, TraceDocument) {
         let scene = crate::scene::loader::whitted();
-        let trace =
-            crate::tree::record::pixel(&scene, SceneRef::new("whitted.json", ""), 416, 209, None)
-                .unwrap();
+        let trace = crate::tree::record::pixel(
+            &scene,
+            SceneSource::new("whitted.json", ""),
+            416,
+            209,
+            None,
+        )
+        .unwrap();
         (scene, trace)
     }
 

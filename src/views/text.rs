@@ -5,12 +5,12 @@
 
 use std::fmt::Write;
 
-use crate::tree::document::Trace;
+use crate::tree::document::TraceDocument;
 use crate::views::numbers::{num, vec3};
 
 /// The trace as an indented text tree; `numbered` prefixes each step with its
 /// number in execution order.
-pub fn render(trace: &Trace, numbered: bool) -> String {
+pub fn format(trace: &TraceDocument, numbered: bool) -> String {
     let mut out = String::new();
     let s = &trace.settings;
     let what = match (&trace.pixel, &trace.ray) {

@@ -3,7 +3,7 @@
 
 use glam::DVec3;
 use raytree::scene::Scene;
-use raytree::trace::recorder::{HitInfo, RayKind, RayStart, Recorder, ShadowInfo};
+use raytree::trace::recorder::{HitEvent, RayKind, RayStart, Recorder, ShadowEvent};
 
 /// Parses a scene written inline in a test.
 pub fn scene(json: &str) -> Scene {
@@ -30,10 +30,10 @@ pub fn shipped() -> Vec<(&'static str, Scene)> {
 #[derive(Default)]
 pub struct Log {
     pub rays: Vec<RayStart>,
-    pub hits: Vec<HitInfo>,
-    pub shadows: Vec<ShadowInfo>,
-    pub branches: Vec<raytree::trace::recorder::BranchInfo>,
-    pub colors: Vec<raytree::trace::recorder::ColorSum>,
+    pub hits: Vec<HitEvent>,
+    pub shadows: Vec<ShadowEvent>,
+    pub branches: Vec<raytree::trace::recorder::BranchEvent>,
+    pub colors: Vec<raytree::trace::recorder::SumEvent>,
 }
 
 impl Recorder for Log {
@@ -41,16 +41,16 @@ impl Recorder for Log {
     fn ray_started(&mut self, start: &RayStart) {
         self.rays.push(*start);
     }
-    fn hit(&mut self, hit: &HitInfo) {
+    fn hit(&mut self, hit: &HitEvent) {
         self.hits.push(*hit);
     }
-    fn shadow_ray(&mut self, shadow: &ShadowInfo) {
+    fn shadow_ray(&mut self, shadow: &ShadowEvent) {
         self.shadows.push(*shadow);
     }
-    fn branch(&mut self, branch: &raytree::trace::recorder::BranchInfo) {
+    fn branch(&mut self, branch: &raytree::trace::recorder::BranchEvent) {
         self.branches.push(*branch);
     }
-    fn ray_finished(&mut self, sum: &raytree::trace::recorder::ColorSum) {
+    fn ray_finished(&mut self, sum: &raytree::trace::recorder::SumEvent) {
         self.colors.push(*sum);
     }
 }

@@ -8,8 +8,8 @@ use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
 use raytree::scene::overrides::Overrides;
-use raytree::scene::source::{self, SceneRef};
-use raytree::tree::document::Trace;
+use raytree::scene::source::{self, SceneSource};
+use raytree::tree::document::TraceDocument;
 use raytree::tree::record;
 
 /// A scene and the settings that override its `render` block.
@@ -24,7 +24,7 @@ pub struct SceneArgs {
 impl SceneArgs {
     /// The scene with the command line's settings applied and checked, and
     /// what names it in a trace.
-    pub fn load(&self) -> Result<(Scene, SceneRef)> {
+    pub fn load(&self) -> Result<(Scene, SceneSource)> {
         let (mut scene, source) = source::load(self.scene.as_deref())?;
         scene.settings = self.overrides.apply(&scene.settings);
         if let Err((field, message)) = scene.settings.validate() {
@@ -60,7 +60,7 @@ pub struct TargetArgs {
 
 impl TargetArgs {
     /// Records the pixel's or the ray's trees.
-    pub fn record(&self, scene: &Scene, source: SceneRef) -> Result<Trace> {
+    pub fn record(&self, scene: &Scene, source: SceneSource) -> Result<TraceDocument> {
         Ok(match (self.pixel, self.ray) {
             (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample)?,
             (_, Some(ray)) => record::ray(scene, source, ray)?,

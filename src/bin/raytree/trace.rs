@@ -37,7 +37,7 @@ pub fn run(args: &Args) -> Result<()> {
     let text = if json {
         trace.to_json()
     } else {
-        text::render(&trace, args.steps)
+        text::format(&trace, args.steps)
     };
     match pending {
         Some(file) => file.commit(text.as_bytes()),
