@@ -8,7 +8,8 @@ use glam::DVec2;
 use raytree::geometry::object::Shape;
 use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
-use raytree::views::diagram::{Labels, Options, draw};
+use raytree::views::diagram::draw;
+use raytree::views::diagram_layout::{Labels, Options};
 use raytree::views::figure::{Figure, palette};
 use raytree::views::projection::{Outline, Projection, View};
 

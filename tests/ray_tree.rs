@@ -347,8 +347,9 @@ fn steps_follow_the_algorithm() {
                 .collect();
             let tests = node.tests.len();
             assert_eq!(own[0], StepKind::Spawn, "{label}");
-            assert!(
-                own[1..=tests].iter().all(|&k| k == StepKind::Test),
+            assert_eq!(
+                own[1..=tests],
+                (0..tests).map(StepKind::Test).collect::<Vec<_>>(),
                 "{label}: node {i}: {own:?}"
             );
             assert_eq!(*own.last().unwrap(), StepKind::Return, "{label}");
@@ -356,8 +357,9 @@ fn steps_follow_the_algorithm() {
                 let after = &own[tests + 1..];
                 let shadows = node.shadow_rays.len();
                 assert_eq!(after[0], StepKind::Hit, "{label}");
-                assert!(
-                    after[1..=shadows].iter().all(|&k| k == StepKind::Shadow),
+                assert_eq!(
+                    after[1..=shadows],
+                    (0..shadows).map(StepKind::Shadow).collect::<Vec<_>>(),
                     "{label}"
                 );
                 assert_eq!(
@@ -393,7 +395,10 @@ fn step_texts_carry_their_numbers() {
     let trace =
         raytree::tree::record::pixel(&scene, source("whitted.json"), 168, 296, None).unwrap();
     let steps = trace.steps(0);
-    let texts: Vec<&str> = steps.iter().map(|s| s.text.as_str()).collect();
+    let texts: Vec<String> = steps
+        .iter()
+        .map(|s| raytree::views::text::describe(&trace, 0, s))
+        .collect();
     let blocked = texts
         .iter()
         .find(|t| t.starts_with("shadow ray to light 'key': blocked by 'mirror' at t = "))

@@ -6,6 +6,7 @@
 //! way out (quit, error, panic, SIGINT).
 
 mod app;
+mod details;
 mod preview;
 mod ui;
 

@@ -15,11 +15,12 @@ use ratatui::widgets::{Block, Borders, Clear, Paragraph, Widget, Wrap};
 use super::app::{App, Areas, Focus, Item};
 use crate::io::image::rgb8;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
-use crate::tree::steps::kind_name;
-use crate::views::diagram::{Options, layout};
-use crate::views::figure::{Rgb, clip_line, clip_ray, clip_segment, palette};
-use crate::views::numbers::{num, vec3};
+use crate::views::clip::{clip_line, clip_ray, clip_segment};
+use crate::views::diagram_layout::{Layout as DiagramLayout, Options, layout};
+use crate::views::figure::{Rgb, palette};
+use crate::views::numbers::num;
 use crate::views::projection::Outline;
+use crate::views::text::{describe, kind_name};
 
 /// Every key, for the help overlay and the README.
 pub const KEYS: &[(&str, &str)] = &[
@@ -58,7 +59,7 @@ fn term_color(c: Rgb, truecolor: bool) -> Color {
     }
 }
 
-fn swatch(c: DVec3, tc: bool) -> Span<'static> {
+pub(super) fn swatch(c: DVec3, tc: bool) -> Span<'static> {
     Span::styled("██", Style::default().fg(term_color(rgb8(c), tc)))
 }
 
@@ -107,27 +108,39 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
     draw_details(frame, app, detail_area, tc);
     draw_diagram(frame, app, diagram_area, tc);
 
-    let step = match (&app.goto, app.step) {
+    frame.render_widget(Paragraph::new(step_line_text(app)), step_line);
+    frame.render_widget(Paragraph::new(status_line_text(app)), status_line);
+    if app.help {
+        draw_help(frame);
+    }
+}
+
+/// The step line: the go-to prompt, the current step with its numbers, or how
+/// to start stepping.
+fn step_line_text(app: &App) -> Line<'static> {
+    let bold = Style::default().add_modifier(Modifier::BOLD);
+    match (&app.goto, app.step) {
         (Some(typed), _) => Line::from(vec![
-            Span::styled(
-                "go to pixel (x,y): ",
-                Style::default().add_modifier(Modifier::BOLD),
-            ),
+            Span::styled("go to pixel (x,y): ", bold),
             Span::raw(format!("{typed}▏")),
         ]),
         (None, Some(s)) => Line::from(vec![
-            Span::styled(
-                format!("step {}/{}: ", s + 1, app.steps.len()),
-                Style::default().add_modifier(Modifier::BOLD),
+            Span::styled(format!("step {}/{}: ", s + 1, app.steps.len()), bold),
+            Span::raw(
+                app.trace
+                    .as_ref()
+                    .map_or_else(String::new, |t| describe(t, 0, &app.steps[s])),
             ),
-            Span::raw(app.steps[s].text.clone()),
         ]),
         (None, None) => Line::from(format!(
             "press n to step through the algorithm ({} steps), ? for every key",
             app.steps.len()
         )),
-    };
-    frame.render_widget(Paragraph::new(step), step_line);
+    }
+}
+
+/// The status line: the pixel, the zoom, the scene, the time to trace, any message.
+fn status_line_text(app: &App) -> Line<'static> {
     let (w, h) = app.image_size();
     let mut status = format!(
         "pixel {},{} of {w}×{h} · zoom {}× · {} · traced in {:.2} ms",
@@ -140,17 +153,10 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
     if !app.message.is_empty() {
         status = format!("{} · {status}", app.message);
     }
-    frame.render_widget(
-        Paragraph::new(Line::from(vec![
-            Span::styled(status, Style::default().add_modifier(Modifier::DIM)),
-            Span::raw("   ? help  q quit"),
-        ])),
-        status_line,
-    );
-
-    if app.help {
-        draw_help(frame);
-    }
+    Line::from(vec![
+        Span::styled(status, Style::default().add_modifier(Modifier::DIM)),
+        Span::raw("   ? help  q quit"),
+    ])
 }
 
 struct ImagePane<'a> {
@@ -211,7 +217,7 @@ fn ray_line(app: &App, node: &RayNode, n: usize, tc: bool) -> Vec<Span<'static>>
             format!("{} ", kind_name(node.kind)),
             Style::default()
                 .fg(term_color(
-                    crate::views::diagram::ray_pen(node.kind).color,
+                    crate::views::diagram_layout::ray_pen(node.kind).color,
                     tc,
                 ))
                 .add_modifier(Modifier::BOLD),
@@ -229,7 +235,7 @@ fn ray_line(app: &App, node: &RayNode, n: usize, tc: bool) -> Vec<Span<'static>>
     spans
 }
 
-fn shadow_text(node: &RayNode, k: usize) -> String {
+pub(super) fn shadow_text(node: &RayNode, k: usize) -> String {
     let s = &node.shadow_rays[k];
     let what = match &s.outcome {
         ShadowOutcomeRecord::FacesAway => "faces away".to_owned(),
@@ -292,150 +298,12 @@ fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
     frame.render_widget(Paragraph::new(lines).block(block), area);
 }
 
-fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
-    let Some(trace) = &app.trace else {
-        return vec![];
-    };
-    let nodes = &trace.samples[0].tree.nodes;
-    let Some(item) = app.selected_item() else {
-        return vec![];
-    };
-    let node = &nodes[item.node()];
-    let row = |k: &str, v: String| {
-        Line::from(vec![
-            Span::styled(
-                format!("{k:<10}"),
-                Style::default().add_modifier(Modifier::BOLD),
-            ),
-            Span::raw(v),
-        ])
-    };
-    let mut out = Vec::new();
-    if let Item::Shadow(_, k) = item {
-        let s = &node.shadow_rays[k];
-        out.push(Line::from(shadow_text(node, k)));
-        out.push(row("origin", vec3(s.origin)));
-        out.push(row(
-            "direction",
-            format!("{} (t = 1 at the light)", vec3(s.direction)),
-        ));
-        out.push(row("interval", format!("t in (0, {})", num(s.t_max))));
-        return out;
-    }
-    out.push(Line::from(format!(
-        "{} ray · depth {} · weight {}",
-        kind_name(node.kind),
-        node.depth,
-        num(node.weight)
-    )));
-    out.push(row("origin", vec3(node.origin)));
-    out.push(row("direction", vec3(node.direction)));
-    out.push(row(
-        "interval",
-        format!(
-            "t in ({}, {})",
-            num(node.t_min),
-            node.t_max.map_or("∞".to_owned(), num)
-        ),
-    ));
-    let tests: Vec<String> = node
-        .tests
-        .iter()
-        .map(|t| {
-            if t.roots.is_empty() {
-                format!("{} miss", t.name)
-            } else {
-                format!(
-                    "{} t={}",
-                    t.name,
-                    t.roots
-                        .iter()
-                        .map(|&r| num(r))
-                        .collect::<Vec<_>>()
-                        .join(",")
-                )
-            }
-        })
-        .collect();
-    out.push(row(
-        "tested",
-        format!(
-            "{}: {}",
-            crate::tree::steps::searched(&node.tested),
-            tests.join(" · ")
-        ),
-    ));
-    match &node.hit {
-        None => out.push(row(
-            "hit",
-            format!("nothing: background {}", vec3(node.sum.color)),
-        )),
-        Some(h) => {
-            out.push(row(
-                "hit",
-                format!("'{}' (material {}) at t = {}", h.name, h.material, num(h.t)),
-            ));
-            out.push(row("point", vec3(h.point)));
-            out.push(row(
-                "normal",
-                format!("{} (shading {})", vec3(h.normal), vec3(h.shading_normal)),
-            ));
-            out.push(row(
-                "side",
-                format!(
-                    "{}, n {} → {}",
-                    if h.entering { "entering" } else { "leaving" },
-                    num(h.n1),
-                    num(h.n2)
-                ),
-            ));
-            for k in 0..node.shadow_rays.len() {
-                out.push(row(
-                    if k == 0 { "shadows" } else { "" },
-                    shadow_text(node, k),
-                ));
-            }
-        }
-    }
-    let s = &node.sum;
-    if let Some(local) = &node.local {
-        out.push(Line::from(vec![
-            Span::styled("color     ", Style::default().add_modifier(Modifier::BOLD)),
-            Span::raw(format!("  ambient {}", vec3(local.ambient))),
-        ]));
-        for l in &local.lights {
-            out.push(Line::from(format!(
-                "          + '{}': diffuse {} + specular {}",
-                l.name,
-                vec3(l.diffuse),
-                vec3(l.specular)
-            )));
-        }
-        out.push(Line::from(format!("          = local {}", vec3(s.local))));
-        out.push(Line::from(format!(
-            "          + {} × reflected {}",
-            num(s.k_rfl),
-            vec3(s.reflected)
-        )));
-        out.push(Line::from(format!(
-            "          + {} × refracted {}",
-            num(s.k_rfa),
-            vec3(s.refracted)
-        )));
-    }
-    out.push(Line::from(vec![
-        Span::raw(format!("          = {} ", vec3(s.color))),
-        swatch(s.color, tc),
-    ]));
-    out
-}
-
 fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     let block = Block::default()
         .borders(Borders::ALL)
         .title(" selected ray ");
     frame.render_widget(
-        Paragraph::new(details(app, tc))
+        Paragraph::new(super::details::details(app, tc))
             .block(block)
             .wrap(Wrap { trim: false }),
         area,
@@ -453,101 +321,120 @@ fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     let Ok(lay) = layout(trace, scene, &Options::default()) else {
         return;
     };
-    let inner = block.inner(area);
-    // Braille dots are about square: 2 across and 4 down per cell, a cell twice as tall as wide.
-    let (dots_w, dots_h) = (
-        f64::from(inner.width.max(1)) * 2.0,
-        f64::from(inner.height.max(1)) * 4.0,
-    );
-    let (mut lo, mut hi) = (lay.lo, lay.hi);
-    let size = (hi - lo).max(DVec2::splat(1e-9)) * 1.1;
-    let center = (lo + hi) / 2.0;
-    let per_dot = (size.x / dots_w).max(size.y / dots_h);
-    let half = DVec2::new(dots_w, dots_h) * per_dot / 2.0;
-    (lo, hi) = (center - half, center + half);
+    let (lo, hi) = braille_window(&lay, block.inner(area));
     let selected = app.selected_item().map(|i| i.node());
-    let color = |c: Rgb| term_color(c, tc);
     let canvas = Canvas::default()
         .block(block)
         .marker(Marker::Braille)
         .x_bounds([lo.x, hi.x])
         .y_bounds([lo.y, hi.y])
         .paint(move |ctx: &mut Context| {
-            let seg = |ctx: &mut Context, a: DVec2, b: DVec2, c: Color| {
-                ctx.draw(&CanvasLine {
-                    x1: a.x,
-                    y1: a.y,
-                    x2: b.x,
-                    y2: b.y,
-                    color: c,
-                })
-            };
-            for (i, outline) in lay.outlines.iter().enumerate() {
-                let c = if lay.touched.contains(&i) {
-                    color(palette::OBJECT_FILL)
-                } else {
-                    color([110, 110, 110])
-                };
-                match *outline {
-                    Outline::Ellipse { center, axes } => {
-                        let at = |k: u32| {
-                            let t = std::f64::consts::TAU * f64::from(k) / 96.0;
-                            center + t.cos() * axes[0] + t.sin() * axes[1]
-                        };
-                        for k in 0..96 {
-                            seg(ctx, at(k), at(k + 1), c);
-                        }
-                    }
-                    Outline::Line { point, dir, .. } => {
-                        if let Some((a, b)) = clip_line(point, dir, lo, hi) {
-                            seg(ctx, a, b, c);
-                        }
-                    }
-                    Outline::Polygon { ref points } => {
-                        for (k, &a) in points.iter().enumerate() {
-                            seg(ctx, a, points[(k + 1) % points.len()], c);
-                        }
-                    }
-                    Outline::Parallel => {}
-                }
-            }
-            if let Some((a, b, _)) = lay.image_plane {
-                seg(ctx, a, b, Color::Gray);
-            }
-            // The selected ray last, in white, over the others.
-            let mut order: Vec<_> = lay.segments.iter().collect();
-            order.sort_by_key(|s| (Some(s.node) == selected && s.arrow, s.arrow));
-            for s in order {
-                let ends = match s.to {
-                    Some(to) => clip_segment(s.from, to, lo, hi),
-                    None => clip_ray(s.from, s.dir, lo, hi, 0.0),
-                };
-                let c = if Some(s.node) == selected && s.arrow {
-                    Color::White
-                } else {
-                    color(s.pen.color)
-                };
-                if let Some((a, b)) = ends {
-                    seg(ctx, a, b, c);
-                }
-            }
-            let hits: Vec<(f64, f64)> = lay.hits.iter().map(|h| (h.at.x, h.at.y)).collect();
-            ctx.draw(&Points {
-                coords: &hits,
-                color: Color::White,
-            });
-            let lights: Vec<(f64, f64)> = lay.lights.iter().map(|p| (p.x, p.y)).collect();
-            ctx.draw(&Points {
-                coords: &lights,
-                color: color(palette::LIGHT),
-            });
-            ctx.print(
-                lay.eye.x,
-                lay.eye.y,
-                Span::styled("eye", Style::default().fg(Color::Gray)),
-            );
+            paint_outlines(ctx, &lay, (lo, hi), tc);
+            paint_rays(ctx, &lay, selected, (lo, hi), tc);
         });
     frame.render_widget(canvas, area);
+}
+
+/// The layout's box widened to the pane's shape. Braille dots are about
+/// square: 2 across and 4 down per cell, a cell twice as tall as wide.
+fn braille_window(lay: &DiagramLayout, inner: Rect) -> (DVec2, DVec2) {
+    let (dots_w, dots_h) = (
+        f64::from(inner.width.max(1)) * 2.0,
+        f64::from(inner.height.max(1)) * 4.0,
+    );
+    let size = (lay.hi - lay.lo).max(DVec2::splat(1e-9)) * 1.1;
+    let center = (lay.lo + lay.hi) / 2.0;
+    let per_dot = (size.x / dots_w).max(size.y / dots_h);
+    let half = DVec2::new(dots_w, dots_h) * per_dot / 2.0;
+    (center - half, center + half)
+}
+
+fn segment(ctx: &mut Context, a: DVec2, b: DVec2, color: Color) {
+    ctx.draw(&CanvasLine {
+        x1: a.x,
+        y1: a.y,
+        x2: b.x,
+        y2: b.y,
+        color,
+    });
+}
+
+/// Every object's outline (bright where the tree touches it) and the image plane.
+fn paint_outlines(ctx: &mut Context, lay: &DiagramLayout, (lo, hi): (DVec2, DVec2), tc: bool) {
+    for (i, outline) in lay.outlines.iter().enumerate() {
+        let c = if lay.touched.contains(&i) {
+            term_color(palette::OBJECT_FILL, tc)
+        } else {
+            term_color([110, 110, 110], tc)
+        };
+        match *outline {
+            Outline::Ellipse { center, axes } => {
+                let at = |k: u32| {
+                    let t = std::f64::consts::TAU * f64::from(k) / 96.0;
+                    center + t.cos() * axes[0] + t.sin() * axes[1]
+                };
+                for k in 0..96 {
+                    segment(ctx, at(k), at(k + 1), c);
+                }
+            }
+            Outline::Line { point, dir, .. } => {
+                if let Some((a, b)) = clip_line(point, dir, lo, hi) {
+                    segment(ctx, a, b, c);
+                }
+            }
+            Outline::Polygon { ref points } => {
+                for (k, &a) in points.iter().enumerate() {
+                    segment(ctx, a, points[(k + 1) % points.len()], c);
+                }
+            }
+            Outline::Parallel => {}
+        }
+    }
+    if let Some((a, b, _)) = lay.image_plane {
+        segment(ctx, a, b, Color::Gray);
+    }
+}
+
+/// The rays (the selected one last, in white, over the others), the hits, the
+/// lights and the eye.
+fn paint_rays(
+    ctx: &mut Context,
+    lay: &DiagramLayout,
+    selected: Option<usize>,
+    (lo, hi): (DVec2, DVec2),
+    tc: bool,
+) {
+    let mut order: Vec<_> = lay.segments.iter().collect();
+    order.sort_by_key(|s| (Some(s.node) == selected && s.arrow, s.arrow));
+    for s in order {
+        let ends = match s.to {
+            Some(to) => clip_segment(s.from, to, lo, hi),
+            None => clip_ray(s.from, s.dir, lo, hi, 0.0),
+        };
+        let c = if Some(s.node) == selected && s.arrow {
+            Color::White
+        } else {
+            term_color(s.pen.color, tc)
+        };
+        if let Some((a, b)) = ends {
+            segment(ctx, a, b, c);
+        }
+    }
+    let hits: Vec<(f64, f64)> = lay.hits.iter().map(|h| (h.at.x, h.at.y)).collect();
+    ctx.draw(&Points {
+        coords: &hits,
+        color: Color::White,
+    });
+    let lights: Vec<(f64, f64)> = lay.lights.iter().map(|p| (p.x, p.y)).collect();
+    ctx.draw(&Points {
+        coords: &lights,
+        color: term_color(palette::LIGHT, tc),
+    });
+    ctx.print(
+        lay.eye.x,
+        lay.eye.y,
+        Span::styled("eye", Style::default().fg(Color::Gray)),
+    );
 }
 
 fn draw_help(frame: &mut Frame) {

@@ -6,12 +6,10 @@
 //! while parsing, `file: field.path: what is wrong` when a value parses but makes
 //! no sense (a negative radius, a singular transform).
 
-use std::collections::BTreeMap;
 use std::fmt::Display;
 use std::path::Path;
 
 use glam::{DAffine3, DVec3};
-use serde::Deserialize;
 
 use crate::geometry::cuboid::Cuboid;
 use crate::geometry::object::{Object, Shape};
@@ -21,6 +19,10 @@ use crate::geometry::transform::Transform;
 use crate::geometry::triangle::Triangle;
 use crate::scene::Scene;
 use crate::scene::camera::CameraSpec;
+use crate::scene::format::{
+    BoxFile, CameraFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, SceneFile,
+    SphereFile, TransformStep, TriangleFile,
+};
 use crate::scene::light::PointLight;
 use crate::scene::overrides::Overrides;
 use crate::scene::settings::RenderSettings;
@@ -125,135 +127,6 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     Builder { file, dir }.scene(raw)
 }
 
-// ---------------------------------------------------------------- the format
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SceneFile {
-    #[serde(default)]
-    description: Option<String>,
-    #[serde(default)]
-    camera: CameraFile,
-    #[serde(default)]
-    render: Overrides,
-    #[serde(default)]
-    background: Option<DVec3>,
-    #[serde(default)]
-    ambient_light: Option<DVec3>,
-    #[serde(default)]
-    materials: BTreeMap<String, MaterialFile>,
-    #[serde(default)]
-    lights: Vec<LightFile>,
-    #[serde(default)]
-    objects: Vec<ObjectFile>,
-}
-
-#[derive(Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct CameraFile {
-    eye: Option<DVec3>,
-    look_at: Option<DVec3>,
-    up: Option<DVec3>,
-    fov: Option<f64>,
-    u: Option<DVec3>,
-    v: Option<DVec3>,
-    n: Option<DVec3>,
-    half_width: Option<f64>,
-    half_height: Option<f64>,
-    distance: Option<f64>,
-}
-
-#[derive(Deserialize, Default)]
-#[serde(deny_unknown_fields)]
-struct MaterialFile {
-    color: Option<DVec3>,
-    checker: Option<CheckerFile>,
-    ambient: Option<f64>,
-    diffuse: Option<f64>,
-    specular: Option<f64>,
-    shininess: Option<f64>,
-    reflective: Option<f64>,
-    transparent: Option<f64>,
-    ior: Option<f64>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct CheckerFile {
-    colors: [DVec3; 2],
-    size: Option<f64>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct LightFile {
-    name: Option<String>,
-    position: DVec3,
-    color: Option<DVec3>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ObjectFile {
-    name: Option<String>,
-    sphere: Option<SphereFile>,
-    plane: Option<PlaneFile>,
-    #[serde(rename = "box")]
-    aligned_box: Option<BoxFile>,
-    triangle: Option<TriangleFile>,
-    mesh: Option<MeshFile>,
-    material: Option<String>,
-    #[serde(default)]
-    transform: Vec<TransformStep>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SphereFile {
-    center: Option<DVec3>,
-    radius: Option<f64>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct PlaneFile {
-    point: Option<DVec3>,
-    normal: Option<DVec3>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct BoxFile {
-    min: Option<DVec3>,
-    max: Option<DVec3>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct TriangleFile {
-    vertices: [DVec3; 3],
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct MeshFile {
-    file: String,
-    smooth: Option<bool>,
-}
-
-#[derive(Deserialize)]
-#[serde(rename_all = "snake_case", deny_unknown_fields)]
-enum TransformStep {
-    Translate(DVec3),
-    Scale(DVec3),
-    RotateX(f64),
-    RotateY(f64),
-    RotateZ(f64),
-    Rotate { axis: DVec3, degrees: f64 },
-}
-
-// ------------------------------------------------------------ validation
-
 /// The material objects get when they name none.
 const DEFAULT_MATERIAL: &str = "default";
 
@@ -340,30 +213,7 @@ impl Builder<'_> {
             || c.half_height.is_some()
             || c.distance.is_some();
         if !frame_given {
-            let look_at = c.look_at.unwrap_or(DVec3::ZERO);
-            let up = c.up.unwrap_or(DVec3::Y);
-            let fov = c.fov.unwrap_or(60.0);
-            if (look_at - eye).length() == 0.0 {
-                return Err(self.invalid("camera.look_at", "must differ from camera.eye"));
-            }
-            if up.cross(look_at - eye).length() <= 1e-9 * up.length() * (look_at - eye).length() {
-                return Err(self.invalid(
-                    "camera.up",
-                    "must not be zero or parallel to the view direction",
-                ));
-            }
-            if !(fov > 0.0 && fov < 180.0) {
-                return Err(self.invalid(
-                    "camera.fov",
-                    format_args!("must be between 0 and 180 degrees, got {fov}"),
-                ));
-            }
-            return Ok(CameraSpec::LookAt {
-                eye,
-                look_at,
-                up,
-                fov_degrees: fov,
-            });
+            return self.look_at_camera(eye, c);
         }
         if c.look_at.is_some() || c.up.is_some() || c.fov.is_some() {
             return Err(self.invalid(
@@ -371,13 +221,42 @@ impl Builder<'_> {
                 "give either look_at/up/fov or u/v/n/half_width/half_height/distance, not both",
             ));
         }
+        self.frame_camera(eye, c)
+    }
+
+    /// A camera given by eye, look-at point, up and field of view.
+    fn look_at_camera(&self, eye: DVec3, c: &CameraFile) -> Result<CameraSpec, SceneError> {
+        let look_at = c.look_at.unwrap_or(DVec3::ZERO);
+        let up = c.up.unwrap_or(DVec3::Y);
+        let fov = c.fov.unwrap_or(60.0);
+        if (look_at - eye).length() == 0.0 {
+            return Err(self.invalid("camera.look_at", "must differ from camera.eye"));
+        }
+        if up.cross(look_at - eye).length() <= 1e-9 * up.length() * (look_at - eye).length() {
+            return Err(self.invalid(
+                "camera.up",
+                "must not be zero or parallel to the view direction",
+            ));
+        }
+        if !(fov > 0.0 && fov < 180.0) {
+            return Err(self.invalid(
+                "camera.fov",
+                format_args!("must be between 0 and 180 degrees, got {fov}"),
+            ));
+        }
+        Ok(CameraSpec::LookAt {
+            eye,
+            look_at,
+            up,
+            fov_degrees: fov,
+        })
+    }
+
+    /// A camera given by the lecture's own parameters: u, v, n, W, H and N.
+    fn frame_camera(&self, eye: DVec3, c: &CameraFile) -> Result<CameraSpec, SceneError> {
+        let missing = "missing (an explicit camera needs u, v, n, half_width and half_height)";
         let need = |v: Option<DVec3>, name: &str| {
-            v.ok_or_else(|| {
-                self.invalid(
-                    format_args!("camera.{name}"),
-                    "missing (an explicit camera needs u, v, n, half_width and half_height)",
-                )
-            })
+            v.ok_or_else(|| self.invalid(format_args!("camera.{name}"), missing))
         };
         let (u, v, n) = (need(c.u, "u")?, need(c.v, "v")?, need(c.n, "n")?);
         let mut unit = [DVec3::ZERO; 3];
@@ -392,12 +271,9 @@ impl Builder<'_> {
         }
         let positive =
             |x: Option<f64>, name: &str, default: Option<f64>| -> Result<f64, SceneError> {
-                let x = x.or(default).ok_or_else(|| {
-                    self.invalid(
-                        format_args!("camera.{name}"),
-                        "missing (an explicit camera needs u, v, n, half_width and half_height)",
-                    )
-                })?;
+                let x = x
+                    .or(default)
+                    .ok_or_else(|| self.invalid(format_args!("camera.{name}"), missing))?;
                 if x > 0.0 {
                     Ok(x)
                 } else {
@@ -499,102 +375,8 @@ impl Builder<'_> {
     }
 
     fn object(&self, i: usize, o: &ObjectFile, material: usize) -> Result<Object, SceneError> {
-        let given = [
-            o.sphere.is_some(),
-            o.plane.is_some(),
-            o.aligned_box.is_some(),
-            o.triangle.is_some(),
-            o.mesh.is_some(),
-        ];
-        if given.iter().filter(|&&g| g).count() != 1 {
-            return Err(self.invalid(
-                format_args!("objects[{i}]"),
-                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
-            ));
-        }
-        let shape = match (&o.sphere, &o.plane) {
-            _ if o.aligned_box.is_some() => {
-                let b = o.aligned_box.as_ref().expect("checked");
-                let min = b.min.unwrap_or(DVec3::splat(-1.0));
-                let max = b.max.unwrap_or(DVec3::ONE);
-                if !(min.is_finite() && max.is_finite() && min.cmplt(max).all()) {
-                    return Err(self.invalid(
-                        format_args!("objects[{i}].box"),
-                        format_args!(
-                            "min must be below max on every axis, got min {min} and max {max}"
-                        ),
-                    ));
-                }
-                Shape::Box(Cuboid { min, max })
-            }
-            _ if o.triangle.is_some() => {
-                let [a, b, c] = o.triangle.as_ref().expect("checked").vertices;
-                let tri = Triangle { a, b, c };
-                if !(a.is_finite() && b.is_finite() && c.is_finite()) || tri.normal() == DVec3::ZERO
-                {
-                    return Err(self.invalid(
-                        format_args!("objects[{i}].triangle.vertices"),
-                        "must be three finite points not on one line",
-                    ));
-                }
-                Shape::Triangle(tri)
-            }
-            _ if o.mesh.is_some() => {
-                let m = o.mesh.as_ref().expect("checked");
-                let path = self.dir.join(&m.file);
-                let mesh =
-                    crate::scene::obj::load(&path, m.smooth.unwrap_or(true)).map_err(|error| {
-                        SceneError::Mesh {
-                            file: self.file.to_owned(),
-                            field: format!("objects[{i}].mesh.file"),
-                            error,
-                        }
-                    })?;
-                Shape::Mesh(std::sync::Arc::new(mesh))
-            }
-            (Some(s), None) => {
-                let radius = s.radius.unwrap_or(1.0);
-                if !radius.is_finite() || radius <= 0.0 {
-                    return Err(self.invalid(
-                        format_args!("objects[{i}].sphere.radius"),
-                        format_args!("must be > 0, got {radius}"),
-                    ));
-                }
-                Shape::Sphere(Sphere {
-                    center: s.center.unwrap_or(DVec3::ZERO),
-                    radius,
-                })
-            }
-            (None, Some(p)) => {
-                let normal = p
-                    .normal
-                    .unwrap_or(DVec3::Y)
-                    .try_normalize()
-                    .ok_or_else(|| {
-                        self.invalid(
-                            format_args!("objects[{i}].plane.normal"),
-                            "must not be zero",
-                        )
-                    })?;
-                Shape::Plane(Plane {
-                    point: p.point.unwrap_or(DVec3::ZERO),
-                    normal,
-                })
-            }
-            _ => unreachable!("exactly one shape was checked above"),
-        };
-        let transform = if o.transform.is_empty() {
-            None
-        } else {
-            let m = o
-                .transform
-                .iter()
-                .enumerate()
-                .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
-                    self.step(i, k, step).map(|s| s * m)
-                })?;
-            Some(Box::new(Transform::new(m).ok_or_else(|| self.invalid(format_args!("objects[{i}].transform"), "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted"))?))
-        };
+        let shape = self.shape(i, o)?;
+        let transform = self.transform(i, &o.transform)?;
         let name = o
             .name
             .clone()
@@ -605,6 +387,113 @@ impl Builder<'_> {
             transform,
             material,
         })
+    }
+
+    /// Object `i`'s one shape.
+    fn shape(&self, i: usize, o: &ObjectFile) -> Result<Shape, SceneError> {
+        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh) {
+            (Some(s), None, None, None, None) => self.sphere(i, s),
+            (None, Some(p), None, None, None) => self.plane(i, p),
+            (None, None, Some(b), None, None) => self.cuboid(i, b),
+            (None, None, None, Some(t), None) => self.triangle(i, t),
+            (None, None, None, None, Some(m)) => self.mesh(i, m),
+            _ => Err(self.invalid(
+                format_args!("objects[{i}]"),
+                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
+            )),
+        }
+    }
+
+    fn sphere(&self, i: usize, s: &SphereFile) -> Result<Shape, SceneError> {
+        let radius = s.radius.unwrap_or(1.0);
+        if !radius.is_finite() || radius <= 0.0 {
+            return Err(self.invalid(
+                format_args!("objects[{i}].sphere.radius"),
+                format_args!("must be > 0, got {radius}"),
+            ));
+        }
+        Ok(Shape::Sphere(Sphere {
+            center: s.center.unwrap_or(DVec3::ZERO),
+            radius,
+        }))
+    }
+
+    fn plane(&self, i: usize, p: &PlaneFile) -> Result<Shape, SceneError> {
+        let normal = p
+            .normal
+            .unwrap_or(DVec3::Y)
+            .try_normalize()
+            .ok_or_else(|| {
+                self.invalid(
+                    format_args!("objects[{i}].plane.normal"),
+                    "must not be zero",
+                )
+            })?;
+        Ok(Shape::Plane(Plane {
+            point: p.point.unwrap_or(DVec3::ZERO),
+            normal,
+        }))
+    }
+
+    fn cuboid(&self, i: usize, b: &BoxFile) -> Result<Shape, SceneError> {
+        let min = b.min.unwrap_or(DVec3::splat(-1.0));
+        let max = b.max.unwrap_or(DVec3::ONE);
+        if !(min.is_finite() && max.is_finite() && min.cmplt(max).all()) {
+            return Err(self.invalid(
+                format_args!("objects[{i}].box"),
+                format_args!("min must be below max on every axis, got min {min} and max {max}"),
+            ));
+        }
+        Ok(Shape::Box(Cuboid { min, max }))
+    }
+
+    fn triangle(&self, i: usize, t: &TriangleFile) -> Result<Shape, SceneError> {
+        let [a, b, c] = t.vertices;
+        let tri = Triangle { a, b, c };
+        if !(a.is_finite() && b.is_finite() && c.is_finite()) || tri.normal() == DVec3::ZERO {
+            return Err(self.invalid(
+                format_args!("objects[{i}].triangle.vertices"),
+                "must be three finite points not on one line",
+            ));
+        }
+        Ok(Shape::Triangle(tri))
+    }
+
+    /// A mesh from its OBJ file, found relative to the scene file.
+    fn mesh(&self, i: usize, m: &MeshFile) -> Result<Shape, SceneError> {
+        let path = self.dir.join(&m.file);
+        let mesh = crate::scene::obj::load(&path, m.smooth.unwrap_or(true)).map_err(|error| {
+            SceneError::Mesh {
+                file: self.file.to_owned(),
+                field: format!("objects[{i}].mesh.file"),
+                error,
+            }
+        })?;
+        Ok(Shape::Mesh(std::sync::Arc::new(mesh)))
+    }
+
+    /// Object `i`'s transform steps as one invertible transform; `None` without steps.
+    fn transform(
+        &self,
+        i: usize,
+        steps: &[TransformStep],
+    ) -> Result<Option<Box<Transform>>, SceneError> {
+        if steps.is_empty() {
+            return Ok(None);
+        }
+        let m = steps
+            .iter()
+            .enumerate()
+            .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
+                self.step(i, k, step).map(|s| s * m)
+            })?;
+        let transform = Transform::new(m).ok_or_else(|| {
+            self.invalid(
+                format_args!("objects[{i}].transform"),
+                "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted",
+            )
+        })?;
+        Ok(Some(Box::new(transform)))
     }
 
     /// One transform step's matrix; steps apply in the order written, so the

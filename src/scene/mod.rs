@@ -2,6 +2,7 @@
 //! [`crate::scene::loader`], so everything here is known to be well formed.
 
 pub mod camera;
+pub mod format;
 pub mod generate;
 pub mod light;
 pub mod loader;

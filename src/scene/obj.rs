@@ -46,13 +46,30 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
         message,
     };
     if let Err(e) = std::str::from_utf8(bytes) {
-        let line = bytes[..e.valid_up_to()]
-            .iter()
-            .filter(|&&b| b == b'\n')
-            .count()
-            + 1;
+        let line = lines_in(&bytes[..e.valid_up_to()]) + 1;
         return Err(error(Some(line), "not UTF-8 text".to_owned()));
     }
+    let models = read_models(bytes).map_err(|(line, message)| error(line, message))?;
+    if let Some(line) = first_non_finite(bytes) {
+        return Err(error(
+            Some(line),
+            "a coordinate is not a finite number".to_owned(),
+        ));
+    }
+    let mesh = join_models(&models, smooth);
+    if mesh.faces.is_empty() {
+        return Err(error(None, "has no faces (no `f` lines)".to_owned()));
+    }
+    Ok(mesh)
+}
+
+fn lines_in(bytes: &[u8]) -> usize {
+    bytes.iter().filter(|&&b| b == b'\n').count()
+}
+
+/// tobj's models (polygons split into triangles, points and lines dropped), or
+/// the line of the first error and what it is.
+fn read_models(bytes: &[u8]) -> Result<Vec<tobj::Model>, (Option<usize>, String)> {
     let options = tobj::LoadOptions {
         triangulate: true,
         ignore_points: true,
@@ -60,27 +77,25 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
         ..tobj::LoadOptions::default()
     };
     let mut reader = Lines { bytes, pos: 0 };
-    let (models, _) = tobj::load_obj_buf(&mut reader, &options, |_| {
+    let loaded = tobj::load_obj_buf(&mut reader, &options, |_| {
         Ok((Vec::new(), Default::default()))
-    })
-    .map_err(|e| {
+    });
+    loaded.map(|(models, _)| models).map_err(|e| {
         // tobj stops at the line it could not parse; errors found when a group
         // ends (an index out of range) are searched for.
         let line = match e {
             tobj::LoadError::FaceVertexOutOfBounds
             | tobj::LoadError::FaceNormalOutOfBounds
             | tobj::LoadError::FaceTexCoordOutOfBounds => first_bad_face(bytes),
-            _ => Some(
-                bytes[..reader.pos]
-                    .iter()
-                    .filter(|&&b| b == b'\n')
-                    .count()
-                    .max(1),
-            ),
+            _ => Some(lines_in(&bytes[..reader.pos]).max(1)),
         };
-        error(line, e.to_string())
-    })?;
+        (line, e.to_string())
+    })
+}
 
+/// All models as one mesh; with `smooth`, its vertex normals (unit length) when
+/// every face has them.
+fn join_models(models: &[tobj::Model], smooth: bool) -> Mesh {
     let mut positions = Vec::new();
     let mut normals = Vec::new();
     let mut faces = Vec::new();
@@ -89,15 +104,12 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
         && models.iter().all(|m| {
             !m.mesh.normals.is_empty() && m.mesh.normal_indices.len() == m.mesh.indices.len()
         });
-    for model in &models {
+    let vec3 = |p: &[f64]| DVec3::new(p[0], p[1], p[2]);
+    for model in models {
         let m = &model.mesh;
         let base = positions.len() as u32;
         let nbase = normals.len() as u32;
-        positions.extend(
-            m.positions
-                .chunks_exact(3)
-                .map(|p| DVec3::new(p[0], p[1], p[2])),
-        );
+        positions.extend(m.positions.chunks_exact(3).map(vec3));
         faces.extend(
             m.indices
                 .chunks_exact(3)
@@ -107,7 +119,7 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
             normals.extend(
                 m.normals
                     .chunks_exact(3)
-                    .map(|n| DVec3::new(n[0], n[1], n[2])),
+                    .map(|n| vec3(n).try_normalize().unwrap_or(DVec3::ZERO)),
             );
             face_normals.extend(
                 m.normal_indices
@@ -116,21 +128,7 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
             );
         }
     }
-    if let Some(line) = first_non_finite(bytes) {
-        return Err(error(
-            Some(line),
-            "a coordinate is not a finite number".to_owned(),
-        ));
-    }
-    if faces.is_empty() {
-        return Err(error(None, "has no faces (no `f` lines)".to_owned()));
-    }
-    if with_normals {
-        for n in &mut normals {
-            *n = n.try_normalize().unwrap_or(DVec3::ZERO);
-        }
-    }
-    Ok(Mesh::new(positions, normals, faces, face_normals))
+    Mesh::new(positions, normals, faces, face_normals)
 }
 
 /// The text as a reader that knows how far tobj has read.

@@ -186,12 +186,7 @@ impl TraceDocument {
 
     /// The steps of sample `k`'s tree, in execution order.
     pub fn steps(&self, k: usize) -> Vec<Step> {
-        let kind_of = |o: usize| {
-            self.objects
-                .get(o)
-                .map_or_else(|| "object".to_owned(), |o| o.kind.clone())
-        };
-        steps(&self.samples[k].tree, &kind_of)
+        steps(&self.samples[k].tree)
     }
 }
 

@@ -10,7 +10,9 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::geometry::hit::TestCounts;
-use crate::trace::recorder::{Branch, RayKind};
+/// The tracer's words for why a ray was cast and how a branch ended are the
+/// tree's too.
+pub use crate::trace::recorder::{Branch, RayKind};
 
 /// One ray's tree.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]

@@ -50,17 +50,7 @@ pub fn csv(points: &[Point]) -> String {
 /// The chart: time (x, log) against RMSE (y, log).
 pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Figure> {
     let mut fig = Figure::new(width, height, 44.0, 12.0)?;
-    let floor = points
-        .iter()
-        .map(|p| p.rmse)
-        .filter(|&e| e > 0.0)
-        .fold(f64::INFINITY, f64::min)
-        .min(1.0)
-        / 2.0;
-    let xy: Vec<DVec2> = points
-        .iter()
-        .map(|p| DVec2::new(p.seconds.max(1e-6).log10(), p.rmse.max(floor).log10()))
-        .collect();
+    let xy = log_positions(points);
     let lo = xy
         .iter()
         .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p));
@@ -74,6 +64,41 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
         hi + span * DVec2::new(0.08, 0.1),
         0.0,
     );
+    draw_grid(&mut fig);
+    let front = pareto(
+        &points
+            .iter()
+            .map(|p| (p.seconds, p.rmse))
+            .collect::<Vec<_>>(),
+    );
+    for w in front.windows(2) {
+        fig.line(xy[w[0]], xy[w[1]], Pen::dashed(palette::REFLECTED, 2.0));
+    }
+    draw_points(&mut fig, points, &xy, &front);
+    fig.frame_border();
+    draw_legend(&mut fig, &xy);
+    fig.caption(&format!("{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"), 15.0);
+    Some(fig)
+}
+
+/// Each point at (log₁₀ seconds, log₁₀ RMSE); an RMSE of 0 sits at half the
+/// smallest nonzero one, so it still has a place on a log axis.
+fn log_positions(points: &[Point]) -> Vec<DVec2> {
+    let floor = points
+        .iter()
+        .map(|p| p.rmse)
+        .filter(|&e| e > 0.0)
+        .fold(f64::INFINITY, f64::min)
+        .min(1.0)
+        / 2.0;
+    points
+        .iter()
+        .map(|p| DVec2::new(p.seconds.max(1e-6).log10(), p.rmse.max(floor).log10()))
+        .collect()
+}
+
+/// Grid lines at every power of ten, with their values.
+fn draw_grid(fig: &mut Figure) {
     let (vlo, vhi) = fig.visible();
     let grid = Pen::solid([225, 225, 225], 1.0);
     for k in (vlo.x.ceil() as i32)..=(vhi.x.floor() as i32) {
@@ -100,16 +125,11 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
             Anchor::Left,
         );
     }
-    let front = pareto(
-        &points
-            .iter()
-            .map(|p| (p.seconds, p.rmse))
-            .collect::<Vec<_>>(),
-    );
-    for w in front.windows(2) {
-        fig.line(xy[w[0]], xy[w[1]], Pen::dashed(palette::REFLECTED, 2.0));
-    }
-    // The defaults last, on top.
+}
+
+/// Each point as a dot (the defaults last, on top) with its label in the first
+/// spot beside it that overlaps no dot and no other label.
+fn draw_points(fig: &mut Figure, points: &[Point], xy: &[DVec2], front: &[usize]) {
     let mut order: Vec<usize> = (0..points.len()).collect();
     order.sort_by_key(|&i| points[i].default);
     let mut placed: Vec<(DVec2, DVec2)> = xy
@@ -132,7 +152,6 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
             color,
             Some(palette::INK),
         );
-        // The first spot beside the point where the label overlaps no dot and no other label.
         let c = fig.to_px(at);
         let w = f64::from(Figure::text_width(&p.label, 13.0));
         let spots = [
@@ -172,7 +191,10 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
             Anchor::Left,
         );
     }
-    fig.frame_border();
+}
+
+/// The legend, in the corner with the fewest points near it.
+fn draw_legend(fig: &mut Figure, xy: &[DVec2]) {
     let legend = [
         (Pen::solid(palette::REFRACTED, 6.0), "the defaults"),
         (Pen::solid(palette::REFLECTED, 6.0), "on the Pareto front"),
@@ -192,8 +214,6 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
     };
     let corner = (0..4).min_by_key(|&c| (covered(boxes[c]), c)).unwrap_or(0);
     fig.legend(&legend, 13.0, corner);
-    fig.caption(&format!("{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"), 15.0);
-    Some(fig)
 }
 
 fn seconds_label(log10: f64) -> String {

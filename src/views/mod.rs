@@ -3,7 +3,9 @@
 //! read the tree and the scene, never the tracer.
 
 pub mod chart;
+pub mod clip;
 pub mod diagram;
+pub mod diagram_layout;
 pub mod figure;
 pub mod numbers;
 pub mod projection;

@@ -9,6 +9,7 @@
 use glam::{DMat3, DVec2, DVec3};
 
 use crate::geometry::object::{Object, Shape};
+use crate::geometry::sphere::Sphere;
 use crate::scene::camera::Camera;
 use crate::tree::document::TraceDocument;
 
@@ -106,80 +107,82 @@ impl Projection {
             Some(t) => (t.to_world.matrix3, t.to_world.translation),
             None => (DMat3::IDENTITY, DVec3::ZERO),
         };
+        let to_world = |p: DVec3| linear * p + translation;
         match &object.shape {
-            Shape::Box(_) | Shape::Triangle(_) | Shape::Mesh(_) => {
-                let corners: Vec<DVec3> = match &object.shape {
-                    Shape::Triangle(t) => vec![t.a, t.b, t.c],
-                    Shape::Mesh(m) => m.positions.clone(),
-                    _ => {
-                        let b = object.shape.bounds().expect("a box is bounded");
-                        (0..8)
-                            .map(|i: u32| {
-                                DVec3::select(
-                                    glam::BVec3::new(i & 1 != 0, i & 2 != 0, i & 4 != 0),
-                                    b.max,
-                                    b.min,
-                                )
-                            })
-                            .collect()
-                    }
-                };
-                Outline::Polygon {
-                    points: convex_hull(
-                        corners
-                            .into_iter()
-                            .map(|c| self.point(linear * c + translation))
-                            .collect(),
-                    ),
-                }
-            }
-            Shape::Sphere(s) => {
-                // The ball is {C + L·r·p : |p| ≤ 1}; its shadow on the plane is the
-                // ellipse {A·p} with A = P·L·r (P the 2×3 projection), whose shape
-                // matrix A·Aᵀ gives the axes as eigenvectors scaled by √eigenvalue.
-                let center = self.point(linear * s.center + translation);
-                let rows = [
-                    linear.transpose() * self.right * s.radius,
-                    linear.transpose() * self.up * s.radius,
-                ];
-                let (a, b, c) = (
-                    rows[0].dot(rows[0]),
-                    rows[0].dot(rows[1]),
-                    rows[1].dot(rows[1]),
-                );
-                let mean = (a + c) / 2.0;
-                let spread = (((a - c) / 2.0).powi(2) + b * b).sqrt();
-                let (l1, l2) = (mean + spread, (mean - spread).max(0.0));
-                let e1 = if b.abs() > 1e-12 * (a + c) {
-                    DVec2::new(b, l1 - a).normalize()
-                } else if a >= c {
-                    DVec2::X
-                } else {
-                    DVec2::Y
-                };
-                Outline::Ellipse {
-                    center,
-                    axes: [e1 * l1.sqrt(), e1.perp() * l2.sqrt()],
-                }
-            }
+            Shape::Sphere(s) => self.ellipse(s, linear, translation),
             Shape::Plane(p) => {
-                let point = linear * p.point + translation;
                 let normal = object
                     .transform
                     .as_ref()
                     .map_or(p.normal, |t| (t.normal_to_world * p.normal).normalize());
-                // Where the plane crosses the diagram plane: a·(right·m) + b·(up·m) = (p₀ - O)·m.
-                let n2 = self.vector(normal);
-                if n2.length() < 1e-9 {
-                    return Outline::Parallel;
-                }
-                let k = (point - self.origin).dot(normal);
-                Outline::Line {
-                    point: n2 * k / n2.length_squared(),
-                    dir: n2.perp().normalize(),
-                    outward: n2.normalize(),
-                }
+                self.plane_line(to_world(p.point), normal)
             }
+            Shape::Triangle(t) => self.hull([t.a, t.b, t.c].map(to_world).to_vec()),
+            Shape::Mesh(m) => self.hull(m.positions.iter().map(|&p| to_world(p)).collect()),
+            Shape::Box(_) => {
+                let b = object.shape.bounds().expect("a box is bounded");
+                let corners = (0..8).map(|i: u32| {
+                    DVec3::select(
+                        glam::BVec3::new(i & 1 != 0, i & 2 != 0, i & 4 != 0),
+                        b.max,
+                        b.min,
+                    )
+                });
+                self.hull(corners.map(to_world).collect())
+            }
+        }
+    }
+
+    /// A box, triangle or mesh: the convex hull of its projected world vertices.
+    fn hull(&self, world: Vec<DVec3>) -> Outline {
+        Outline::Polygon {
+            points: convex_hull(world.into_iter().map(|p| self.point(p)).collect()),
+        }
+    }
+
+    /// A sphere under the linear map `linear` and `translation`: the ball is
+    /// {C + L·r·p : |p| ≤ 1}; its shadow on the plane is the ellipse {A·p} with
+    /// A = P·L·r (P the 2×3 projection), whose shape matrix A·Aᵀ gives the axes
+    /// as eigenvectors scaled by √eigenvalue.
+    fn ellipse(&self, s: &Sphere, linear: DMat3, translation: DVec3) -> Outline {
+        let center = self.point(linear * s.center + translation);
+        let rows = [
+            linear.transpose() * self.right * s.radius,
+            linear.transpose() * self.up * s.radius,
+        ];
+        let (a, b, c) = (
+            rows[0].dot(rows[0]),
+            rows[0].dot(rows[1]),
+            rows[1].dot(rows[1]),
+        );
+        let mean = (a + c) / 2.0;
+        let spread = (((a - c) / 2.0).powi(2) + b * b).sqrt();
+        let (l1, l2) = (mean + spread, (mean - spread).max(0.0));
+        let e1 = if b.abs() > 1e-12 * (a + c) {
+            DVec2::new(b, l1 - a).normalize()
+        } else if a >= c {
+            DVec2::X
+        } else {
+            DVec2::Y
+        };
+        Outline::Ellipse {
+            center,
+            axes: [e1 * l1.sqrt(), e1.perp() * l2.sqrt()],
+        }
+    }
+
+    /// Where the plane through world `point` with unit `normal` crosses the
+    /// diagram plane: `a·(right·m) + b·(up·m) = (p₀ - O)·m`.
+    fn plane_line(&self, point: DVec3, normal: DVec3) -> Outline {
+        let n2 = self.vector(normal);
+        if n2.length() < 1e-9 {
+            return Outline::Parallel;
+        }
+        let k = (point - self.origin).dot(normal);
+        Outline::Line {
+            point: n2 * k / n2.length_squared(),
+            dir: n2.perp().normalize(),
+            outward: n2.normalize(),
         }
     }
 }

@@ -3,7 +3,8 @@
 use std::path::PathBuf;
 
 use anyhow::Result;
-use raytree::views::diagram::{self, Labels, Options};
+use raytree::views::diagram;
+use raytree::views::diagram_layout::{Labels, Options};
 use raytree::views::projection::View;
 
 use crate::args::{SceneArgs, TargetArgs, parse_size};

@@ -1,0 +1,135 @@
+//! The scene file's shape as serde reads it: every field optional where the
+//! format has a default, unknown fields refused. [`crate::scene::loader`] turns
+//! it into a checked [`crate::scene::Scene`]; `scenes/README.md` documents it.
+
+use std::collections::BTreeMap;
+
+use glam::DVec3;
+use serde::Deserialize;
+
+use crate::scene::overrides::Overrides;
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SceneFile {
+    #[serde(default)]
+    pub(super) description: Option<String>,
+    #[serde(default)]
+    pub(super) camera: CameraFile,
+    #[serde(default)]
+    pub(super) render: Overrides,
+    #[serde(default)]
+    pub(super) background: Option<DVec3>,
+    #[serde(default)]
+    pub(super) ambient_light: Option<DVec3>,
+    #[serde(default)]
+    pub(super) materials: BTreeMap<String, MaterialFile>,
+    #[serde(default)]
+    pub(super) lights: Vec<LightFile>,
+    #[serde(default)]
+    pub(super) objects: Vec<ObjectFile>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CameraFile {
+    pub(super) eye: Option<DVec3>,
+    pub(super) look_at: Option<DVec3>,
+    pub(super) up: Option<DVec3>,
+    pub(super) fov: Option<f64>,
+    pub(super) u: Option<DVec3>,
+    pub(super) v: Option<DVec3>,
+    pub(super) n: Option<DVec3>,
+    pub(super) half_width: Option<f64>,
+    pub(super) half_height: Option<f64>,
+    pub(super) distance: Option<f64>,
+}
+
+#[derive(Deserialize, Default)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MaterialFile {
+    pub(super) color: Option<DVec3>,
+    pub(super) checker: Option<CheckerFile>,
+    pub(super) ambient: Option<f64>,
+    pub(super) diffuse: Option<f64>,
+    pub(super) specular: Option<f64>,
+    pub(super) shininess: Option<f64>,
+    pub(super) reflective: Option<f64>,
+    pub(super) transparent: Option<f64>,
+    pub(super) ior: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct CheckerFile {
+    pub(super) colors: [DVec3; 2],
+    pub(super) size: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct LightFile {
+    pub(super) name: Option<String>,
+    pub(super) position: DVec3,
+    pub(super) color: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ObjectFile {
+    pub(super) name: Option<String>,
+    pub(super) sphere: Option<SphereFile>,
+    pub(super) plane: Option<PlaneFile>,
+    #[serde(rename = "box")]
+    pub(super) aligned_box: Option<BoxFile>,
+    pub(super) triangle: Option<TriangleFile>,
+    pub(super) mesh: Option<MeshFile>,
+    pub(super) material: Option<String>,
+    #[serde(default)]
+    pub(super) transform: Vec<TransformStep>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct SphereFile {
+    pub(super) center: Option<DVec3>,
+    pub(super) radius: Option<f64>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct PlaneFile {
+    pub(super) point: Option<DVec3>,
+    pub(super) normal: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct BoxFile {
+    pub(super) min: Option<DVec3>,
+    pub(super) max: Option<DVec3>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct TriangleFile {
+    pub(super) vertices: [DVec3; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct MeshFile {
+    pub(super) file: String,
+    pub(super) smooth: Option<bool>,
+}
+
+#[derive(Deserialize)]
+#[serde(rename_all = "snake_case", deny_unknown_fields)]
+pub(super) enum TransformStep {
+    Translate(DVec3),
+    Scale(DVec3),
+    RotateX(f64),
+    RotateY(f64),
+    RotateZ(f64),
+    Rotate { axis: DVec3, degrees: f64 },
+}
