@@ -13,9 +13,9 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 
 echo "== wall time, hooks present (no-op recorder)"
-cargo bench --bench render -- whitted_640x480 2>/dev/null | grep -A1 whitted
+cargo bench -p raytree-benches --bench render -- whitted_640x480 2>/dev/null | grep -A1 whitted
 echo "== wall time, hooks compiled out"
-RUSTFLAGS="--cfg raytree_no_hooks" CARGO_TARGET_DIR=target/no_hooks cargo bench --bench render -- whitted_640x480 2>/dev/null | grep -A1 whitted
+RUSTFLAGS="--cfg raytree_no_hooks" CARGO_TARGET_DIR=target/no_hooks cargo bench -p raytree-benches --bench render -- whitted_640x480 2>/dev/null | grep -A1 whitted
 
 if command -v valgrind >/dev/null; then
   cargo build --release --quiet

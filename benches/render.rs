@@ -1,4 +1,4 @@
-//! `cargo bench`: intersection tests and a whole render of the Whitted scene.
+//! `cargo bench -p raytree-benches --bench render`: intersection tests and a whole render of the Whitted scene.
 //!
 //! Throughput is in rays (or tests) per second: divan prints it next to the time.
 //! A render's ray count (primary, shadow, reflected, refracted) is deterministic,

@@ -1,4 +1,4 @@
-//! `cargo bench --bench scenes`: what the bounding volume hierarchy buys, in
+//! `cargo bench -p raytree-benches --bench scenes`: what the bounding volume hierarchy buys, in
 //! figures printed as tables (the README quotes them).
 //!
 //! 1. Rays per second on the shipped scenes (Whitted, 2,000 spheres, the Gaspra
@@ -38,7 +38,7 @@ fn time_render(scene: &Scene, runs: usize) -> (f64, u64) {
 }
 
 fn main() {
-    // `cargo test --benches` runs benches once as tests: keep that quick.
+    // `cargo test -p raytree-benches --benches` runs benches once as tests: keep that quick.
     let quick = std::env::args().any(|a| a == "--test" || a == "--quick");
     let threads = rayon::current_num_threads();
     println!("raytree benchmarks on {threads} threads (medians; tracing only)\n");
@@ -48,7 +48,7 @@ fn main() {
         "{:<14} {:>8} {:>10} {:>10} {:>12} {:>10}",
         "scene", "objects", "accel", "rays", "median ms", "M rays/s"
     );
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     for name in ["whitted.json", "spheres.json", "gaspra.json"] {
         let scene = raytree::scene::loader::load(&root.join(name)).expect("shipped scene");
         let accel = if Tracer::new(&scene).accelerator().bvh().is_some() {

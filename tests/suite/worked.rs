@@ -2,9 +2,7 @@
 //! Each test shows its working; tolerances are a few ULPs of values near 1
 //! (1e-12), far below any error a wrong formula would make.
 
-mod common;
-
-use common::{Log, close, scene};
+use crate::common::{Log, close, scene};
 use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::trace::recorder::{Branch, NoRecorder, RayKind, ShadowOutcome};

@@ -2,7 +2,7 @@
 //! projection, byte-for-byte determinism, and two golden figures.
 //!
 //! Regenerate the goldens after an intended change with
-//! `RAYTREE_BLESS=1 cargo test --test diagram`, and look at them.
+//! `RAYTREE_BLESS=1 cargo test --release diagram`, and look at them.
 
 use glam::DVec2;
 use raytree::geometry::object::Shape;

@@ -3,7 +3,7 @@
 //! field; the first difference is reported with its path.
 //!
 //! Regenerate them after an intended change with
-//! `RAYTREE_BLESS=1 cargo test --test golden_traces`, and read the diff.
+//! `RAYTREE_BLESS=1 cargo test --release golden_traces`, and read the diff.
 //!
 //! Tolerance: numbers agree to 1e-9 relative (1e-9 absolute near zero). The same
 //! code on the same platform reproduces every bit; another platform's libm may

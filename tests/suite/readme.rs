@@ -1,5 +1,5 @@
 //! The README's example output is what the program prints today.
-//! `RAYTREE_BLESS=1 cargo test --test readme` rewrites it.
+//! `RAYTREE_BLESS=1 cargo test --release readme` rewrites it.
 
 use std::process::Command;
 
@@ -36,7 +36,7 @@ fn readme_trace_example_is_current() {
     assert_eq!(
         &readme[block_start..block_end],
         now,
-        "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --test readme"
+        "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
 }
 
@@ -58,7 +58,7 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
     assert_eq!((shown.width(), shown.height()), (image.width, image.height));
     assert!(
         shown.as_raw() == &now,
-        "docs/whitted.png is stale: RAYTREE_BLESS=1 cargo test --test readme"
+        "docs/whitted.png is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
 }
 

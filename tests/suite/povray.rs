@@ -12,7 +12,7 @@ fn root() -> PathBuf {
 /// same name (and the glass interior for glass).
 fn spheres_inc(scene: &serde_json::Value) -> String {
     let mut out = String::from(
-        "// The spheres of scenes/spheres.json, one per line, for spheres.pov.\n// Written by tests/povray.rs (RAYTREE_BLESS=1 cargo test --test povray).\n",
+        "// The spheres of scenes/spheres.json, one per line, for spheres.pov.\n// Written by tests/suite/povray.rs (RAYTREE_BLESS=1 cargo test --release povray).\n",
     );
     for o in scene["objects"].as_array().unwrap() {
         let Some(s) = o.get("sphere") else { continue };
@@ -44,7 +44,7 @@ fn the_sphere_list_matches_scenes_spheres_json() {
     let committed = std::fs::read_to_string(&path).unwrap();
     assert!(
         committed == expected,
-        "benches/povray/spheres.inc is stale: RAYTREE_BLESS=1 cargo test --test povray"
+        "benches/povray/spheres.inc is stale: RAYTREE_BLESS=1 cargo test --release povray"
     );
     assert_eq!(
         committed

@@ -1,5 +1,4 @@
 //! Helpers shared by the integration tests.
-#![allow(dead_code)]
 
 use glam::DVec3;
 use raytree::scene::Scene;

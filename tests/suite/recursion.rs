@@ -2,7 +2,7 @@
 //! depth of 32 on every shipped scene: no 8-bit pixel moves by more than one
 //! level, and fewer rays are traced.
 
-mod common;
+use crate::common;
 
 use indicatif::ProgressBar;
 use raytree::io::image::to_rgb8;

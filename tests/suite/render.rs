@@ -1,6 +1,6 @@
 //! The renderer: deterministic whatever the thread count, and never a NaN.
 
-mod common;
+use crate::common;
 
 use indicatif::ProgressBar;
 use raytree::trace::render::render;

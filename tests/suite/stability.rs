@@ -1,6 +1,6 @@
 //! The stability suite: each case puts the lecture's (textbook) method and the
 //! default side by side exactly where textbook methods fail, prints the figures
-//! for both (`cargo test --test stability -- --nocapture`), and asserts that the
+//! for both (`cargo test --release stability -- --nocapture`), and asserts that the
 //! default holds (and, where the issue is the textbook method's, that it fails).
 //!
 //! # Acne and leaks at three scales
@@ -24,9 +24,9 @@
 //! faces the light and whose segment clears the wall (`e > 1.01`) must be lit:
 //! acne on a transformed, flattened object.
 
-mod common;
+use crate::common;
 
-use common::scene;
+use crate::common::scene;
 use glam::{DQuat, DVec3};
 use raytree::methods::Offset;
 use raytree::trace::recorder::{HitEvent, Recorder, ShadowEvent, ShadowOutcome};

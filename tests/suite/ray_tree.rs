@@ -2,7 +2,7 @@
 //! for bit, its JSON reads back, every field is documented, and its steps follow
 //! the algorithm's order.
 
-mod common;
+use crate::common;
 
 use std::collections::BTreeSet;
 

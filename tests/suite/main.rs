@@ -1,0 +1,21 @@
+//! The integration tests, one binary (one link instead of one per file:
+//! the suite builds in a fraction of the time). Each module is one subject;
+//! `cargo test --release MODULE` runs one, e.g. `cargo test --release golden_traces`.
+
+mod accel;
+mod architecture;
+mod chart;
+mod cli;
+mod common;
+mod diagram;
+mod golden_traces;
+mod inspector;
+mod inspector_tmux;
+mod povray;
+mod ray_tree;
+mod readme;
+mod recursion;
+mod render;
+mod scenes;
+mod stability;
+mod worked;
