@@ -18,13 +18,18 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-pub mod geometry;
-pub mod inspector;
-pub mod io;
-pub mod math;
-pub mod methods;
-pub mod scene;
-pub mod shading;
-pub mod trace;
-pub mod tree;
-pub mod views;
+// The lecture's formulas, bottom up.
+pub mod math; // the ray S + t·c, floating-point error bounds, bounding boxes
+pub mod geometry; // ray–object intersection, transformed primitives, the hierarchy
+pub mod shading; // local illumination, reflection, refraction
+pub mod scene; // the camera and image plane, lights, materials, objects, scene files
+
+// Running the algorithm, and showing its work.
+pub mod trace; // raytrace(): the recursion, its recorder, every pixel on all cores
+pub mod tree; // the ray tree of one pixel, its steps, the trace document
+pub mod views; // the text trace, ray diagrams, charts
+pub mod inspector; // the terminal inspector
+
+// Anyone's.
+pub mod methods; // the selectable methods: the lecture's and the robust ones
+pub mod io; // images and output files

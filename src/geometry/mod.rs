@@ -2,12 +2,12 @@
 //! transformed primitives, the object that ties a shape to its material, and the
 //! bounding volume hierarchy that avoids most tests.
 
-pub mod bvh;
-pub mod cuboid;
-pub mod hit;
-pub mod mesh;
-pub mod object;
-pub mod plane;
-pub mod sphere;
-pub mod transform;
-pub mod triangle;
+pub mod hit; // what a test returns: the roots along the ray, the surface at a hit
+pub mod sphere; // the lecture's quadratic and its stable form
+pub mod plane; // ray–plane
+pub mod cuboid; // ray–box by slabs
+pub mod triangle; // watertight and Möller–Trumbore
+pub mod mesh; // many triangles, one object, a hierarchy of their own
+pub mod transform; // transformed primitives: the inverse-transformed ray
+pub mod object; // a shape, its transform and its material
+pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy

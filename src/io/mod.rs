@@ -2,7 +2,7 @@
 //! sRGB, image files, output files written atomically, and the difference
 //! between two images.
 
-pub mod image;
-pub mod image_diff;
-pub mod image_file;
-pub mod output;
+pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
+pub mod image_file; // PNG and PPM
+pub mod output; // files written atomically
+pub mod image_diff; // how far apart two images are

@@ -1,6 +1,6 @@
 //! Numbers under everything: floating-point error bounds, the ray `S + t·c`,
 //! bounding boxes. Knows nothing of scenes.
 
-pub mod bounds;
-pub mod float;
-pub mod ray;
+pub mod ray; // the ray S + t·c
+pub mod float; // floating-point error bounds and the robust ray-origin offset
+pub mod bounds; // axis-aligned bounding boxes and the slab test

@@ -1,15 +1,15 @@
 //! The scene model: what the tracer reads. Built and validated by
 //! [`crate::scene::loader`], so everything here is known to be well formed.
 
-pub mod camera;
-pub mod format;
-pub mod generate;
-pub mod light;
-pub mod loader;
-pub mod obj;
-pub mod overrides;
-pub mod settings;
-pub mod source;
+pub mod camera; // eye, u, v, n, W, H, N: the image plane and its pixels
+pub mod light; // point lights
+pub mod settings; // image size, sampling, recursion limits, methods
+pub mod overrides; // the settings a scene file or the command line changes
+pub mod format; // the scene file's shape, as serde reads it
+pub mod loader; // the scene file, checked, into a Scene
+pub mod obj; // OBJ meshes
+pub mod source; // which scene file, by name and hash
+pub mod generate; // scenes made by program
 
 use glam::DVec3;
 

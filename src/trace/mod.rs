@@ -2,9 +2,9 @@
 //! to, the tracer itself, the accelerator that picks the objects a ray is tested
 //! against, and the renderer that traces every pixel.
 
-pub mod accelerator;
-pub mod pixel;
-pub mod recorder;
-pub mod render;
-pub mod sweep;
-pub mod tracer;
+pub mod recorder; // what the tracer reports, and to whom
+pub mod tracer; // the lecture's raytrace(): closest hit, shadow rays, reflection, refraction
+pub mod accelerator; // which objects a ray is tested against
+pub mod pixel; // one pixel's rays: its center, a grid, or adaptive subdivision
+pub mod render; // every pixel, on all cores
+pub mod sweep; // speed against accuracy, measured

@@ -1,7 +1,7 @@
 //! The ray tree: every ray one pixel spawns, recorded; its steps in the order
 //! the algorithm ran them; the trace document that saves it as JSON.
 
-pub mod document;
-pub mod ray_tree;
-pub mod record;
-pub mod steps;
+pub mod ray_tree; // the rays one pixel spawns, with every number
+pub mod record; // recording a pixel or a ray
+pub mod steps; // the tree read in the order the algorithm ran
+pub mod document; // the trace document: JSON, versioned, read back checked
