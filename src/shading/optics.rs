@@ -54,6 +54,7 @@ pub struct Shares {
 /// constant weights, 1 under total internal reflection), the reflected ray gets
 /// `k_rfl + k_rfa·R` and the refracted ray `k_rfa·(1 - R)`: the transmitted
 /// light is never lost or doubled.
+#[inline(always)]
 pub fn shares(
     c: DVec3,
     n: DVec3,

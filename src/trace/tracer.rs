@@ -183,6 +183,7 @@ impl<'s> Tracer<'s> {
 
     /// The surface at a found hit, which side the ray hit, and the refractive
     /// indices on either side of it.
+    #[inline(always)]
     fn hit_at(
         &self,
         ray: &Ray,
@@ -322,6 +323,7 @@ impl<'s> Tracer<'s> {
     /// refraction is impossible (total internal reflection), its coefficient is
     /// zero, the parent is at the maximum depth, or its weight would fall below
     /// the cutoff. It starts just off the surface, on the side it travels into.
+    #[inline(always)]
     fn spawn<R: Recorder>(
         &self,
         kind: RayKind,
