@@ -106,6 +106,7 @@ fn inspector_on_whitted() -> raytree::inspector::App {
     app.areas = raytree::inspector::Areas {
         image: Rect::new(1, 1, 78, 27),
         tree: Rect::new(81, 1, 78, 19),
+        details: Rect::new(80, 21, 80, 25),
     };
     app
 }

@@ -51,6 +51,8 @@ pub struct Areas {
     pub image: Rect,
     /// The tree pane's inside.
     pub tree: Rect,
+    /// The selected ray's pane, border included.
+    pub details: Rect,
 }
 
 /// The inspector's state.
@@ -65,6 +67,10 @@ pub struct App {
     pub zoom: u32,
     /// The selected pixel's trace.
     pub trace: Option<TraceDocument>,
+    /// Which of the pixel's samples the panes show (0 is the first).
+    pub sample: usize,
+    /// How many lines of the selected ray's details are scrolled past.
+    pub detail_scroll: u16,
     /// Nodes whose children are shown.
     pub expanded: BTreeSet<usize>,
     /// The selected line of the tree pane.
@@ -135,6 +141,8 @@ impl App {
             cursor: (0, 0),
             zoom: 0,
             trace: None,
+            sample: 0,
+            detail_scroll: 0,
             expanded: BTreeSet::new(),
             selected: 0,
             steps: Vec::new(),
@@ -184,18 +192,20 @@ impl App {
     }
 
     fn set_trace(&mut self, trace: TraceDocument) {
-        self.steps = trace.steps(0);
+        self.sample = self.sample.min(trace.samples.len().saturating_sub(1));
+        self.steps = trace.steps(self.sample);
         self.trace = Some(trace);
         self.expanded = BTreeSet::from([0]);
         self.selected = 0;
         self.step = None;
+        self.detail_scroll = 0;
     }
 
     /// The tree pane's lines: the item and its indentation.
     pub fn items(&self) -> Vec<(Item, usize)> {
         let mut out = Vec::new();
         if let Some(t) = &self.trace {
-            let nodes = &t.samples[0].tree.nodes;
+            let nodes = &t.samples[self.sample].tree.nodes;
             if !nodes.is_empty() {
                 self.push_items(nodes, 0, 0, &mut out);
             }
@@ -230,7 +240,7 @@ impl App {
     /// Whether node `i` has anything to expand.
     pub fn expandable(&self, i: usize) -> bool {
         self.trace.as_ref().is_some_and(|t| {
-            let n = &t.samples[0].tree.nodes[i];
+            let n = &t.samples[self.sample].tree.nodes[i];
             !n.shadow_rays.is_empty() || n.children().next().is_some()
         })
     }
@@ -277,6 +287,9 @@ impl App {
             KeyCode::Char('-') | KeyCode::Char('_') => self.zoom_by(-1),
             KeyCode::Char('g') => self.goto = Some(String::new()),
             KeyCode::Char('e') => self.expand_all(),
+            KeyCode::Char('s') => self.next_sample(),
+            KeyCode::PageDown => self.scroll_details(10),
+            KeyCode::PageUp => self.scroll_details(-10),
             KeyCode::Char('t') => self.focus = Focus::Tree,
             KeyCode::Char('i') => self.focus = Focus::Image,
             code => match self.focus {
@@ -313,9 +326,13 @@ impl App {
             return;
         };
         match code {
-            KeyCode::Up | KeyCode::Char('k') => self.selected = self.selected.saturating_sub(1),
+            KeyCode::Up | KeyCode::Char('k') => {
+                self.selected = self.selected.saturating_sub(1);
+                self.detail_scroll = 0;
+            }
             KeyCode::Down | KeyCode::Char('j') => {
-                self.selected = (self.selected + 1).min(items.len().saturating_sub(1))
+                self.selected = (self.selected + 1).min(items.len().saturating_sub(1));
+                self.detail_scroll = 0;
             }
             KeyCode::Enter | KeyCode::Right | KeyCode::Char('l') => {
                 if let Item::Ray(n) = item {
@@ -333,7 +350,7 @@ impl App {
                         Item::Ray(n) => self
                             .trace
                             .as_ref()
-                            .and_then(|t| t.samples[0].tree.nodes[n].parent),
+                            .and_then(|t| t.samples[self.sample].tree.nodes[n].parent),
                     };
                     if let Some(p) = parent {
                         self.select_node(p);
@@ -347,7 +364,7 @@ impl App {
     /// Selects node `n`'s line, expanding its ancestors.
     pub fn select_node(&mut self, n: usize) {
         let Some(t) = &self.trace else { return };
-        let nodes = &t.samples[0].tree.nodes;
+        let nodes = &t.samples[self.sample].tree.nodes;
         let mut p = nodes[n].parent;
         while let Some(i) = p {
             self.expanded.insert(i);
@@ -364,8 +381,22 @@ impl App {
 
     fn expand_all(&mut self) {
         if let Some(t) = &self.trace {
-            self.expanded = (0..t.samples[0].tree.nodes.len()).collect();
+            self.expanded = (0..t.samples[self.sample].tree.nodes.len()).collect();
         }
+    }
+
+    /// Scrolls the selected ray's details by `by` lines.
+    pub fn scroll_details(&mut self, by: i32) {
+        self.detail_scroll = self.detail_scroll.saturating_add_signed(by as i16);
+    }
+
+    /// Shows the pixel's next sample (after the last, the first again).
+    pub fn next_sample(&mut self) {
+        let Some(trace) = self.trace.take() else {
+            return;
+        };
+        self.sample = (self.sample + 1) % trace.samples.len().max(1);
+        self.set_trace(trace);
     }
 
     /// Moves `by` steps through the algorithm and selects the step's ray.
@@ -440,6 +471,14 @@ impl App {
     /// Handles a mouse event: a left click on the image selects that pixel; on the
     /// tree, that line.
     pub fn on_mouse(&mut self, m: MouseEvent) {
+        if self.areas.details.contains((m.column, m.row).into()) {
+            match m.kind {
+                MouseEventKind::ScrollDown => self.scroll_details(3),
+                MouseEventKind::ScrollUp => self.scroll_details(-3),
+                _ => {}
+            }
+            return;
+        }
         if m.kind != MouseEventKind::Down(MouseButton::Left) {
             return;
         }
@@ -514,7 +553,7 @@ impl App {
         let Some(t) = &self.trace else {
             return String::new();
         };
-        let node = &t.samples[0].tree.nodes[n];
+        let node = &t.samples[self.sample].tree.nodes[n];
         if node.hit.is_none() {
             return "miss → background".to_owned();
         }

@@ -38,6 +38,14 @@ pub const KEYS: &[(&str, &str)] = &[
     ),
     ("←", "collapse the selected ray, or go to its parent"),
     ("e", "expand the whole tree"),
+    (
+        "s",
+        "show the pixel's next sample (with several samples per pixel)",
+    ),
+    (
+        "PgUp / PgDn",
+        "scroll the selected ray's numbers (or the mouse wheel over them)",
+    ),
     ("n / space", "next step of the algorithm"),
     ("p / Backspace", "previous step"),
     ("?", "this help"),
@@ -99,6 +107,7 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
     app.areas = Areas {
         image: image_block.inner(image_area),
         tree: tree_block.inner(tree_area),
+        details: detail_area,
     };
     app.request_picture();
 
@@ -129,7 +138,7 @@ fn step_line_text(app: &App) -> Line<'static> {
             Span::raw(
                 app.trace
                     .as_ref()
-                    .map_or_else(String::new, |t| describe(t, 0, &app.steps[s])),
+                    .map_or_else(String::new, |t| describe(t, app.sample, &app.steps[s]).0),
             ),
         ]),
         (None, None) => Line::from(format!(
@@ -150,6 +159,14 @@ fn status_line_text(app: &App) -> Line<'static> {
         app.source.file,
         app.trace_time.as_secs_f64() * 1e3
     );
+    if let Some(t) = app.trace.as_ref().filter(|t| t.samples.len() > 1) {
+        status = format!(
+            "{status} · sample {} of {} (s: next) · pixel mean {}",
+            app.sample + 1,
+            t.samples.len(),
+            crate::views::numbers::color(t.color)
+        );
+    }
     if !app.message.is_empty() {
         status = format!("{} · {status}", app.message);
     }
@@ -257,7 +274,7 @@ fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
         frame.render_widget(Paragraph::new("no pixel traced").block(block), area);
         return;
     };
-    let nodes = &trace.samples[0].tree.nodes;
+    let nodes = &trace.samples[app.sample].tree.nodes;
     let inner = block.inner(area);
     let step_node = app.step.map(|s| app.steps[s].node);
     let items = app.items();
@@ -299,13 +316,22 @@ fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
 }
 
 fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
-    let block = Block::default()
-        .borders(Borders::ALL)
-        .title(" selected ray ");
+    let lines = super::details::details(app, tc);
+    let visible = area.height.saturating_sub(2);
+    let scroll = app
+        .detail_scroll
+        .min((lines.len() as u16).saturating_sub(visible));
+    let title = if lines.len() as u16 > visible {
+        " selected ray (PgUp/PgDn, wheel: scroll) "
+    } else {
+        " selected ray "
+    };
+    let block = Block::default().borders(Borders::ALL).title(title);
     frame.render_widget(
-        Paragraph::new(super::details::details(app, tc))
+        Paragraph::new(lines)
             .block(block)
-            .wrap(Wrap { trim: false }),
+            .wrap(Wrap { trim: false })
+            .scroll((scroll, 0)),
         area,
     );
 }
@@ -318,7 +344,11 @@ fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
         frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
         return;
     };
-    let Ok(lay) = layout(trace, scene, &Options::default()) else {
+    let options = Options {
+        sample: app.sample,
+        ..Options::default()
+    };
+    let Ok(lay) = layout(trace, scene, &options) else {
         return;
     };
     let (lo, hi) = braille_window(&lay, block.inner(area));

@@ -12,9 +12,23 @@ pub fn ambient(material: &Material, color: DVec3, ambient_light: DVec3) -> DVec3
     material.ambient * color * ambient_light
 }
 
-/// What one light adds at a point its shadow ray reached.
+/// What one light adds at a point its shadow ray reached, with the vectors and
+/// dot products it was made from (the ray tree shows them so the sum can be
+/// checked by hand).
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Direct {
+    /// `L`: the unit vector from the point to the light.
+    pub to_light: DVec3,
+    /// `V`: the unit vector from the point to the viewer.
+    pub to_viewer: DVec3,
+    /// The light's color as it arrives (after what the shadow ray let through).
+    pub light: DVec3,
+    /// `N·L`: the cosine of the light's angle to the normal; nothing is added where it is ≤ 0.
+    pub n_dot_l: f64,
+    /// `R = 2(N·L)N - L`: the light's direction mirrored about the normal (zero where `N·L ≤ 0`).
+    pub mirrored: DVec3,
+    /// `R·V`, at least 0: how close the viewer is to the mirror direction.
+    pub r_dot_v: f64,
     /// `k_d · color · light · (N·L)`.
     pub diffuse: DVec3,
     /// `k_s · light · (R·V)^shininess`.
@@ -24,6 +38,7 @@ pub struct Direct {
 /// The diffuse and specular terms for unit normal `n` (facing the viewer), unit
 /// direction to the light `l`, unit direction to the viewer `v`, and the light's
 /// color as it arrives (already scaled by what the shadow ray let through).
+#[inline]
 pub fn direct(
     material: &Material,
     color: DVec3,
@@ -33,8 +48,15 @@ pub fn direct(
     light: DVec3,
 ) -> Direct {
     let n_dot_l = n.dot(l);
+    let unlit = Direct {
+        to_light: l,
+        to_viewer: v,
+        light,
+        n_dot_l,
+        ..Direct::default()
+    };
     if n_dot_l <= 0.0 {
-        return Direct::default();
+        return unlit;
     }
     let r = 2.0 * n_dot_l * n - l;
     let r_dot_v = r.dot(v).max(0.0);
@@ -44,8 +66,11 @@ pub fn direct(
         0.0
     };
     Direct {
+        mirrored: r,
+        r_dot_v,
         diffuse: material.diffuse * n_dot_l * color * light,
         specular: highlight * light,
+        ..unlit
     }
 }
 
@@ -95,6 +120,7 @@ mod tests {
             DVec3::Y,
             DVec3::ONE,
         );
-        assert_eq!(d, Direct::default());
+        assert_eq!((d.diffuse, d.specular), (DVec3::ZERO, DVec3::ZERO));
+        assert_eq!(d.n_dot_l, -1.0);
     }
 }

@@ -7,8 +7,9 @@
 
 use glam::DVec3;
 
-use crate::geometry::hit::Roots;
-use crate::geometry::hit::TestCounts;
+use crate::geometry::hit::{Roots, TestCounts};
+use crate::math::ray::Ray;
+use crate::shading::phong::Direct;
 
 /// Calls a recorder hook. Built with `RUSTFLAGS="--cfg raytree_no_hooks"`, every
 /// hook disappears from the source, which gives the baseline the benchmark
@@ -23,7 +24,6 @@ macro_rules! record {
         }
     };
 }
-use crate::math::ray::Ray;
 
 /// Why a ray was cast.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
@@ -115,15 +115,24 @@ pub struct ShadowEvent {
     pub tested: TestCounts,
 }
 
+/// The start of a hit's local color: the surface's color there and the
+/// ambient term made from it.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct LocalEvent {
+    /// The material's color at the point (a checker's square, or its one color).
+    pub color: DVec3,
+    /// `k_a · color · ambient_light`.
+    pub ambient: DVec3,
+}
+
 /// One light's share of the local color at a hit.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LightEvent {
     /// Index of the light.
     pub light: usize,
-    /// Diffuse term (zero if the shadow ray did not reach the light).
-    pub diffuse: DVec3,
-    /// Specular term (likewise).
-    pub specular: DVec3,
+    /// The Phong terms with what they were made from; `None` when the shadow ray
+    /// did not reach the light (the light adds nothing).
+    pub phong: Option<Direct>,
 }
 
 /// Whether a reflected or refracted ray was spawned, and if not, why not.
@@ -159,8 +168,6 @@ pub struct BranchEvent {
 /// with `local = ambient + Σ (diffuse + specular)` over the lights.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct SumEvent {
-    /// The ambient term.
-    pub ambient: DVec3,
     /// The local color (for a miss, the background).
     pub local: DVec3,
     /// Coefficient of the reflected color.
@@ -194,6 +201,8 @@ pub trait Recorder {
     fn missed(&mut self) {}
     /// A shadow ray was cast (or skipped because the light faces away).
     fn shadow_ray(&mut self, _shadow: &ShadowEvent) {}
+    /// The local color's start: the surface color and the ambient term.
+    fn local(&mut self, _local: &LocalEvent) {}
     /// One light's terms of the local color.
     fn light_term(&mut self, _term: &LightEvent) {}
     /// The reflected or refracted branch was decided (a traced child follows).

@@ -35,8 +35,8 @@ use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
 use crate::trace::recorder::{
-    Branch, BranchEvent, HitEvent, LightEvent, RayKind, RayStart, Recorder, ShadowEvent,
-    ShadowOutcome, SumEvent,
+    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, RayKind, RayStart, Recorder,
+    ShadowEvent, ShadowOutcome, SumEvent,
 };
 
 /// A shadow ray ends at `t = 1 - SHADOW_EPSILON` of the way to its light, so a
@@ -99,7 +99,7 @@ impl<'s> Tracer<'s> {
         crate::record!(rec.hit(&hit));
         let material = self.scene.material_of(hit.object);
         // color_local = ambient + what each light's shadow ray lets through.
-        let (ambient, local) = self.local_color(&start.ray, &hit, &surface, material, rec);
+        let local = self.local_color(&start.ray, &hit, &surface, material, rec);
         // k_rfl and k_rfa; total internal reflection hands k_rfa to the reflection.
         let (c, n) = (start.ray.dir.normalize(), hit.shading_normal);
         let shares = optics::shares(
@@ -117,7 +117,6 @@ impl<'s> Tracer<'s> {
         // color = color_local + k_rfl·color_reflect + k_rfa·color_refract.
         let color = local + shares.k_rfl * reflected + shares.k_rfa * refracted;
         crate::record!(rec.ray_finished(&SumEvent {
-            ambient,
             local,
             k_rfl: shares.k_rfl,
             reflected,
@@ -221,8 +220,7 @@ impl<'s> Tracer<'s> {
         (hit, surface)
     }
 
-    /// `ambient + Σ (diffuse + specular)` over the lights a shadow ray reaches;
-    /// returns the ambient term and the sum.
+    /// `ambient + Σ (diffuse + specular)` over the lights a shadow ray reaches.
     fn local_color<R: Recorder>(
         &self,
         ray: &Ray,
@@ -230,38 +228,34 @@ impl<'s> Tracer<'s> {
         surface: &Surface,
         material: &Material,
         rec: &mut R,
-    ) -> (DVec3, DVec3) {
+    ) -> DVec3 {
         let color = material.pattern.color_at(surface.pattern_point);
         let ambient = phong::ambient(material, color, self.scene.ambient_light);
+        crate::record!(rec.local(&LocalEvent { color, ambient }));
         let to_eye = -ray.dir.normalize();
         let mut local = ambient;
         for (i, light) in self.scene.lights.iter().enumerate() {
             let shadow = self.shadow_ray(i, hit, surface);
             crate::record!(rec.shadow_ray(&shadow));
-            let terms = match shadow.outcome {
+            let phong = match shadow.outcome {
                 ShadowOutcome::Reaches { transmitted } => {
                     let to_light = (light.position - surface.point).normalize();
-                    phong::direct(
-                        material,
-                        color,
-                        hit.shading_normal,
-                        to_light,
-                        to_eye,
-                        transmitted * light.color,
-                    )
+                    let arriving = transmitted * light.color;
+                    let n = hit.shading_normal;
+                    Some(phong::direct(
+                        material, color, n, to_light, to_eye, arriving,
+                    ))
                 }
-                _ => phong::Direct::default(),
+                _ => None,
             };
             if R::ENABLED {
-                crate::record!(rec.light_term(&LightEvent {
-                    light: i,
-                    diffuse: terms.diffuse,
-                    specular: terms.specular,
-                }));
+                crate::record!(rec.light_term(&LightEvent { light: i, phong }));
             }
-            local += terms.diffuse + terms.specular;
+            if let Some(terms) = phong {
+                local += terms.diffuse + terms.specular;
+            }
         }
-        (ambient, local)
+        local
     }
 
     /// The lecture's shadow ray from the hit toward light `light`: blocked by the

@@ -11,13 +11,14 @@ use crate::io::image::rgb8;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
 use crate::scene::source::{BUILT_IN, SceneSource};
+use crate::tree::arithmetic::{CameraRecord, CameraStage, camera_record};
 use crate::tree::ray_tree::RayTree;
-use crate::tree::steps::{Step, steps};
+use crate::tree::steps::{Step, StepKind, steps};
 
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 3;
+pub const VERSION: u32 = 4;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -31,6 +32,8 @@ pub struct TraceDocument {
     pub scene: SceneSource,
     /// The render settings in force.
     pub settings: RenderSettings,
+    /// The camera, as the lecture names it.
+    pub camera: CameraRecord,
     /// The scene's objects, by index.
     pub objects: Vec<ObjectEntry>,
     /// The scene's lights, by index.
@@ -102,6 +105,9 @@ pub struct Sample {
     /// Where it went through the image, in continuous image coordinates
     /// (pixel centers are integers); `None` for a ray given by hand.
     pub position: Option<[f64; 2]>,
+    /// How its primary ray was made from the pixel, in the lecture's terms;
+    /// `None` for a ray given by hand.
+    pub camera: Option<CameraStage>,
     /// Its color.
     pub color: DVec3,
     /// Its rays.
@@ -118,6 +124,7 @@ impl TraceDocument {
             version: VERSION,
             scene: source,
             settings: s,
+            camera: camera_record(&scene.camera(), &scene.camera),
             objects: scene
                 .objects
                 .iter()
@@ -184,9 +191,15 @@ impl TraceDocument {
         out
     }
 
-    /// The steps of sample `k`'s tree, in execution order.
+    /// The steps of sample `k` in execution order: for a pixel, the camera
+    /// stage that made its primary ray, then its tree's.
     pub fn steps(&self, k: usize) -> Vec<Step> {
-        steps(&self.samples[k].tree)
+        let sample = &self.samples[k];
+        let camera = sample.camera.is_some().then_some(Step {
+            node: 0,
+            kind: StepKind::Camera,
+        });
+        camera.into_iter().chain(steps(&sample.tree)).collect()
     }
 }
 

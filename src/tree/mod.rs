@@ -2,6 +2,7 @@
 //! the algorithm ran them; the trace document that saves it as JSON.
 
 pub mod ray_tree; // the rays one pixel spawns, with every number
+pub mod arithmetic; // the lecture's quantities of each step, worked out while recording
 pub mod record; // recording a pixel or a ray
 pub mod steps; // the tree read in the order the algorithm ran
 pub mod document; // the trace document: JSON, versioned, read back checked

@@ -13,6 +13,9 @@ use crate::geometry::hit::TestCounts;
 /// The tracer's words for why a ray was cast and how a branch ended are the
 /// tree's too.
 pub use crate::trace::recorder::{Branch, RayKind};
+use crate::tree::arithmetic::{
+    Arithmetic, RayRecord, RefractionRecord, RootRecord, TUnit, TestMethod,
+};
 
 /// One ray's tree.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -36,6 +39,8 @@ pub struct RayNode {
     pub origin: DVec3,
     /// Where it goes (not normalized: a primary ray reaches the image plane at t = 1).
     pub direction: DVec3,
+    /// What `t` counts along this ray.
+    pub t_unit: TUnit,
     /// Product of the coefficients from the eye down to this ray.
     pub weight: f64,
     /// Hits count only for `t_min < t < t_max`.
@@ -69,9 +74,16 @@ pub struct TestRecord {
     pub object: usize,
     /// Its name.
     pub name: String,
-    /// Where the ray's line meets it, ascending; empty for a miss. Roots outside
-    /// the ray's interval (behind it, or beyond a closer hit) are listed too.
-    pub roots: Vec<f64>,
+    /// How it was tested.
+    pub method: TestMethod,
+    /// For a transformed object, the inverse-transformed ray `S' + t·c'` the
+    /// untransformed primitive was tested with; its `t` is the world ray's.
+    pub object_ray: Option<RayRecord>,
+    /// The test's own numbers (the quadratic, the plane equation, …).
+    pub arithmetic: Option<Arithmetic>,
+    /// Where the ray's line meets it, ascending, each with what became of it;
+    /// empty for a miss.
+    pub roots: Vec<RootRecord>,
 }
 
 /// The closest hit.
@@ -90,9 +102,12 @@ pub struct HitRecord {
     pub face: Option<u32>,
     /// World-space point.
     pub point: DVec3,
+    /// For a transformed object, the point on the untransformed primitive, `M⁻¹P`.
+    pub object_point: Option<DVec3>,
     /// Outward unit geometric normal.
     pub normal: DVec3,
-    /// Unit normal used for shading, facing the incoming ray.
+    /// The unit normal the formulas use: the shading normal turned to face the
+    /// incoming ray (the outward normal reversed when the ray arrives from inside).
     pub shading_normal: DVec3,
     /// Whether the ray enters the object.
     pub entering: bool,
@@ -100,6 +115,14 @@ pub struct HitRecord {
     pub n1: f64,
     /// Refractive index on the far side.
     pub n2: f64,
+    /// The incoming direction as a unit vector, `c`.
+    pub incoming: DVec3,
+    /// `n·c` with the normal the formulas use: negative, the ray arrives against it.
+    pub n_dot_c: f64,
+    /// The mirror direction `v = c - 2(n·c)n`.
+    pub mirror: DVec3,
+    /// Snell's law, for a transparent surface.
+    pub refraction: Option<RefractionRecord>,
 }
 
 /// A shadow ray toward one light.
@@ -150,7 +173,19 @@ pub enum ShadowOutcomeRecord {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LocalRecord {
-    /// The ambient term.
+    /// The material's color at the point.
+    pub color: DVec3,
+    /// `k_a`, the share of the ambient light reflected.
+    pub k_a: f64,
+    /// `k_d`, the diffuse coefficient.
+    pub k_d: f64,
+    /// `k_s`, the specular coefficient.
+    pub k_s: f64,
+    /// The Phong exponent.
+    pub shininess: f64,
+    /// The scene's ambient light.
+    pub ambient_light: DVec3,
+    /// The ambient term `k_a · color · ambient_light`.
     pub ambient: DVec3,
     /// One entry per light.
     pub lights: Vec<LightRecord>,
@@ -166,10 +201,30 @@ pub struct LightRecord {
     pub light: usize,
     /// Its name.
     pub name: String,
+    /// What the terms were made from; `None` when no light arrived.
+    pub phong: Option<PhongRecord>,
     /// Diffuse term (zero when the light did not arrive).
     pub diffuse: DVec3,
     /// Specular term (likewise).
     pub specular: DVec3,
+}
+
+/// The vectors and products of one light's Phong terms.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PhongRecord {
+    /// `L`: unit vector from the point to the light.
+    pub l: DVec3,
+    /// `N·L`.
+    pub n_dot_l: f64,
+    /// `R = 2(N·L)N - L`.
+    pub r: DVec3,
+    /// `V`: unit vector from the point to the viewer.
+    pub v: DVec3,
+    /// `R·V`, at least 0.
+    pub r_dot_v: f64,
+    /// The light's color as it arrives: its color times what the shadow ray kept.
+    pub arriving: DVec3,
 }
 
 /// A reflected or refracted branch.

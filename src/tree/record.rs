@@ -4,20 +4,25 @@
 
 use glam::DVec3;
 
-use crate::geometry::hit::TestCounts;
+use crate::geometry::hit::{Roots, TestCounts};
+use crate::geometry::object::Shape;
 use crate::math::ray::Ray;
+use crate::methods::Offset;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::pixel::pixel_color_at;
 use crate::trace::recorder::{
-    BranchEvent, HitEvent, LightEvent, RayKind, RayStart, Recorder, ShadowEvent, ShadowOutcome,
-    SumEvent,
+    BranchEvent, HitEvent, LightEvent, LocalEvent, RayKind, RayStart, Recorder, ShadowEvent,
+    ShadowOutcome, SumEvent,
 };
 use crate::trace::tracer::Tracer;
+use crate::tree::arithmetic::{
+    Fate, RootRecord, TUnit, camera_stage, fates, hit_optics, object_test,
+};
 use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    BranchRecord, HitRecord, LightRecord, LocalRecord, RayNode, RayTree, ShadowOutcomeRecord,
-    ShadowRecord, SumRecord, TestRecord,
+    BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
+    ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
 
 /// Why a trace could not be made.
@@ -36,10 +41,10 @@ pub enum TraceError {
         height: u32,
     },
     /// The sample is not one of the pixel's.
-    #[error("sample {sample} does not exist: a pixel has {spp} samples (0 to {})", spp - 1)]
+    #[error("sample {} does not exist: a pixel has {spp} samples (1 to {spp})", index + 1)]
     SampleOutside {
-        /// Sample asked for.
-        sample: u32,
+        /// Index of the sample asked for (0 is the first).
+        index: u32,
         /// Samples per pixel.
         spp: u32,
     },
@@ -49,7 +54,7 @@ pub enum TraceError {
 }
 
 /// Traces pixel `(x, y)` (image coordinates) exactly as the renderer does,
-/// recording every sample, or only sample `only` if given.
+/// recording every sample, or only the one of index `only` (0 is the first).
 pub fn pixel(
     scene: &Scene,
     source: SceneSource,
@@ -66,19 +71,13 @@ pub fn pixel(
             height: s.height,
         });
     }
-    let mut rec = TreeRecorder::new(scene);
+    let mut rec = TreeRecorder::new(scene, TUnit::ImagePlane);
     let mut at = Vec::new();
-    let color = pixel_color_at(
-        &Tracer::new(scene),
-        &scene.camera(),
-        x,
-        y,
-        &mut rec,
-        Some(&mut at),
-    );
+    let camera = scene.camera();
+    let color = pixel_color_at(&Tracer::new(scene), &camera, x, y, &mut rec, Some(&mut at));
     if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
         return Err(TraceError::SampleOutside {
-            sample,
+            index: sample,
             spp: at.len() as u32,
         });
     }
@@ -89,6 +88,7 @@ pub fn pixel(
         .map(|(k, ((sx, sy), tree))| Sample {
             index: k as u32,
             position: Some([sx, sy]),
+            camera: Some(camera_stage(&camera, (x, y), (sx, sy))),
             color: tree.nodes[0].color(),
             tree,
         })
@@ -108,12 +108,13 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
     {
         return Err(TraceError::BadRay);
     }
-    let mut rec = TreeRecorder::new(scene);
+    let mut rec = TreeRecorder::new(scene, TUnit::Direction);
     let color = Tracer::new(scene).trace_primary(ray, &mut rec);
     let tree = rec.trees.pop().unwrap_or_default();
     let samples = vec![Sample {
         index: 0,
         position: None,
+        camera: None,
         color,
         tree,
     }];
@@ -126,10 +127,13 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
     })
 }
 
-/// Builds a ray tree per primary ray from the tracer's events.
+/// Builds a ray tree per primary ray from the tracer's events, working out the
+/// lecture's arithmetic of each step as it goes ([`crate::tree::arithmetic`]).
 #[derive(Debug)]
 pub struct TreeRecorder<'s> {
     scene: &'s Scene,
+    /// What `t` counts along the primary rays.
+    primary_unit: TUnit,
     /// One tree per primary ray traced, in order.
     pub trees: Vec<RayTree>,
     /// The open rays, innermost last.
@@ -137,10 +141,12 @@ pub struct TreeRecorder<'s> {
 }
 
 impl<'s> TreeRecorder<'s> {
-    /// A recorder naming objects and lights from `scene`.
-    pub fn new(scene: &'s Scene) -> Self {
+    /// A recorder naming objects and lights from `scene`; `primary_unit` says
+    /// what `t` counts along the primary rays (the image plane for a pixel).
+    pub fn new(scene: &'s Scene, primary_unit: TUnit) -> Self {
         Self {
             scene,
+            primary_unit,
             trees: Vec::new(),
             stack: Vec::new(),
         }
@@ -157,6 +163,38 @@ impl<'s> TreeRecorder<'s> {
     fn top(&mut self) -> &mut RayNode {
         let i = *self.stack.last().expect("inside a ray");
         &mut self.nodes()[i]
+    }
+
+    /// The object the current ray leaves: its parent's hit (none for a primary ray).
+    fn leaving(&mut self) -> Option<usize> {
+        let parent = self.top().parent?;
+        self.nodes()[parent].hit.as_ref().map(|h| h.object)
+    }
+
+    /// How close to its origin a root must be to lie on the surface the ray
+    /// leaves: the origin sits just past that surface, by the point's error bound
+    /// (about 1e-15 of its size) or by the epsilon the settings ask for.
+    fn start_tolerance(&self, origin: DVec3) -> f64 {
+        let epsilon = match self.scene.settings.offset {
+            Offset::Epsilon(e) => 2.0 * e,
+            Offset::None | Offset::Robust => 0.0,
+        };
+        epsilon + 1e-9 * (1.0 + origin.abs().max_element())
+    }
+
+    /// Marks what became of every root of the current ray's tests.
+    fn settle_roots(&mut self) {
+        let start = self.leaving();
+        let origin = self.top().origin;
+        let tolerance = self.start_tolerance(origin);
+        let node = self.top();
+        let hit = node.hit.as_ref().map(|h| (h.object, h.t));
+        let interval = (node.t_min, node.t_max);
+        let length = node.direction.length();
+        for test in &mut node.tests {
+            let ts: Vec<f64> = test.roots.iter().map(|r| r.t).collect();
+            test.roots = fates(&ts, test.object, hit, interval, start, (length, tolerance));
+        }
     }
 }
 
@@ -181,12 +219,18 @@ impl Recorder for TreeRecorder<'_> {
                 child.node = Some(index);
             }
         }
+        let t_unit = if start.kind == RayKind::Primary {
+            self.primary_unit
+        } else {
+            TUnit::Distance
+        };
         self.nodes().push(RayNode {
             kind: start.kind,
             depth: start.depth,
             parent,
             origin: start.ray.origin,
             direction: start.ray.dir,
+            t_unit,
             weight: start.weight,
             t_min: start.t_min,
             t_max: start.t_max.is_finite().then_some(start.t_max),
@@ -202,12 +246,29 @@ impl Recorder for TreeRecorder<'_> {
         self.stack.push(index);
     }
 
-    fn object_tested(&mut self, object: usize, roots: &crate::geometry::hit::Roots) {
-        let name = self.scene.objects[object].name.clone();
-        self.top().tests.push(TestRecord {
+    fn object_tested(&mut self, object: usize, roots: &Roots) {
+        let scene = self.scene;
+        let node = self.top();
+        let ray = Ray::new(node.origin, node.direction);
+        let methods = scene.settings.intersection_methods();
+        let (method, object_ray, arithmetic) =
+            object_test(&scene.objects[object], &ray, methods, roots);
+        let roots = roots
+            .as_slice()
+            .iter()
+            .map(|&t| RootRecord {
+                t,
+                fate: Fate::Farther,
+                at_start: false,
+            })
+            .collect();
+        node.tests.push(TestRecord {
             object,
-            name,
-            roots: roots.as_slice().to_vec(),
+            name: scene.objects[object].name.clone(),
+            method,
+            object_ray,
+            arithmetic,
+            roots,
         });
     }
 
@@ -216,25 +277,52 @@ impl Recorder for TreeRecorder<'_> {
     }
 
     fn hit(&mut self, hit: &HitEvent) {
-        let object = &self.scene.objects[hit.object];
-        let h = HitRecord {
+        let scene = self.scene;
+        let object = &scene.objects[hit.object];
+        let material = &scene.materials[object.material];
+        let node = self.top();
+        let (incoming, n_dot_c, mirror, refraction) = hit_optics(
+            node.direction,
+            hit.shading_normal,
+            (hit.n1, hit.n2),
+            material.transparent > 0.0,
+        );
+        node.hit = Some(HitRecord {
             object: hit.object,
             name: object.name.clone(),
-            material: self.scene.materials[object.material].name.clone(),
+            material: material.name.clone(),
             t: hit.t,
-            face: matches!(object.shape, crate::geometry::object::Shape::Mesh(_))
-                .then_some(hit.face),
+            face: matches!(object.shape, Shape::Mesh(_)).then_some(hit.face),
             point: hit.point,
+            object_point: object
+                .transform
+                .as_ref()
+                .map(|tf| tf.to_object.transform_point3(hit.point)),
             normal: hit.normal,
             shading_normal: hit.shading_normal,
             entering: hit.entering,
             n1: hit.n1,
             n2: hit.n2,
-        };
+            incoming,
+            n_dot_c,
+            mirror,
+            refraction,
+        });
+    }
+
+    fn local(&mut self, local: &LocalEvent) {
+        let scene = self.scene;
         let node = self.top();
-        node.hit = Some(h);
+        let Some(hit) = &node.hit else { return };
+        let material = scene.material_of(hit.object);
         node.local = Some(LocalRecord {
-            ambient: DVec3::ZERO,
+            color: local.color,
+            k_a: material.ambient,
+            k_d: material.diffuse,
+            k_s: material.specular,
+            shininess: material.shininess,
+            ambient_light: scene.ambient_light,
+            ambient: local.ambient,
             lights: Vec::new(),
             total: DVec3::ZERO,
         });
@@ -264,12 +352,24 @@ impl Recorder for TreeRecorder<'_> {
 
     fn light_term(&mut self, term: &LightEvent) {
         let name = self.scene.lights[term.light].name.clone();
+        let phong = term.phong.map(|d| PhongRecord {
+            l: d.to_light,
+            n_dot_l: d.n_dot_l,
+            r: d.mirrored,
+            v: d.to_viewer,
+            r_dot_v: d.r_dot_v,
+            arriving: d.light,
+        });
+        let (diffuse, specular) = term
+            .phong
+            .map_or((DVec3::ZERO, DVec3::ZERO), |d| (d.diffuse, d.specular));
         if let Some(local) = &mut self.top().local {
             local.lights.push(LightRecord {
                 light: term.light,
                 name,
-                diffuse: term.diffuse,
-                specular: term.specular,
+                phong,
+                diffuse,
+                specular,
             });
         }
     }
@@ -288,9 +388,9 @@ impl Recorder for TreeRecorder<'_> {
     }
 
     fn ray_finished(&mut self, sum: &SumEvent) {
+        self.settle_roots();
         let node = self.top();
         if let Some(local) = &mut node.local {
-            local.ambient = sum.ambient;
             local.total = sum.local;
         }
         node.sum = SumRecord {

@@ -1,4 +1,5 @@
-//! The ray tree read as the algorithm ran: spawn a ray, test each object, take
+//! The ray tree read as the algorithm ran (after the camera stage that made a
+//! pixel's primary ray, which the trace document adds): spawn a ray, test each object, take
 //! the closest hit (or miss), cast each shadow ray, sum the local color, spawn
 //! the reflected ray (and everything under it), spawn the refracted ray,
 //! combine, return. Derived from the tree alone, so every view steps through the
@@ -9,6 +10,8 @@ use crate::tree::ray_tree::RayTree;
 /// What kind of step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum StepKind {
+    /// The camera makes a sample's primary ray: pixel → (c, r) → (u_c, v_r) → P(r, c).
+    Camera,
     /// A ray is spawned.
     Spawn,
     /// One object is tested: the index into the node's `tests`.

@@ -4,6 +4,7 @@
 
 pub mod numbers; // numbers written for reading
 pub mod text; // the trace in words
+pub mod explain; // the lecture's arithmetic of each step, written out
 pub mod figure; // the figure toolkit: a canvas with arrows, labels, legend, caption
 pub mod clip; // 2D clipping to a frame
 pub mod projection; // the scene projected onto a drawing plane

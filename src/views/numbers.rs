@@ -27,6 +27,40 @@ pub fn vec3(v: DVec3) -> String {
     format!("({}, {}, {})", num(v.x), num(v.y), num(v.z))
 }
 
+/// Below this, a color component cannot change any 8-bit pixel: one sRGB level
+/// near black is about 3e-4 of linear light (1/255/12.92), so 1e-9 is far below
+/// it. Views show such values as "≈ 0"; the JSON trace keeps them exact.
+pub const NEGLIGIBLE: f64 = 1e-9;
+
+/// A color component, or "≈ 0" when it is [`NEGLIGIBLE`] (but not exactly 0).
+pub fn level(x: f64) -> String {
+    if x != 0.0 && x.abs() < NEGLIGIBLE {
+        "≈ 0".to_owned()
+    } else {
+        num(x)
+    }
+}
+
+/// A color as `(r, g, b)`, negligible components as "≈ 0".
+pub fn color(c: DVec3) -> String {
+    format!("({}, {}, {})", level(c.x), level(c.y), level(c.z))
+}
+
+/// A number written as a factor in a product: negative ones in parentheses,
+/// so `2 × (-0.9)` never reads as a subtraction.
+pub fn factor(x: f64) -> String {
+    if x < 0.0 {
+        format!("({})", num(x))
+    } else {
+        num(x)
+    }
+}
+
+/// An angle in degrees: `27.25°`.
+pub fn degrees(x: f64) -> String {
+    format!("{}°", num(x))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -41,5 +75,7 @@ mod tests {
         assert_eq!(num(2.5e-7), "2.500e-7");
         assert_eq!(num(0.0), "0");
         assert_eq!(vec3(DVec3::new(1.0, 0.25, -2.0)), "(1, 0.25, -2)");
+        assert_eq!(color(DVec3::new(0.5, 2.1e-185, 0.0)), "(0.5, ≈ 0, 0)");
+        assert_eq!(level(4.5e-8), "4.500e-8");
     }
 }

@@ -10,11 +10,11 @@ use std::fmt::Write;
 use crate::geometry::hit::TestCounts;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{
-    Branch, BranchRecord, HitRecord, LocalRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord,
-    ShadowRecord, SumRecord, TestRecord,
+    Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, SumRecord,
 };
 use crate::tree::steps::{Step, StepKind};
-use crate::views::numbers::{num, vec3};
+use crate::views::explain::{self, Lines};
+use crate::views::numbers::{color, num, vec3};
 
 /// The trace as an indented text tree; `numbered` prefixes each step with its
 /// number in execution order.
@@ -40,7 +40,7 @@ pub fn format(trace: &TraceDocument, numbered: bool) -> String {
     let _ = writeln!(
         out,
         "color {} → 8-bit sRGB ({r}, {g}, {b})",
-        vec3(trace.color)
+        color(trace.color)
     );
     for (k, sample) in trace.samples.iter().enumerate() {
         let _ = writeln!(out);
@@ -51,16 +51,16 @@ pub fn format(trace: &TraceDocument, numbered: bool) -> String {
             let _ = writeln!(
                 out,
                 "sample {} of {}{at}: color {}",
-                sample.index,
+                sample.index + 1,
                 s.spp,
-                vec3(sample.color)
+                color(sample.color)
             );
         }
         for (n, step) in trace.steps(k).iter().enumerate() {
             let depth = sample.tree.nodes[step.node].depth as usize;
             let indent = "    ".repeat(depth.saturating_sub(1));
-            // Steps other than a ray's spawn sit under it.
-            let inner = if step.kind == StepKind::Spawn {
+            // Steps other than a ray's spawn (and the camera stage before it) sit under it.
+            let inner = if matches!(step.kind, StepKind::Spawn | StepKind::Camera) {
                 ""
             } else {
                 "  "
@@ -70,122 +70,95 @@ pub fn format(trace: &TraceDocument, numbered: bool) -> String {
             } else {
                 String::new()
             };
-            let text = describe(trace, k, step);
-            let _ = writeln!(out, "{number}{indent}{inner}{text}");
+            let (line, details) = describe(trace, k, step);
+            let _ = writeln!(out, "{number}{indent}{inner}{line}");
+            let pad = " ".repeat(number.chars().count());
+            for detail in details {
+                let _ = writeln!(out, "{pad}{indent}{inner}    {detail}");
+            }
         }
     }
     out
 }
 
-/// One step of sample `sample` in one line, with its numbers: what
-/// `raytree trace` prints, the inspector's step line, the lessons' narration.
-pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> String {
+/// One step of sample `sample`: a headline, and the lines that work out its
+/// arithmetic with its own numbers. What `raytree trace` prints, the
+/// inspector's step line, the lessons' narration.
+pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
     let tree = &trace.samples[sample].tree;
     let node = &tree.nodes[step.node];
+    let one = |line: String| (line, Vec::new());
     match step.kind {
-        StepKind::Spawn => spawned(node),
-        StepKind::Test(k) => tested(trace, &node.tests[k]),
-        StepKind::Hit => node.hit.as_ref().map_or_else(String::new, |h| hit(h, node)),
-        StepKind::Miss => format!(
-            "no hit: the ray returns the background {} ({})",
-            vec3(node.sum.color),
-            searched(&node.tested)
+        StepKind::Camera => {
+            let s = &trace.samples[sample];
+            let which = if trace.settings.spp > 1 || trace.samples.len() > 1 {
+                format!("sample {} of {}, ", s.index + 1, trace.settings.spp)
+            } else {
+                String::new()
+            };
+            s.camera.as_ref().map_or_else(
+                || one(String::new()),
+                |c| explain::camera(&trace.camera, c, &which),
+            )
+        }
+        StepKind::Spawn => one(format!(
+            "spawn {} ray (depth {}, weight {}) from S = {} along c = {}: {}",
+            kind_name(node.kind),
+            node.depth,
+            num(node.weight),
+            vec3(node.origin),
+            vec3(node.direction),
+            explain::t_unit(node)
+        )),
+        StepKind::Test(k) => {
+            let test = &node.tests[k];
+            let kind = trace
+                .objects
+                .get(test.object)
+                .map_or("object", |o| o.kind.as_str());
+            explain::test(test, kind, node)
+        }
+        StepKind::Hit => node.hit.as_ref().map_or_else(
+            || one(String::new()),
+            |h| explain::hit(h, &searched(&node.tested)),
         ),
-        StepKind::Shadow(k) => shadow(&node.shadow_rays[k]),
-        StepKind::Local => node.local.as_ref().map_or_else(String::new, local),
+        StepKind::Miss => one(format!(
+            "no hit: the ray returns the background {} ({})",
+            color(node.sum.color),
+            searched(&node.tested)
+        )),
+        StepKind::Shadow(k) => one(explain::shadow(&node.shadow_rays[k])),
+        StepKind::Local => node
+            .local
+            .as_ref()
+            .map_or_else(|| one(String::new()), explain::local),
         StepKind::Reflect | StepKind::Refract => {
-            let branch = if step.kind == StepKind::Reflect {
+            let reflect = step.kind == StepKind::Reflect;
+            let branch = if reflect {
                 &node.reflected
             } else {
                 &node.refracted
             };
-            branch
-                .as_ref()
-                .map_or_else(String::new, |b| branched(step.kind, b, node))
+            let Some(branch) = branch else {
+                return one(String::new());
+            };
+            let line = branched(step.kind, branch, node);
+            let details = match (&node.hit, branch.outcome) {
+                (Some(h), Branch::Traced) if reflect => vec![explain::reflection(h)],
+                (Some(h), Branch::Traced | Branch::TotalInternalReflection) if !reflect => {
+                    explain::refraction(h)
+                }
+                _ => Vec::new(),
+            };
+            (line, details)
         }
-        StepKind::Combine => combined(&node.sum),
-        StepKind::Return => format!(
+        StepKind::Combine => one(combined(&node.sum)),
+        StepKind::Return => one(format!(
             "return {} to {}",
-            vec3(node.sum.color),
+            color(node.sum.color),
             returned_to(tree, node)
-        ),
+        )),
     }
-}
-
-fn spawned(node: &RayNode) -> String {
-    format!(
-        "spawn {} ray (depth {}, weight {}) from {} along {}",
-        kind_name(node.kind),
-        node.depth,
-        num(node.weight),
-        vec3(node.origin),
-        vec3(node.direction)
-    )
-}
-
-fn tested(trace: &TraceDocument, test: &TestRecord) -> String {
-    let kind = trace
-        .objects
-        .get(test.object)
-        .map_or("object", |o| o.kind.as_str());
-    let found = if test.roots.is_empty() {
-        "miss".to_owned()
-    } else {
-        let roots: Vec<String> = test.roots.iter().map(|&t| num(t)).collect();
-        format!("t = {}", roots.join(", "))
-    };
-    format!("test {kind} '{}': {found}", test.name)
-}
-
-fn hit(hit: &HitRecord, node: &RayNode) -> String {
-    let side = if hit.entering { "entering" } else { "leaving" };
-    format!(
-        "closest hit: '{}' at t = {}, point {}, normal {}, {side}, n {} → {} ({})",
-        hit.name,
-        num(hit.t),
-        vec3(hit.point),
-        vec3(hit.normal),
-        num(hit.n1),
-        num(hit.n2),
-        searched(&node.tested)
-    )
-}
-
-fn shadow(s: &ShadowRecord) -> String {
-    let what = match &s.outcome {
-        ShadowOutcomeRecord::FacesAway => "the light is behind the surface: no ray cast".to_owned(),
-        ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
-            "reaches the light".to_owned()
-        }
-        ShadowOutcomeRecord::Reaches { transmitted } => format!(
-            "reaches the light through transparent objects, keeping {}",
-            num(*transmitted)
-        ),
-        ShadowOutcomeRecord::Blocked { name, t, .. } => {
-            format!("blocked by '{name}' at t = {}", num(*t))
-        }
-    };
-    format!("shadow ray to light '{}': {what}", s.name)
-}
-
-fn local(local: &LocalRecord) -> String {
-    let lights: String = local
-        .lights
-        .iter()
-        .map(|l| {
-            format!(
-                " + '{}' (diffuse {} + specular {})",
-                l.name,
-                vec3(l.diffuse),
-                vec3(l.specular)
-            )
-        })
-        .collect();
-    format!(
-        "local = ambient {}{lights} = {}",
-        vec3(local.ambient),
-        vec3(local.total)
-    )
 }
 
 fn branched(kind: StepKind, branch: &BranchRecord, node: &RayNode) -> String {
@@ -220,7 +193,7 @@ fn branched(kind: StepKind, branch: &BranchRecord, node: &RayNode) -> String {
             num(node.weight * branch.coefficient)
         ),
         Branch::TotalInternalReflection => format!(
-            "no refracted ray: total internal reflection (n {} → {} beyond the critical angle); its share {} went to the reflected ray",
+            "no refracted ray: total internal reflection (n₁ = {} → n₂ = {} beyond the critical angle); its share {} went to the reflected ray",
             n(|h| h.n1),
             n(|h| h.n2),
             num(branch.coefficient)
@@ -231,12 +204,12 @@ fn branched(kind: StepKind, branch: &BranchRecord, node: &RayNode) -> String {
 fn combined(s: &SumRecord) -> String {
     format!(
         "color = local {} + {} × reflected {} + {} × refracted {} = {}",
-        vec3(s.local),
+        color(s.local),
         num(s.k_rfl),
-        vec3(s.reflected),
+        color(s.reflected),
         num(s.k_rfa),
-        vec3(s.refracted),
-        vec3(s.color)
+        color(s.refracted),
+        color(s.color)
     )
 }
 

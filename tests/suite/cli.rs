@@ -468,7 +468,7 @@ fn trace_prints_the_tree_of_a_glass_pixel() {
         String::from_utf8(numbered.stdout)
             .unwrap()
             .lines()
-            .any(|l| l.trim_start().starts_with("1. spawn primary ray"))
+            .any(|l| l.trim_start().starts_with("2. spawn primary ray"))
     );
     std::fs::remove_dir_all(&dir).unwrap();
 }
@@ -509,7 +509,7 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
     let one = raytree(
         &[
             "trace", scene, "--pixel", "100,100", "--width", "200", "--height", "150", "--spp",
-            "4", "--sample", "2", "-o", "t.json",
+            "4", "--sample", "3", "-o", "t.json",
         ],
         &dir,
     );
@@ -552,9 +552,9 @@ fn trace_refuses_pixels_and_samples_that_do_not_exist() {
             "trace",
             "trace-sample",
             None,
-            &["--pixel", "1,1", "--spp", "4", "--sample", "4"]
+            &["--pixel", "1,1", "--spp", "4", "--sample", "5"]
         ),
-        "error: sample 4 does not exist: a pixel has 4 samples (0 to 3)"
+        "error: sample 5 does not exist: a pixel has 4 samples (1 to 4)"
     );
     assert_eq!(
         fails_in(

@@ -31,6 +31,7 @@ fn app_at(pixel: Option<(u32, u32)>) -> App {
     app.areas = Areas {
         image: Rect::new(1, 1, 80, 30),
         tree: Rect::new(83, 1, 76, 20),
+        details: Rect::new(82, 22, 78, 24),
     };
     app
 }
@@ -201,11 +202,19 @@ fn panes_show_the_tree_the_numbers_and_the_steps() {
     ] {
         assert!(text.contains(expected), "missing {expected:?}:\n{text}");
     }
-    // The step line follows the steps.
+    // The step line follows the steps: the camera stage, then the primary ray.
     key(&mut app, KeyCode::Char('n'));
     let text = screen(&mut app);
-    assert!(text.contains("step 1/"), "{text}");
-    assert!(text.contains("spawn primary ray"), "{text}");
+    assert!(
+        text.contains("step 1/") && text.contains("camera: pixel 416,209"),
+        "{text}"
+    );
+    key(&mut app, KeyCode::Char('n'));
+    let text = screen(&mut app);
+    assert!(
+        text.contains("step 2/") && text.contains("spawn primary ray"),
+        "{text}"
+    );
     // The help lists every key.
     key(&mut app, KeyCode::Char('?'));
     let text = screen(&mut app);

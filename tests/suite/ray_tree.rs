@@ -274,7 +274,23 @@ fn every_field_is_documented() {
     );
     let mut shallow = scene.clone();
     shallow.settings.max_depth = 2;
-    traces.push(raytree::tree::record::pixel(&shallow, src, 416, 209, None).unwrap());
+    traces.push(raytree::tree::record::pixel(&shallow, src.clone(), 416, 209, None).unwrap());
+    // Transformed spheres, a mesh, a box and a triangle: every kind of test.
+    for (name, x, y) in [("ellipsoids.json", 320, 240), ("gaspra.json", 320, 240)] {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(name);
+        let s = raytree::scene::loader::load(&path).unwrap();
+        traces.push(raytree::tree::record::pixel(&s, src.clone(), x, y, None).unwrap());
+    }
+    let shapes = common::scene(
+        r#"{ "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]}, "render": {"width": 9, "height": 9},
+             "objects": [{"box": {"min": [-1, -1, -1], "max": [0.5, 0.5, 0]}},
+                         {"triangle": {"vertices": [[0, 0, 1], [2, 0, 1], [0, 2, 1]]}}] }"#,
+    );
+    for (x, y) in [(4, 4), (5, 3), (2, 6)] {
+        traces.push(raytree::tree::record::pixel(&shapes, src.clone(), x, y, None).unwrap());
+    }
     let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
     for t in &traces {
         collect(&serde_json::to_value(t).unwrap(), &mut keys, &mut tags);
@@ -296,6 +312,22 @@ fn every_field_is_documented() {
         "values missing from book/src/trace-format.md: {missing:?}"
     );
     for tag in [
+        "quadratic",
+        "plane",
+        "slabs",
+        "crossing",
+        "parallel",
+        "barycentric",
+        "face",
+        "chosen",
+        "farther",
+        "behind",
+        "image_plane",
+        "direction",
+        "distance",
+        "stable_quadratic",
+        "plane_equation",
+        "watertight",
         "faces_away",
         "max_depth",
         "total_internal_reflection",
@@ -311,7 +343,8 @@ fn collect(v: &serde_json::Value, keys: &mut BTreeSet<String>, tags: &mut BTreeS
         serde_json::Value::Object(map) => {
             for (k, v) in map {
                 keys.insert(k.clone());
-                if let (Some(s), true) = (v.as_str(), ["kind", "outcome"].contains(&k.as_str())) {
+                let enum_like = ["kind", "outcome", "fate", "method", "t_unit"];
+                if let (Some(s), true) = (v.as_str(), enum_like.contains(&k.as_str())) {
                     tags.insert(s.to_owned());
                 }
                 collect(v, keys, tags);
@@ -326,7 +359,13 @@ fn collect(v: &serde_json::Value, keys: &mut BTreeSet<String>, tags: &mut BTreeS
 fn steps_follow_the_algorithm() {
     for (label, _, trace) in grid_traces().iter().step_by(7) {
         let tree = &trace.samples[0].tree;
-        let steps = trace.steps(0);
+        let mut steps = trace.steps(0);
+        // A pixel's first step is the camera stage that made its primary ray.
+        assert_eq!(
+            steps.remove(0).kind,
+            StepKind::Camera,
+            "{label}: a pixel starts at the camera"
+        );
         // Rays are spawned in the order the nodes were recorded.
         let spawned: Vec<usize> = steps
             .iter()
@@ -397,12 +436,13 @@ fn step_texts_carry_their_numbers() {
     let steps = trace.steps(0);
     let texts: Vec<String> = steps
         .iter()
-        .map(|s| raytree::views::text::describe(&trace, 0, s))
+        .map(|s| raytree::views::text::describe(&trace, 0, s).0)
         .collect();
     let blocked = texts
         .iter()
         .find(|t| t.starts_with("shadow ray to light 'key': blocked by 'mirror' at t = "))
         .expect("the key light is blocked by the mirror");
+    let blocked = blocked.trim_end_matches(" (t = 1 at the light)");
     let t = match &trace.samples[0].tree.nodes[0].shadow_rays[0].outcome {
         raytree::tree::ray_tree::ShadowOutcomeRecord::Blocked { t, .. } => *t,
         other => panic!("{other:?}"),
@@ -414,7 +454,7 @@ fn step_texts_carry_their_numbers() {
     assert!(
         texts
             .iter()
-            .any(|t| t.starts_with("test plane 'floor': t = ")),
+            .any(|t| t.starts_with("test plane 'floor': n·c = ")),
         "{texts:?}"
     );
 }

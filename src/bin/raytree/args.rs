@@ -53,8 +53,8 @@ pub struct TargetArgs {
     /// Trace one ray instead of a pixel: its origin and direction in world coordinates.
     #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
     pub ray: Option<Ray>,
-    /// With several samples per pixel, keep only sample K (0-based, row by row from the top-left).
-    #[arg(long, value_name = "K", conflicts_with = "ray")]
+    /// With several samples per pixel, keep only sample K (1 is the first; row by row from the top-left).
+    #[arg(long, value_name = "K", conflicts_with = "ray", value_parser = clap::value_parser!(u32).range(1..))]
     pub sample: Option<u32>,
 }
 
@@ -62,7 +62,7 @@ impl TargetArgs {
     /// Records the pixel's or the ray's trees.
     pub fn record(&self, scene: &Scene, source: SceneSource) -> Result<TraceDocument> {
         Ok(match (self.pixel, self.ray) {
-            (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample)?,
+            (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample.map(|k| k - 1))?,
             (_, Some(ray)) => record::ray(scene, source, ray)?,
             _ => unreachable!("clap requires --pixel or --ray"),
         })

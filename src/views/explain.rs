@@ -1,0 +1,400 @@
+//! The lecture's arithmetic written out with a ray's own numbers, so each step
+//! of a trace can be checked with a calculator: the camera stage, the quadratic
+//! and what became of each root, the inverse-transformed ray, `n·c` and the
+//! mirror direction, Snell's angles, and the Phong terms with `N·L` and `R·V`.
+//! The text trace and the inspector both write from here.
+
+use glam::DVec3;
+
+use crate::tree::arithmetic::{
+    Arithmetic, CameraRecord, CameraStage, Fate, RootRecord, Slab, TUnit, TestMethod,
+};
+use crate::tree::ray_tree::{
+    HitRecord, LightRecord, LocalRecord, RayNode, ShadowOutcomeRecord, ShadowRecord, TestRecord,
+};
+use crate::views::numbers::{color, degrees, factor, num, vec3};
+
+/// A step's headline and the lines that show its arithmetic.
+pub type Lines = (String, Vec<String>);
+
+/// How the sample's primary ray was made: pixel → (c, r) → (u_c, v_r) → P(r, c).
+pub fn camera(cam: &CameraRecord, stage: &CameraStage, which: &str) -> Lines {
+    let [px, py] = stage.pixel;
+    let at = if stage.offset == [0.0, 0.0] {
+        "its center".to_owned()
+    } else {
+        format!(
+            "({}, {}), offset ({}, {}) from its center",
+            num(stage.x),
+            num(stage.y),
+            num(stage.offset[0]),
+            num(stage.offset[1])
+        )
+    };
+    let headline = format!("camera: {which}pixel {px},{py} at {at}");
+    let (w, h) = (cam.half_width, cam.half_height);
+    let details = vec![
+        format!(
+            "column c = x = {}, row r = N_r − 1 − y = {} − 1 − {} = {} (the lecture counts rows up from the bottom)",
+            num(stage.c),
+            cam.rows,
+            num(stage.y),
+            num(stage.r)
+        ),
+        format!(
+            "u_c = −W + W·2c/(N_c − 1) = −{} + {} × 2 × {}/{} = {}",
+            num(w),
+            num(w),
+            num(stage.c),
+            cam.columns.saturating_sub(1),
+            num(stage.u_c)
+        ),
+        format!(
+            "v_r = −H + H·2r/(N_r − 1) = −{} + {} × 2 × {}/{} = {}",
+            num(h),
+            num(h),
+            num(stage.r),
+            cam.rows.saturating_sub(1),
+            num(stage.v_r)
+        ),
+        format!(
+            "P(r, c) = eye − N·n + u_c·u + v_r·v = {} − {} × {} + {} × {} + {} × {} = {}",
+            vec3(cam.eye),
+            num(cam.distance),
+            vec3(cam.n),
+            factor(stage.u_c),
+            vec3(cam.u),
+            factor(stage.v_r),
+            vec3(cam.v),
+            vec3(stage.point)
+        ),
+    ];
+    (headline, details)
+}
+
+/// What `t` counts along the ray.
+pub fn t_unit(node: &RayNode) -> String {
+    match node.t_unit {
+        TUnit::ImagePlane => "c = P(r, c) − eye, so t = 1 on the image plane".to_owned(),
+        TUnit::Direction => format!(
+            "t counts lengths of c (|c| = {})",
+            num(node.direction.length())
+        ),
+        TUnit::Distance => "c is a unit vector, so t is the distance".to_owned(),
+    }
+}
+
+/// One object test of the ray `node`: the method's numbers, then each root and
+/// what became of it.
+pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
+    let hit_found = node.hit.is_some();
+    let mut details = Vec::new();
+    if let Some(r) = &test.object_ray {
+        details.push(format!(
+            "the inverse-transformed ray: S' = M⁻¹S = {}, c' = M⁻¹c = {}; t is the same on both",
+            vec3(r.origin),
+            vec3(r.direction)
+        ));
+    }
+    let method = match test.method {
+        TestMethod::LectureQuadratic => " (the lecture's quadratic)",
+        TestMethod::MollerTrumbore => " (Möller–Trumbore)",
+        _ => "",
+    };
+    let fates = fates(&test.roots, hit_found);
+    let roots = fates
+        .iter()
+        .map(|(t, why)| format!("t = {} ({why})", num(*t)))
+        .collect::<Vec<_>>()
+        .join(", ");
+    let found = match &test.arithmetic {
+        Some(Arithmetic::Quadratic {
+            origin,
+            direction,
+            a,
+            b,
+            c,
+            discriminant,
+        }) => {
+            let (s, c_) = if test.object_ray.is_some() {
+                ("S'", "c'")
+            } else {
+                ("S", "c")
+            };
+            let (seen_from, seen_along) = test
+                .object_ray
+                .map_or((node.origin, node.direction), |r| (r.origin, r.direction));
+            let (s, c_) = if (*origin, *direction) == (seen_from, seen_along) {
+                (s, c_)
+            } else {
+                details.push(format!(
+                    "the sphere moved to the origin and scaled to radius 1 ({s} → ({s} − center)/r, {c_} → {c_}/r): S₁ = {}, c₁ = {}",
+                    vec3(*origin),
+                    vec3(*direction)
+                ));
+                ("S₁", "c₁")
+            };
+            details.push(format!(
+                "A = |{c_}|² = {}, B = {s}·{c_} = {}, C = |{s}|² − 1 = {}",
+                num(*a),
+                num(*b),
+                num(*c)
+            ));
+            let d = *discriminant;
+            if d < 0.0 {
+                format!("B² − AC = {} < 0: no root, the ray misses", num(d))
+            } else if d == 0.0 {
+                format!("B² − AC = 0: one root, t = −B/A: {roots}")
+            } else {
+                format!(
+                    "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {roots}",
+                    num(d)
+                )
+            }
+        }
+        Some(Arithmetic::Plane { n_dot_c, numerator }) if *n_dot_c != 0.0 => {
+            let root = fates
+                .first()
+                .map_or(String::new(), |(t, why)| format!(" = {} ({why})", num(*t)));
+            format!(
+                "n·c = {}, t = (P₀ − S)·n / (n·c) = {} / {}{root}",
+                num(*n_dot_c),
+                num(*numerator),
+                factor(*n_dot_c)
+            )
+        }
+        Some(Arithmetic::Plane { .. }) => "n·c = 0: the ray runs parallel, no root".to_owned(),
+        Some(Arithmetic::Slabs { axes }) => {
+            details.push(slabs(axes));
+            if roots.is_empty() {
+                "the slabs' intervals do not overlap: no root".to_owned()
+            } else {
+                format!("enters at the last slab's start, leaves at the first's end: {roots}")
+            }
+        }
+        Some(Arithmetic::Barycentric { weights }) => format!(
+            "{roots}, barycentric weights {}",
+            vec3(DVec3::from_array(*weights))
+        ),
+        Some(Arithmetic::Face { face, weights }) => format!(
+            "nearest face {face}: {roots}, barycentric weights {}",
+            vec3(DVec3::from_array(*weights))
+        ),
+        None => "miss".to_owned(),
+    };
+    (
+        format!("test {kind} '{}'{method}: {found}", test.name),
+        details,
+    )
+}
+
+fn slabs(axes: &[Slab; 3]) -> String {
+    let each: Vec<String> = ["x", "y", "z"]
+        .iter()
+        .zip(axes)
+        .map(|(name, slab)| match slab {
+            Slab::Crossing { near, far } => format!("{name} [{}, {}]", num(*near), num(*far)),
+            Slab::Parallel { inside: true } => format!("{name} parallel, inside"),
+            Slab::Parallel { inside: false } => format!("{name} parallel, outside"),
+        })
+        .collect();
+    format!("slabs: {}", each.join(", "))
+}
+
+/// Each root with its fate: the lecture's "first intersection?" answered.
+fn fates(roots: &[RootRecord], hit_found: bool) -> Vec<(f64, &'static str)> {
+    roots
+        .iter()
+        .map(|r| {
+            let why = match (r.fate, r.at_start) {
+                (Fate::Chosen, false) => "the closest hit",
+                (Fate::Chosen, true) => {
+                    "the surface the ray starts on, taken as the hit: shadow acne"
+                }
+                (Fate::Farther, _) if hit_found => "farther than the closest hit",
+                (Fate::Farther, _) => "ahead",
+                (Fate::Behind, true) => "the surface the ray starts on: ignored",
+                (Fate::Behind, false) => "behind the origin: ignored",
+                (Fate::Beyond, _) => "past the ray's end: ignored",
+            };
+            (r.t, why)
+        })
+        .collect()
+}
+
+/// The closest hit: where, which side, the indices, and the normal the formulas use.
+pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
+    let side = if hit.entering { "entering" } else { "leaving" };
+    let headline = format!(
+        "closest hit: '{}' at t = {}, P = S + t·c = {}, {side}, n₁ = {} → n₂ = {} ({searched})",
+        hit.name,
+        num(hit.t),
+        vec3(hit.point),
+        num(hit.n1),
+        num(hit.n2),
+    );
+    let normal = if hit.shading_normal == hit.normal {
+        "the formulas use it as it is, n = N".to_owned()
+    } else if hit.shading_normal == -hit.normal {
+        format!(
+            "the ray arrives from inside, so the formulas use n = −N = {}, turned to face it",
+            vec3(hit.shading_normal)
+        )
+    } else {
+        format!(
+            "the formulas use n = {}, the vertex normals interpolated and turned to face the ray",
+            vec3(hit.shading_normal)
+        )
+    };
+    let mut details = vec![format!(
+        "the normal N = {} points out of the object; {normal}: n·c = {} with c = {}",
+        vec3(hit.normal),
+        num(hit.n_dot_c),
+        vec3(hit.incoming)
+    )];
+    if let Some(p) = hit.object_point {
+        details.push(format!(
+            "on the untransformed primitive: P' = M⁻¹P = {}",
+            vec3(p)
+        ));
+    }
+    (headline, details)
+}
+
+/// A shadow ray's outcome; `t = 1` is the light.
+pub fn shadow(s: &ShadowRecord) -> String {
+    let what = match &s.outcome {
+        ShadowOutcomeRecord::FacesAway => "the light is behind the surface: no ray cast".to_owned(),
+        ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
+            "reaches the light".to_owned()
+        }
+        ShadowOutcomeRecord::Reaches { transmitted } => format!(
+            "reaches the light through transparent objects, keeping {}",
+            num(*transmitted)
+        ),
+        ShadowOutcomeRecord::Blocked { name, t, .. } => format!(
+            "blocked by '{name}' at t = {} (t = 1 at the light)",
+            num(*t)
+        ),
+    };
+    format!("shadow ray to light '{}': {what}", s.name)
+}
+
+/// The local color: the ambient term, then each light's diffuse and specular
+/// terms with the vectors and dot products they came from.
+pub fn local(local: &LocalRecord) -> Lines {
+    let lights: String = local
+        .lights
+        .iter()
+        .map(|l| {
+            format!(
+                " + '{}' (diffuse {} + specular {})",
+                l.name,
+                color(l.diffuse),
+                color(l.specular)
+            )
+        })
+        .collect();
+    let headline = format!(
+        "local = ambient {}{lights} = {}",
+        color(local.ambient),
+        color(local.total)
+    );
+    let mut details = vec![format!(
+        "ambient = k_a·color·ambient light = {} × {} × {} = {}",
+        num(local.k_a),
+        color(local.color),
+        color(local.ambient_light),
+        color(local.ambient)
+    )];
+    for l in &local.lights {
+        details.extend(light(l, local));
+    }
+    (headline, details)
+}
+
+fn light(l: &LightRecord, local: &LocalRecord) -> Vec<String> {
+    let Some(p) = &l.phong else {
+        return vec![format!("'{}': no light arrives, it adds nothing", l.name)];
+    };
+    vec![
+        format!(
+            "'{}': L = {}, N·L = {}; diffuse = k_d·(N·L)·color·light = {} × {} × {} × {} = {}",
+            l.name,
+            vec3(p.l),
+            num(p.n_dot_l),
+            num(local.k_d),
+            num(p.n_dot_l),
+            color(local.color),
+            color(p.arriving),
+            color(l.diffuse)
+        ),
+        format!(
+            "'{}': R = 2(N·L)N − L = {}, V = {}, R·V = {}; specular = k_s·(R·V)^shininess·light = {} × {}^{} × {} = {}",
+            l.name,
+            vec3(p.r),
+            vec3(p.v),
+            num(p.r_dot_v),
+            num(local.k_s),
+            num(p.r_dot_v),
+            num(local.shininess),
+            color(p.arriving),
+            color(l.specular)
+        ),
+    ]
+}
+
+/// The mirror direction with its numbers.
+pub fn reflection(hit: &HitRecord) -> String {
+    format!(
+        "v = c − 2(n·c)n = {} − 2 × {} × {} = {}",
+        vec3(hit.incoming),
+        factor(hit.n_dot_c),
+        vec3(hit.shading_normal),
+        vec3(hit.mirror)
+    )
+}
+
+/// Snell's law at the hit, or why it has no solution (total internal reflection).
+pub fn refraction(hit: &HitRecord) -> Vec<String> {
+    let Some(r) = &hit.refraction else {
+        return Vec::new();
+    };
+    let snell = format!(
+        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = acos(−n·c) = {}: sin θ₂ = (n₁/n₂)·sin θ₁ = ({}/{}) × {} = {}",
+        degrees(r.theta1),
+        num(hit.n1),
+        num(hit.n2),
+        num(r.sin_theta1),
+        num(r.sin_theta2)
+    );
+    match (r.theta2, r.cos_theta2, r.direction) {
+        (Some(theta2), Some(cos_theta2), Some(dir)) => {
+            vec![
+                format!("{snell}, θ₂ = {}", degrees(theta2)),
+                format!(
+                    "direction = η·c + (η cos θ₁ − cos θ₂)·n with η = n₁/n₂ = {}: {} × {} + ({} × {} − {}) × {} = {}",
+                    num(r.eta),
+                    num(r.eta),
+                    vec3(hit.incoming),
+                    num(r.eta),
+                    num(r.cos_theta1),
+                    num(cos_theta2),
+                    vec3(hit.shading_normal),
+                    vec3(dir)
+                ),
+            ]
+        }
+        _ => {
+            let critical = r.critical.map_or(String::new(), |c| {
+                format!(
+                    "; θ₁ is beyond the critical angle asin(n₂/n₁) = asin({}/{}) = {}",
+                    num(hit.n2),
+                    num(hit.n1),
+                    degrees(c)
+                )
+            });
+            vec![format!("{snell} > 1: no angle has that sine{critical}")]
+        }
+    }
+}

@@ -1,0 +1,443 @@
+//! The lecture's quantities in the trace, each checked against a computation of
+//! its own from the recorded rays, normals and the scene: the camera stage, the
+//! unit-sphere quadratic and its roots, the inverse-transformed ray, what became
+//! of each root, `n·c` and the mirror direction, Snell's angles (grazing,
+//! inside spheres, through transformed spheres, under total internal
+//! reflection), and the Phong terms.
+
+use glam::DVec3;
+use raytree::geometry::object::Shape;
+use raytree::math::ray::Ray;
+use raytree::scene::Scene;
+use raytree::scene::source::SceneSource;
+use raytree::tree::arithmetic::{Arithmetic, Fate, TUnit};
+use raytree::tree::document::TraceDocument;
+use raytree::tree::ray_tree::{Branch, RayNode};
+use raytree::tree::record;
+
+fn scene(name: &str) -> Scene {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(name);
+    raytree::scene::loader::load(&path).unwrap()
+}
+
+fn source() -> SceneSource {
+    SceneSource::new("test", "")
+}
+
+/// Pixels and rays that between them meet every case: the glass ball's total
+/// internal reflection, a mirror, a floor point in shadow, transformed spheres
+/// (ellipsoids, the nested scene's inner ball), rays inside spheres, a grazing
+/// ray, and a ray started inside the glass.
+fn traces() -> Vec<(String, Scene, TraceDocument)> {
+    let mut out = Vec::new();
+    for (name, pixels) in [
+        (
+            "whitted.json",
+            vec![(416, 209), (264, 200), (168, 296), (440, 376)],
+        ),
+        ("ellipsoids.json", vec![(320, 240), (250, 200), (400, 180)]),
+        ("nested.json", vec![(320, 240), (300, 200)]),
+    ] {
+        let s = scene(name);
+        for (x, y) in pixels {
+            let t = record::pixel(&s, source(), x, y, None).unwrap();
+            out.push((format!("{name} {x},{y}"), s.clone(), t));
+        }
+    }
+    let s = scene("whitted.json");
+    // The glass ball: center (0.9, 1, 1.2), radius 0.9. A ray from the far left
+    // passing 0.9·(1 - 1e-6) above its center grazes it.
+    let grazing = Ray::new(DVec3::new(-10.0, 1.0 + 0.9 * (1.0 - 1e-6), 1.2), DVec3::X);
+    // From the glass ball's center region (between the cavity and the wall), outward and oblique.
+    let inside = Ray::new(DVec3::new(0.9, 1.5, 1.2), DVec3::new(0.3, 0.4, 0.2));
+    for (label, ray) in [("grazing", grazing), ("inside", inside)] {
+        out.push((
+            label.to_owned(),
+            s.clone(),
+            record::ray(&s, source(), ray).unwrap(),
+        ));
+    }
+    out
+}
+
+/// Relative closeness with a floor of 1 for the scale.
+fn close(a: f64, b: f64, rel: f64) -> bool {
+    (a - b).abs() <= rel * a.abs().max(b.abs()).max(1.0)
+}
+
+fn each_node(f: impl Fn(&str, &Scene, &TraceDocument, usize, &RayNode)) {
+    for (label, scene, trace) in traces() {
+        for (k, sample) in trace.samples.iter().enumerate() {
+            for (i, node) in sample.tree.nodes.iter().enumerate() {
+                f(
+                    &format!("{label} sample {k} node {i}"),
+                    &scene,
+                    &trace,
+                    k,
+                    node,
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn the_camera_stage_makes_the_primary_ray() {
+    for (label, _, trace) in traces() {
+        let cam = &trace.camera;
+        for sample in &trace.samples {
+            let Some(stage) = &sample.camera else {
+                assert!(trace.pixel.is_none(), "{label}: a pixel has a camera stage");
+                continue;
+            };
+            let root = &sample.tree.nodes[0];
+            // Bit for bit: the primary ray is P(r, c) - eye.
+            assert_eq!(stage.point - cam.eye, root.direction, "{label}");
+            assert_eq!(root.origin, cam.eye, "{label}");
+            assert_eq!(root.t_unit, TUnit::ImagePlane, "{label}");
+            // The lecture's formulas, written out once more by hand. Tolerance:
+            // a few ULPs of numbers of order W, H and the eye's coordinates.
+            assert_eq!(stage.r, f64::from(cam.rows) - 1.0 - stage.y, "{label}");
+            let u_c = -cam.half_width + cam.half_width * 2.0 * stage.c / f64::from(cam.columns - 1);
+            let v_r = -cam.half_height + cam.half_height * 2.0 * stage.r / f64::from(cam.rows - 1);
+            assert!(
+                close(stage.u_c, u_c, 1e-14) && close(stage.v_r, v_r, 1e-14),
+                "{label}"
+            );
+            let p = cam.eye - cam.distance * cam.n + u_c * cam.u + v_r * cam.v;
+            assert!((p - stage.point).abs().max_element() < 1e-13, "{label}");
+            // t = 1 is on the image plane: the point is N in front of the eye along -n.
+            assert!(
+                close((stage.point - cam.eye).dot(-cam.n), cam.distance, 1e-14),
+                "{label}"
+            );
+        }
+    }
+}
+
+#[test]
+fn the_quadratic_and_the_inverse_transformed_ray_agree_with_the_scene() {
+    each_node(|at, scene, _, _, node| {
+        for test in &node.tests {
+            let object = &scene.objects[test.object];
+            let world = Ray::new(node.origin, node.direction);
+            // S' = M⁻¹S and c' = M⁻¹c, computed here from the inverse matrix.
+            let local = match &object.transform {
+                Some(tf) => {
+                    let inv = tf.to_world.inverse();
+                    let r = test
+                        .object_ray
+                        .expect("a transformed object records S', c'");
+                    let (s, c) = (
+                        inv.transform_point3(world.origin),
+                        inv.transform_vector3(world.dir),
+                    );
+                    // Tolerance: the inverse computed twice, rounding at 1e-15 of the scene's size.
+                    assert!((r.origin - s).abs().max_element() < 1e-12, "{at}: S'");
+                    assert!((r.direction - c).abs().max_element() < 1e-12, "{at}: c'");
+                    Ray::new(r.origin, r.direction)
+                }
+                None => {
+                    assert!(test.object_ray.is_none(), "{at}");
+                    world
+                }
+            };
+            let Shape::Sphere(sphere) = &object.shape else {
+                continue;
+            };
+            let Some(Arithmetic::Quadratic {
+                a,
+                b,
+                c,
+                discriminant,
+                ..
+            }) = test.arithmetic
+            else {
+                panic!("{at}: a sphere test records its quadratic");
+            };
+            // The lecture's A, B, C for the unit sphere, from the ray moved and scaled by hand.
+            let s = (local.origin - sphere.center) / sphere.radius;
+            let d = local.dir / sphere.radius;
+            let (a2, b2, c2) = (
+                d.x * d.x + d.y * d.y + d.z * d.z,
+                s.x * d.x + s.y * d.y + s.z * d.z,
+                s.x * s.x + s.y * s.y + s.z * s.z - 1.0,
+            );
+            assert!(
+                close(a, a2, 1e-13) && close(b, b2, 1e-13) && close(c, c2, 1e-13),
+                "{at}: A, B, C"
+            );
+            assert!(
+                close(discriminant, b2 * b2 - a2 * c2, 1e-9),
+                "{at}: B² - AC"
+            );
+            // Its roots are the recorded ones (which the stable form found). The
+            // lecture's form loses digits to cancellation near t = 0, so the
+            // tolerance is relative to the larger root.
+            let roots: Vec<f64> = test.roots.iter().map(|r| r.t).collect();
+            if discriminant < 0.0 {
+                assert!(roots.is_empty(), "{at}: no real root, none recorded");
+            } else if !roots.is_empty() {
+                let q = discriminant.sqrt();
+                let (t1, t2) = ((-b - q) / a, (-b + q) / a);
+                let scale = t1.abs().max(t2.abs()).max(1.0);
+                assert!(
+                    (roots[0] - t1).abs() <= 1e-9 * scale,
+                    "{at}: {roots:?} vs {t1}"
+                );
+                assert!(
+                    (roots[roots.len() - 1] - t2).abs() <= 1e-9 * scale,
+                    "{at}: {roots:?} vs {t2}"
+                );
+            }
+        }
+    });
+}
+
+#[test]
+fn each_roots_fate_is_what_the_tracer_did() {
+    each_node(|at, _, _, _, node| {
+        let chosen: Vec<(usize, f64)> = node
+            .tests
+            .iter()
+            .flat_map(|t| {
+                t.roots
+                    .iter()
+                    .filter(|r| r.fate == Fate::Chosen)
+                    .map(|r| (t.object, r.t))
+            })
+            .collect();
+        match &node.hit {
+            Some(h) => assert_eq!(
+                chosen,
+                [(h.object, h.t)],
+                "{at}: exactly the hit's root is chosen"
+            ),
+            None => assert!(chosen.is_empty(), "{at}: a miss chooses nothing"),
+        }
+        for test in &node.tests {
+            for r in &test.roots {
+                match r.fate {
+                    Fate::Behind => assert!(r.t <= node.t_min, "{at}: {r:?}"),
+                    Fate::Farther => {
+                        assert!(r.t > node.t_min, "{at}: {r:?}");
+                        assert!(node.hit.as_ref().is_none_or(|h| r.t >= h.t), "{at}: {r:?}");
+                    }
+                    Fate::Beyond => assert!(node.t_max.is_some_and(|m| r.t >= m), "{at}"),
+                    Fate::Chosen => {}
+                }
+                if r.at_start {
+                    // Only a secondary ray leaves a surface, and only its own object's root lies on it.
+                    assert!(
+                        node.parent.is_some(),
+                        "{at}: a primary ray leaves no surface"
+                    );
+                    assert!(r.t.abs() * node.direction.length() < 1e-9, "{at}: {r:?}");
+                }
+            }
+        }
+        // A secondary ray leaving a sphere sees that surface at t ≈ 0 and ignores it.
+        if node.parent.is_some()
+            && node
+                .tests
+                .iter()
+                .any(|t| t.roots.iter().any(|r| r.at_start))
+        {
+            assert!(
+                node.tests
+                    .iter()
+                    .flat_map(|t| &t.roots)
+                    .filter(|r| r.at_start)
+                    .all(|r| r.fate == Fate::Behind),
+                "{at}: with robust offsets the starting surface is never taken"
+            );
+        }
+    });
+}
+
+#[test]
+fn mirror_directions_and_snells_angles_check_out() {
+    let mut refractions = 0;
+    let mut tirs = 0;
+    for (label, _, trace) in traces() {
+        for sample in &trace.samples {
+            let nodes = &sample.tree.nodes;
+            for (i, node) in nodes.iter().enumerate() {
+                let Some(h) = &node.hit else { continue };
+                let at = format!("{label} node {i}");
+                let n = h.shading_normal;
+                // c is the unit incoming direction, n faces it.
+                assert!(close(h.incoming.length(), 1.0, 1e-15), "{at}");
+                assert!(
+                    (h.incoming - node.direction.normalize()).length() < 1e-15,
+                    "{at}"
+                );
+                assert!(
+                    h.n_dot_c <= 0.0 && close(h.n_dot_c, n.dot(h.incoming), 1e-15),
+                    "{at}"
+                );
+                // Equal angles: the mirror direction makes the same angle with n.
+                // Tolerance: unit vectors, a few ULPs.
+                assert!(
+                    close(h.mirror.dot(n), -h.incoming.dot(n), 1e-14),
+                    "{at}: θi = θr"
+                );
+                if let Some(child) = node.reflected.as_ref().and_then(|b| b.node) {
+                    assert_eq!(
+                        nodes[child].direction, h.mirror,
+                        "{at}: the reflected ray is v"
+                    );
+                }
+                let Some(r) = &h.refraction else { continue };
+                let cos1 = (-n.dot(h.incoming)).clamp(-1.0, 1.0);
+                assert!(close(r.theta1, cos1.acos().to_degrees(), 1e-12), "{at}: θ₁");
+                let refracted = node
+                    .refracted
+                    .as_ref()
+                    .expect("a transparent hit has a refracted branch");
+                if refracted.outcome == Branch::TotalInternalReflection {
+                    tirs += 1;
+                    assert!(
+                        r.sin_theta2 > 1.0 && r.theta2.is_none() && r.direction.is_none(),
+                        "{at}"
+                    );
+                    let critical = (h.n2 / h.n1).asin().to_degrees();
+                    assert!(
+                        close(r.critical.unwrap(), critical, 1e-12) && r.theta1 > critical,
+                        "{at}"
+                    );
+                    continue;
+                }
+                // Snell's law on the recorded vectors: the refracted ray's angle to -n.
+                let dir = r.direction.expect("refracts");
+                if let Some(child) = refracted.node {
+                    assert_eq!(nodes[child].direction, dir, "{at}: the refracted ray is t");
+                }
+                refractions += 1;
+                let theta2 = (-n).dot(dir).clamp(-1.0, 1.0).acos();
+                assert!(
+                    close(r.theta2.unwrap(), theta2.to_degrees(), 1e-9),
+                    "{at}: θ₂ {} vs {}",
+                    r.theta2.unwrap(),
+                    theta2.to_degrees()
+                );
+                assert!(
+                    close(
+                        h.n1 * r.theta1.to_radians().sin(),
+                        h.n2 * theta2.sin(),
+                        1e-12
+                    ),
+                    "{at}: n₁ sin θ₁ = n₂ sin θ₂"
+                );
+                // The refracted direction stays in the plane of c and n.
+                assert!(h.incoming.cross(n).dot(dir).abs() < 1e-14, "{at}");
+            }
+        }
+    }
+    assert!(
+        refractions >= 4 && tirs >= 1,
+        "{refractions} refractions, {tirs} total internal reflections"
+    );
+}
+
+#[test]
+fn phong_terms_are_made_of_their_recorded_parts() {
+    each_node(|at, _, _, _, node| {
+        let (Some(h), Some(local)) = (&node.hit, &node.local) else {
+            return;
+        };
+        let n = h.shading_normal;
+        // Tolerance: products of a handful of numbers near 1, a few ULPs each.
+        assert!(
+            (local.ambient - local.k_a * local.color * local.ambient_light)
+                .abs()
+                .max_element()
+                < 1e-15,
+            "{at}"
+        );
+        for l in &local.lights {
+            let Some(p) = &l.phong else {
+                assert_eq!((l.diffuse, l.specular), (DVec3::ZERO, DVec3::ZERO), "{at}");
+                continue;
+            };
+            assert!(close(p.n_dot_l, n.dot(p.l), 1e-15), "{at}: N·L");
+            assert!(
+                (p.r - (2.0 * p.n_dot_l * n - p.l)).length() < 1e-15,
+                "{at}: R"
+            );
+            assert!(
+                close(p.v.length(), 1.0, 1e-15) && (p.v + h.incoming).length() < 1e-15,
+                "{at}: V"
+            );
+            assert!(close(p.r_dot_v, p.r.dot(p.v).max(0.0), 1e-15), "{at}: R·V");
+            let diffuse = local.k_d * p.n_dot_l * local.color * p.arriving;
+            assert!(
+                (l.diffuse - diffuse).abs().max_element() < 1e-15,
+                "{at}: diffuse"
+            );
+            let highlight = if local.k_s > 0.0 && p.r_dot_v > 0.0 {
+                local.k_s * p.r_dot_v.powf(local.shininess)
+            } else {
+                0.0
+            };
+            assert!(
+                (l.specular - highlight * p.arriving).abs().max_element() < 1e-15,
+                "{at}: specular"
+            );
+        }
+    });
+}
+
+#[test]
+fn t_counts_what_each_ray_says() {
+    each_node(|at, _, trace, _, node| match node.t_unit {
+        TUnit::ImagePlane => assert!(trace.pixel.is_some() && node.parent.is_none(), "{at}"),
+        TUnit::Direction => assert!(trace.ray.is_some() && node.parent.is_none(), "{at}"),
+        TUnit::Distance => {
+            assert!(node.parent.is_some(), "{at}");
+            assert!(
+                close(node.direction.length(), 1.0, 1e-15),
+                "{at}: a unit direction"
+            );
+        }
+    });
+}
+
+#[test]
+fn the_tir_pixel_reads_as_the_lecture_writes_it() {
+    // What the issue asked to see at the README's total-internal-reflection pixel.
+    let s = scene("whitted.json");
+    let trace = record::pixel(&s, source(), 416, 209, None).unwrap();
+    let text = raytree::views::text::format(&trace, false);
+    for expected in [
+        "camera: pixel 416,209",
+        "u_c = −W + W·2c/(N_c − 1)",
+        "v_r = −H + H·2r/(N_r − 1)",
+        "P(r, c) = eye − N·n + u_c·u + v_r·v",
+        "t = 1 on the image plane",
+        "B² − AC = ",
+        "A = |c₁|² = ",
+        "(the surface the ray starts on: ignored)",
+        "(behind the origin: ignored)",
+        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = acos(−n·c) = ",
+        "θ₂ = ",
+        "> 1: no angle has that sine; θ₁ is beyond the critical angle asin(n₂/n₁) = asin(1/1.5) = 41.81°",
+        "N·L = ",
+        "R·V = ",
+        "c is a unit vector, so t is the distance",
+    ] {
+        assert!(
+            text.contains(expected),
+            "missing {expected:?} in the trace of 416,209"
+        );
+    }
+    // A shadow ray's t is a fraction of the way to its light.
+    let shadowed = record::pixel(&s, source(), 168, 296, None).unwrap();
+    let text = raytree::views::text::format(&shadowed, false);
+    assert!(
+        text.contains("blocked by 'mirror' at t = ") && text.contains("(t = 1 at the light)"),
+        "{text}"
+    );
+}
