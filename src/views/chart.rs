@@ -7,7 +7,8 @@ use glam::DVec2;
 
 use crate::methods::Offset;
 use crate::trace::sweep::Point;
-use crate::views::figure::{Anchor, Figure, Pen, palette};
+use crate::views::figure::{Anchor, Figure};
+use crate::views::pen::{Pen, palette};
 
 /// Indices of the points on the Pareto front (no other point is at least as fast
 /// and as accurate and better in one), by increasing time.
@@ -77,7 +78,10 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
     draw_points(&mut fig, points, &xy, &front);
     fig.frame_border();
     draw_legend(&mut fig, &xy);
-    fig.caption(&format!("{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"), 15.0);
+    let caption = format!(
+        "{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"
+    );
+    fig.caption(&Figure::wrap(&caption, 15.0, fig.frame().width()), 15.0);
     Some(fig)
 }
 

@@ -1,7 +1,10 @@
 //! Ray diagrams: a pixel's ray tree drawn in 2D over the scene, as a lecture
 //! slide or a book page would show it. Reads the recorded tree (and the scene,
-//! for the objects' shapes); draws with [`crate::views::figure`] through
-//! [`crate::views::projection`].
+//! for the objects' shapes); draws with [`crate::views::figure`] what
+//! [`crate::views::diagram_layout`] projected, honestly: what the drawing plane
+//! cuts of an object is solid, the rest of its outline a faint ghost, and a ray
+//! that only passes in front of or behind an object is dotted there. Labels go
+//! through [`crate::views::labels`], so none collides.
 
 use glam::{DVec2, DVec3};
 
@@ -9,246 +12,434 @@ use crate::scene::Scene;
 use crate::shading::material::Pattern;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::RayKind;
-use crate::views::clip::{clip_line, clip_ray, clip_segment};
-use crate::views::diagram_layout::{
-    Labels, Layout, NORMAL, Options, SHADOW_BLOCKED, SHADOW_REACHES, layout, ray_pen,
-};
-use crate::views::figure::{Anchor, Figure, Pen, Rgb, palette};
+use crate::views::clip::{clip_line, clip_segment};
+use crate::views::diagram_labels::{blocked, draw_label, label_requests, lines_px};
+use crate::views::diagram_layout::{Layout, NORMAL, Options, Stroke, layout, ray_pen};
+use crate::views::figure::{Figure, Rgb};
+use crate::views::labels::{self, Placed, PxRect};
+use crate::views::numbers::num;
+use crate::views::pen::{Pen, palette};
 use crate::views::projection::Outline;
 
-const TEXT: f32 = 15.0;
+/// Sizes scaled with the figure, so 600×400 reads as well as 1200×800.
+#[derive(Clone, Copy, Debug)]
+pub struct Scale {
+    /// 1 at 1200×800.
+    pub k: f64,
+    /// Label text size.
+    pub text: f32,
+}
+
+impl Scale {
+    /// The scale for a figure of `width × height` pixels.
+    pub fn of(width: u32, height: u32) -> Self {
+        let k = (f64::from(width) / 1200.0)
+            .min(f64::from(height) / 800.0)
+            .clamp(0.5, 2.5);
+        Self {
+            k,
+            text: (15.0 * k as f32).max(10.0),
+        }
+    }
+
+    /// A length of `x` pixels at 1200×800, at this figure's size.
+    pub fn px(&self, x: f64) -> f64 {
+        x * self.k
+    }
+
+    /// The pen widened (and its dashes stretched) to this figure's size.
+    pub fn pen(&self, pen: Pen) -> Pen {
+        pen.scaled(self.k as f32)
+    }
+}
+
+/// What a drawn figure holds, for tests: where each label went.
+pub struct Drawn {
+    /// The figure.
+    pub figure: Figure,
+    /// Every label placed, with its box and what it names.
+    pub labels: Vec<Placed>,
+    /// The legend's box (pixels).
+    pub legend: PxRect,
+    /// The frame (pixels).
+    pub frame: PxRect,
+    /// The legend's entries, in order: only what is drawn.
+    pub legend_entries: Vec<String>,
+}
 
 /// Draws sample `options.sample` of `trace` over `scene` (the scene it was traced
 /// in, with the same settings).
 pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Figure, String> {
+    draw_with_labels(trace, scene, options).map(|d| d.figure)
+}
+
+/// [`draw`], also returning where the labels went.
+pub fn draw_with_labels(
+    trace: &TraceDocument,
+    scene: &Scene,
+    options: &Options,
+) -> Result<Drawn, String> {
     let lay = layout(trace, scene, options)?;
-    let mut fig = Figure::new(options.width, options.height, 44.0, 12.0)
-        .ok_or("the figure size must be at least 40×60 pixels")?;
-    if fig.frame().width() < 40.0 || fig.frame().height() < 20.0 {
-        return Err("the figure size must be at least 40×60 pixels".to_owned());
+    let scale = Scale::of(options.width, options.height);
+    let caption = caption(trace, &lay, options);
+    let margin = scale.px(12.0) as f32;
+    let lines = Figure::wrap(
+        &caption,
+        scale.text + 1.0,
+        options.width as f32 - 2.0 * margin,
+    );
+    let top = (f64::from(scale.text + 1.0) * (1.3 * lines.len() as f64 + 0.9)) as f32 + 8.0;
+    let mut fig = Figure::new(options.width, options.height, top, margin)
+        .filter(|f| f.frame().width() >= 40.0 && f.frame().height() >= 40.0)
+        .ok_or("the figure must be at least 64×64 pixels")?;
+    fig.fit(lay.window.0, lay.window.1, 0.0);
+    draw_objects(&mut fig, scene, &lay, &scale);
+    draw_eye_and_image_plane(&mut fig, &lay, &scale);
+    for &p in &lay.lights {
+        if in_frame(&fig, p) {
+            fig.light(p);
+        }
     }
-    fig.fit(lay.lo, lay.hi, 0.08);
-    let labels = options.labels;
-    draw_objects(&mut fig, scene, &lay);
-    if labels != Labels::None {
-        label_objects(&mut fig, scene, &lay);
-    }
-    draw_eye_and_image_plane(&mut fig, &lay, labels);
-    draw_lights(&mut fig, scene, &lay, labels);
-    draw_rays(&mut fig, &lay);
-    draw_hits(&mut fig, &lay, labels);
+    draw_rays(&mut fig, &lay, &scale);
+    draw_marks(&mut fig, &lay, &scale);
+    draw_hits(&mut fig, &lay, &scale);
+    let offscreen = draw_off_frame(&mut fig, scene, &lay, &scale);
     fig.frame_border();
-    draw_legend(&mut fig, scene, &lay, options.shadows);
+    let (legend, legend_entries) = draw_legend(&mut fig, &lay, &scale);
+    let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen);
+    let frame = frame_px(&fig);
+    let placed = labels::place(
+        requests,
+        &blocked(&fig, &lay, legend, &scale),
+        &lines_px(&fig, &lay),
+        frame,
+    );
+    for p in &placed {
+        draw_label(&mut fig, p, &scale);
+    }
+    fig.caption(&lines, scale.text + 1.0);
+    Ok(Drawn {
+        figure: fig,
+        labels: placed,
+        legend,
+        frame,
+        legend_entries,
+    })
+}
+
+/// What the figure shows, and the honesty rule it follows.
+fn caption(trace: &TraceDocument, lay: &Layout, options: &Options) -> String {
     let sample = &trace.samples[options.sample];
     let what = match (&trace.pixel, &trace.ray) {
-        (Some(p), _) if trace.samples.len() > 1 || trace.settings.spp > 1 => {
-            format!("pixel {},{} (sample {})", p.x, p.y, sample.index)
-        }
+        (Some(p), _) if trace.samples.len() > 1 || trace.settings.spp > 1 => format!(
+            "pixel {},{}, sample {} of {}",
+            p.x,
+            p.y,
+            sample.index + 1,
+            trace.settings.spp
+        ),
         (Some(p), _) => format!("pixel {},{}", p.x, p.y),
         _ => "one ray".to_owned(),
     };
-    fig.caption(
-        &format!("{what} of {} · {}", trace.scene.file, lay.proj.caption()),
-        TEXT + 1.0,
-    );
-    Ok(fig)
+    let view = if sample.tree.nodes[0].hit.is_none() {
+        let passed: Vec<String> = lay
+            .near_misses
+            .iter()
+            .map(|&(_, gap, _, _)| num(gap))
+            .collect();
+        format!(
+            "the ray hits nothing and returns the background; view: the plane of the ray and world up{}",
+            if passed.is_empty() {
+                String::new()
+            } else {
+                format!(" (nearest objects passed {} away)", passed.join(" and "))
+            }
+        )
+    } else {
+        lay.proj.caption().to_owned()
+    };
+    format!(
+        "{what} of {} · {view} · solid: what the drawing plane cuts; faint: an outline seen through it; dotted: a ray passing in front of or behind an object",
+        trace.scene.file
+    )
 }
 
-/// Objects, under the rays. Those the tree does not touch may lie in front of
-/// or behind the drawing's plane: dashed and faint, so no ray seems to cross them.
-fn draw_objects(fig: &mut Figure, scene: &Scene, lay: &Layout) {
+pub(super) fn in_frame(fig: &Figure, p: DVec2) -> bool {
+    let (lo, hi) = fig.visible();
+    p.cmpge(lo).all() && p.cmple(hi).all()
+}
+
+fn frame_px(fig: &Figure) -> PxRect {
+    let f = fig.frame();
+    PxRect {
+        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
+        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
+    }
+}
+
+/// Objects, under the rays, farthest first: each one's silhouette as a faint
+/// ghost, then what the drawing plane cuts of it, solid.
+fn draw_objects(fig: &mut Figure, scene: &Scene, lay: &Layout, scale: &Scale) {
     let (vlo, vhi) = fig.visible();
-    for (i, (object, outline)) in scene.objects.iter().zip(&lay.outlines).enumerate() {
-        let material = &scene.materials[object.material];
-        let (tint, alpha) = pale(material);
-        let (fill, pen) = if lay.touched.contains(&i) {
-            ((tint, alpha), Pen::solid(palette::OBJECT, 1.5))
-        } else {
-            ((tint, alpha / 3), Pen::dashed([150, 150, 150], 1.2))
-        };
-        match *outline {
-            Outline::Ellipse { center, axes } => fig.ellipse(center, axes, Some(fill), Some(pen)),
-            Outline::Polygon { ref points } => fig.polygon(points, Some(fill), Some(pen)),
-            Outline::Line {
-                point,
-                dir,
-                outward,
-            } => {
-                if let Some((a, b)) = clip_line(point, dir, vlo, vhi) {
-                    let inside = half_plane(vlo, vhi, point, outward);
-                    fig.polygon(&inside, Some(fill), None);
+    let w = lay.proj.toward_viewer();
+    let mut order: Vec<usize> = (0..scene.objects.len()).collect();
+    let depth = |i: usize| (scene.objects[i].center() - lay.proj.origin).dot(w);
+    order.sort_by(|&a, &b| depth(a).total_cmp(&depth(b)));
+    let ghost = scale.pen(Pen::dashed([170, 170, 170], 1.1));
+    let cut = scale.pen(Pen::solid(palette::OBJECT, 1.6));
+    for i in order {
+        let (tint, alpha) = pale(&scene.materials[scene.objects[i].material]);
+        let shape = &lay.objects[i];
+        draw_outline(
+            fig,
+            &shape.silhouette,
+            Some((tint, alpha / 5)),
+            Some(ghost),
+            (vlo, vhi),
+        );
+        if let Some(section) = &shape.section {
+            draw_outline(fig, section, Some((tint, alpha)), Some(cut), (vlo, vhi));
+        }
+    }
+}
+
+fn draw_outline(
+    fig: &mut Figure,
+    outline: &Outline,
+    fill: Option<(Rgb, u8)>,
+    pen: Option<Pen>,
+    (vlo, vhi): (DVec2, DVec2),
+) {
+    match outline {
+        Outline::Ellipse { center, axes } => fig.ellipse(*center, *axes, fill, pen),
+        Outline::Polygon { points } => fig.polygon(points, fill, pen),
+        Outline::Segments { segments } => {
+            if let Some(pen) = pen {
+                for [a, b] in segments {
+                    fig.line(*a, *b, pen);
+                }
+            }
+        }
+        Outline::Line {
+            point,
+            dir,
+            outward,
+        } => {
+            if let Some((a, b)) = clip_line(*point, *dir, vlo, vhi) {
+                let inside = half_plane(vlo, vhi, *point, *outward);
+                fig.polygon(&inside, fill, None);
+                if let Some(pen) = pen {
                     fig.line(a, b, pen);
                 }
             }
-            Outline::Parallel => fig.polygon(
-                &[vlo, DVec2::new(vhi.x, vlo.y), vhi, DVec2::new(vlo.x, vhi.y)],
-                Some((tint, alpha / 2)),
-                None,
-            ),
         }
-    }
-}
-
-/// Each object's name: a bounded one at the top-left corner of its box (off
-/// the outline, where rays arrive less often), a plane at its left end.
-fn label_objects(fig: &mut Figure, scene: &Scene, lay: &Layout) {
-    let (vlo, vhi) = fig.visible();
-    for (object, outline) in scene.objects.iter().zip(&lay.outlines) {
-        match *outline {
-            Outline::Ellipse { .. } | Outline::Polygon { .. } => {
-                let Some((lo, hi)) = outline.bounds() else {
-                    continue;
-                };
-                fig.label(
-                    DVec2::new(lo.x, hi.y),
-                    DVec2::ZERO,
-                    &object.name,
-                    TEXT,
-                    palette::OBJECT,
-                    Anchor::Right,
+        Outline::Parallel => {
+            if let Some((tint, alpha)) = fill {
+                fig.polygon(
+                    &[vlo, DVec2::new(vhi.x, vlo.y), vhi, DVec2::new(vlo.x, vhi.y)],
+                    Some((tint, alpha / 2)),
+                    None,
                 );
             }
-            Outline::Line { point, dir, .. } => {
-                if let Some((a, b)) = clip_line(point, dir, vlo, vhi) {
-                    let left = if a.x <= b.x { a } else { b };
-                    fig.label(
-                        left,
-                        DVec2::new(8.0, -6.0),
-                        &object.name,
-                        TEXT,
-                        palette::OBJECT,
-                        Anchor::Left,
-                    );
-                }
-            }
-            Outline::Parallel => {}
         }
     }
 }
 
-/// The eye, the image plane and the pixel on it.
-fn draw_eye_and_image_plane(fig: &mut Figure, lay: &Layout, labels: Labels) {
+fn draw_eye_and_image_plane(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     if let Some((a, b, pixel)) = lay.image_plane {
-        fig.line(a, b, Pen::solid(palette::INK, 2.0));
-        fig.dot(pixel, 3.5, palette::PAPER, Some(palette::INK));
-        if labels != Labels::None {
-            fig.label(
-                a,
-                DVec2::new(6.0, 16.0),
-                "image plane",
-                TEXT - 2.0,
-                palette::INK,
-                Anchor::Left,
-            );
+        fig.line(a, b, scale.pen(Pen::solid(palette::INK, 2.0)));
+        fig.dot(
+            pixel,
+            scale.px(3.5) as f32,
+            palette::PAPER,
+            Some(palette::INK),
+        );
+    }
+    fig.dot(lay.eye, scale.px(5.0) as f32, palette::INK, None);
+}
+
+/// Each line in pieces: solid where it is what it seems, faint and dotted where
+/// it only passes in front of or behind an object; arrowheads at rays' ends.
+fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+    let (vlo, vhi) = fig.visible();
+    for s in &lay.segments {
+        let pen = scale.pen(s.stroke.pen());
+        let at = |t: f64| s.from + (s.to - s.from) * t;
+        let mut cuts = vec![0.0];
+        for &[a, b] in &s.passing {
+            cuts.extend([a, b]);
+        }
+        cuts.push(1.0);
+        for (k, w) in cuts.windows(2).enumerate() {
+            let passing = k % 2 == 1;
+            let Some((a, b)) = clip_segment(at(w[0]), at(w[1]), vlo, vhi) else {
+                continue;
+            };
+            let pen = if passing { pen.passing() } else { pen };
+            let last = w[1] == 1.0;
+            if s.stroke.arrow() && last && !passing {
+                fig.arrow(a, b, pen);
+            } else {
+                fig.line(a, b, pen);
+            }
         }
     }
-    fig.dot(lay.eye, 5.0, palette::INK, None);
-    if labels != Labels::None {
-        fig.label(
-            lay.eye,
-            DVec2::new(0.0, -10.0),
-            "eye",
-            TEXT,
-            palette::INK,
-            Anchor::Center,
+}
+
+/// Blockers, lights behind surfaces, angle arcs and ticks.
+fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+    for &(_, _, on_ray, on_object) in &lay.near_misses {
+        let pen = scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.2, &[3.0, 3.0]));
+        fig.line(on_ray, on_object, pen);
+        fig.dot(
+            on_object,
+            scale.px(2.5) as f32,
+            palette::SHADOW_BLOCKED,
+            None,
+        );
+    }
+    let m = &lay.marks;
+    for b in &m.blocked {
+        fig.cross(
+            b.at,
+            scale.px(6.0),
+            scale.pen(Pen::solid(palette::INK, 2.0)),
+        );
+    }
+    for b in &m.behind {
+        let stub = b.at + b.toward * scale.px(26.0) / fig.scale();
+        fig.line(
+            b.at,
+            stub,
+            scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.3, &[2.0, 3.0])),
+        );
+        fig.cross(
+            stub,
+            scale.px(3.5),
+            scale.pen(Pen::solid(palette::SHADOW_BLOCKED, 1.3)),
+        );
+    }
+    for a in &m.angles {
+        fig.arc(
+            a.at,
+            scale.px(30.0),
+            a.from,
+            a.to,
+            scale.pen(Pen::solid(palette::INK, 1.2)),
+        );
+    }
+    for t in &m.ticks {
+        let half = t.across * scale.px(5.0) / fig.scale();
+        fig.line(
+            t.at - half,
+            t.at + half,
+            scale.pen(Pen::solid(palette::INK, 1.2)),
         );
     }
 }
 
-/// Each light as a small sun with its name.
-fn draw_lights(fig: &mut Figure, scene: &Scene, lay: &Layout, labels: Labels) {
-    for (light, &p) in scene.lights.iter().zip(&lay.lights) {
-        fig.light(p);
-        if labels != Labels::None {
-            fig.label(
-                p,
-                DVec2::new(16.0, 5.0),
-                &light.name,
-                TEXT,
-                palette::INK,
-                Anchor::Left,
-            );
-        }
+/// Hit points on top, with the normal the formulas use.
+fn draw_hits(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+    let normal_length = scale.px(45.0) / fig.scale();
+    for hit in &lay.hits {
+        let tip = hit.at + hit.normal * normal_length;
+        fig.arrow(hit.at, tip, scale.pen(NORMAL));
+        fig.dot(
+            hit.at,
+            scale.px(4.0) as f32,
+            ray_pen(hit.kind).color,
+            Some(palette::INK),
+        );
     }
 }
 
-/// Shadow rays first, then the rays with their arrowheads; a ray that leaves
-/// the scene runs to the frame's edge.
-fn draw_rays(fig: &mut Figure, lay: &Layout) {
-    let (vlo, vhi) = fig.visible();
-    for s in &lay.segments {
-        let end = match s.to {
-            Some(to) => clip_segment(s.from, to, vlo, vhi),
-            None => clip_ray(s.from, s.dir, vlo, vhi, 0.0),
-        };
-        if let Some((a, b)) = end {
-            if s.arrow {
-                fig.arrow(a, b, s.pen)
-            } else {
-                fig.line(a, b, s.pen)
-            }
-        }
-    }
-}
-
-/// Hit points on top, with their normals, named P1, P2, … in the order found.
-fn draw_hits(fig: &mut Figure, lay: &Layout, labels: Labels) {
-    let normal_length = 45.0 / fig.scale();
-    for (k, hit) in lay.hits.iter().enumerate() {
-        let p = hit.at;
-        let tip = p + hit.normal * normal_length;
-        fig.arrow(p, tip, NORMAL);
-        fig.dot(p, 4.0, ray_pen(hit.kind).color, Some(palette::INK));
-        if labels == Labels::All {
-            fig.label(
-                p,
-                DVec2::new(8.0, 16.0),
-                &format!("P{}", k + 1),
-                TEXT - 1.0,
-                palette::INK,
-                Anchor::Left,
-            );
-            fig.label(
-                tip,
-                DVec2::new(4.0, -4.0),
-                "N",
-                TEXT - 2.0,
-                palette::NORMAL,
-                Anchor::Left,
-            );
-        }
-    }
-}
-
-/// The legend, in the corner of the frame that hides the fewest of the
-/// drawing's points.
-fn draw_legend(fig: &mut Figure, scene: &Scene, lay: &Layout, shadows: bool) {
-    let mut legend = vec![
-        (ray_pen(RayKind::Primary), "primary ray"),
-        (ray_pen(RayKind::Reflected), "reflected ray"),
-        (ray_pen(RayKind::Refracted), "refracted ray"),
-    ];
-    if shadows {
-        legend.extend([
-            (SHADOW_REACHES, "shadow ray, reaches the light"),
-            (SHADOW_BLOCKED, "shadow ray, blocked"),
-        ]);
-    }
-    legend.push((NORMAL, "surface normal"));
-    let (vlo, vhi) = fig.visible();
-    let mut marks: Vec<DVec2> = scene
+/// A small arrow at the frame's edge toward each light (and the eye) outside
+/// it; returns where each went, with its name, for the labels.
+fn draw_off_frame(
+    fig: &mut Figure,
+    scene: &Scene,
+    lay: &Layout,
+    scale: &Scale,
+) -> Vec<(DVec2, String)> {
+    let (lo, hi) = fig.visible();
+    let center = (lo + hi) / 2.0;
+    let mut out = Vec::new();
+    let named = scene
         .lights
         .iter()
-        .map(|l| lay.proj.point(l.position))
-        .chain([lay.eye])
-        .collect();
-    for s in &lay.segments {
-        let to =
-            s.to.unwrap_or(s.from + s.dir.normalize_or_zero() * (vhi - vlo).length());
-        marks.extend((0..=20).map(|k| s.from + (to - s.from) * (f64::from(k) / 20.0)));
+        .map(|l| l.name.clone())
+        .zip(lay.lights.iter().copied())
+        .chain([("eye".to_owned(), lay.eye)]);
+    for (name, p) in named {
+        if in_frame(fig, p) {
+            continue;
+        }
+        let Some((_, edge)) = clip_segment(center, p, lo, hi) else {
+            continue;
+        };
+        let dir = (p - center).normalize_or_zero();
+        let inset = scale.px(14.0) / fig.scale();
+        let tip = edge - dir * inset * 0.2;
+        fig.arrow(
+            tip - dir * inset * 1.6,
+            tip,
+            scale.pen(Pen::solid(palette::INK, 1.8)),
+        );
+        out.push((fig.to_px(tip - dir * inset), name));
     }
-    let marks: Vec<DVec2> = marks.into_iter().map(|p| fig.to_px(p)).collect();
-    let boxes = fig.legend_boxes(&legend, TEXT - 2.0);
+    out
+}
+
+/// The legend: only what is drawn, in the corner that hides the least.
+fn draw_legend(fig: &mut Figure, lay: &Layout, scale: &Scale) -> (PxRect, Vec<String>) {
+    let mut legend: Vec<(Pen, &str)> = Vec::new();
+    let kinds = [
+        (RayKind::Primary, "primary ray"),
+        (RayKind::Reflected, "reflected ray"),
+        (RayKind::Refracted, "refracted ray"),
+    ];
+    for (kind, name) in kinds {
+        if lay.segments.iter().any(|s| s.stroke == Stroke::Ray(kind)) {
+            legend.push((scale.pen(ray_pen(kind)), name));
+        }
+    }
+    let has = |stroke: Stroke| lay.segments.iter().any(|s| s.stroke == stroke);
+    if has(Stroke::ShadowReaches) {
+        legend.push((
+            scale.pen(Stroke::ShadowReaches.pen()),
+            "shadow ray, reaches the light",
+        ));
+    }
+    if has(Stroke::ShadowBlocked) {
+        legend.push((
+            scale.pen(Stroke::ShadowBlocked.pen()),
+            "shadow ray up to its blocker (×)",
+        ));
+    }
+    if !lay.marks.behind.is_empty() {
+        legend.push((
+            scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.3, &[2.0, 3.0])),
+            "light behind the surface: no shadow ray",
+        ));
+    }
+    if lay.segments.iter().any(|s| !s.passing.is_empty()) {
+        legend.push((
+            scale.pen(ray_pen(RayKind::Primary).passing()),
+            "a ray passing in front of or behind an object",
+        ));
+    }
+    if !lay.hits.is_empty() {
+        legend.push((scale.pen(NORMAL), "surface normal n"));
+    }
+    let size = scale.text - 2.0;
+    let boxes = fig.legend_boxes(&legend, size);
+    let marks: Vec<DVec2> = lay
+        .segments
+        .iter()
+        .flat_map(|s| (0..=20).map(move |k| s.from + (s.to - s.from) * (f64::from(k) / 20.0)))
+        .chain(lay.hits.iter().map(|h| h.at))
+        .map(|p| fig.to_px(p))
+        .collect();
     let covered = |(o, wh): (DVec2, DVec2)| {
         marks
             .iter()
@@ -256,7 +447,16 @@ fn draw_legend(fig: &mut Figure, scene: &Scene, lay: &Layout, shadows: bool) {
             .count()
     };
     let corner = (0..4).min_by_key(|&c| (covered(boxes[c]), c)).unwrap_or(0);
-    fig.legend(&legend, TEXT - 2.0, corner);
+    fig.legend(&legend, size, corner);
+    let (o, wh) = boxes[corner];
+    let entries = legend.iter().map(|(_, t)| t.to_string()).collect();
+    (
+        PxRect {
+            min: o,
+            max: o + wh,
+        },
+        entries,
+    )
 }
 
 /// The part of the box `lo..hi` inside the solid of a plane drawn as a line
@@ -280,7 +480,7 @@ fn half_plane(lo: DVec2, hi: DVec2, point: DVec2, outward: DVec2) -> Vec<DVec2> 
 
 /// A pale fill that hints at the material: glass blue, mirrors gray, others a
 /// washed-out version of their color.
-fn pale(material: &crate::shading::material::Material) -> (Rgb, u8) {
+pub fn pale(material: &crate::shading::material::Material) -> (Rgb, u8) {
     if material.transparent > 0.0 {
         return ([200, 225, 250], 150);
     }

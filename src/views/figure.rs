@@ -8,6 +8,7 @@
 
 use std::sync::OnceLock;
 
+use crate::views::pen::{Pen, palette};
 use glam::DVec2;
 use tiny_skia::{
     Color, FillRule, Mask, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform,
@@ -15,64 +16,6 @@ use tiny_skia::{
 
 /// An sRGB color.
 pub type Rgb = [u8; 3];
-
-/// The colors every ray diagram uses (the inspector's diagram pane too).
-pub mod palette {
-    use super::Rgb;
-    /// Primary rays.
-    pub const PRIMARY: Rgb = [31, 119, 180];
-    /// Reflected rays.
-    pub const REFLECTED: Rgb = [44, 160, 44];
-    /// Refracted rays.
-    pub const REFRACTED: Rgb = [214, 39, 40];
-    /// Shadow rays that reach their light.
-    pub const SHADOW_REACHES: Rgb = [230, 159, 0];
-    /// Shadow rays that are blocked.
-    pub const SHADOW_BLOCKED: Rgb = [127, 127, 127];
-    /// Surface normals.
-    pub const NORMAL: Rgb = [148, 103, 189];
-    /// Object outlines.
-    pub const OBJECT: Rgb = [60, 60, 60];
-    /// Object fill.
-    pub const OBJECT_FILL: Rgb = [232, 232, 232];
-    /// Lights.
-    pub const LIGHT: Rgb = [255, 200, 0];
-    /// Text, the eye, the image plane.
-    pub const INK: Rgb = [20, 20, 20];
-    /// The page.
-    pub const PAPER: Rgb = [255, 255, 255];
-}
-
-/// How a line is drawn.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pen {
-    /// Its color.
-    pub color: Rgb,
-    /// Width in pixels.
-    pub width: f32,
-    /// Dash length and gap in pixels, or solid.
-    pub dash: Option<(f32, f32)>,
-}
-
-impl Pen {
-    /// A solid pen.
-    pub const fn solid(color: Rgb, width: f32) -> Self {
-        Self {
-            color,
-            width,
-            dash: None,
-        }
-    }
-
-    /// A dashed pen.
-    pub const fn dashed(color: Rgb, width: f32) -> Self {
-        Self {
-            color,
-            width,
-            dash: Some((7.0, 5.0)),
-        }
-    }
-}
 
 fn font() -> &'static fontdue::Font {
     static FONT: OnceLock<fontdue::Font> = OnceLock::new();
@@ -189,12 +132,13 @@ impl Figure {
             width: pen.width,
             ..Stroke::default()
         };
-        stroke.dash = pen
-            .dash
-            .and_then(|(on, off)| StrokeDash::new(vec![on, off], 0.0));
+        if !pen.dash.is_empty() {
+            let dash = pen.dash.iter().map(|d| d * pen.dash_scale).collect();
+            stroke.dash = StrokeDash::new(dash, 0.0);
+        }
         self.pixmap.stroke_path(
             &path,
-            &paint(pen.color, 255),
+            &paint(pen.color, pen.alpha),
             &stroke,
             Transform::identity(),
             Some(&self.clip),
@@ -229,7 +173,55 @@ impl Figure {
         let base = pb - dir * head;
         self.stroke_px(&[pa, base], pen, false);
         let side = dir.perp() * head * 0.4;
-        self.fill_px(&[pb, base + side, base - side], pen.color, 255);
+        self.fill_px(&[pb, base + side, base - side], pen.color, pen.alpha);
+    }
+
+    /// An arc of `radius` pixels around diagram point `center`, from unit
+    /// direction `from` to `to` (diagram coordinates) the short way.
+    pub fn arc(&mut self, center: DVec2, radius: f64, from: DVec2, to: DVec2, pen: Pen) {
+        let c = self.to_px(center);
+        // Pixels run y down: a diagram angle a is the pixel angle -a.
+        let a0 = -from.y.atan2(from.x);
+        let mut sweep = -(to.y.atan2(to.x)) - a0;
+        if sweep > std::f64::consts::PI {
+            sweep -= std::f64::consts::TAU;
+        } else if sweep < -std::f64::consts::PI {
+            sweep += std::f64::consts::TAU;
+        }
+        let points: Vec<DVec2> = (0..=24)
+            .map(|k| {
+                let a = a0 + sweep * f64::from(k) / 24.0;
+                c + radius * DVec2::new(a.cos(), a.sin())
+            })
+            .collect();
+        self.stroke_px(&points, pen, false);
+    }
+
+    /// A cross of half-size `half` pixels at diagram point `at`.
+    pub fn cross(&mut self, at: DVec2, half: f64, pen: Pen) {
+        let c = self.to_px(at);
+        self.stroke_px(&[c - half, c + half], pen, false);
+        self.stroke_px(
+            &[c + DVec2::new(-half, half), c + DVec2::new(half, -half)],
+            pen,
+            false,
+        );
+    }
+
+    /// A line between two pixel positions.
+    pub fn line_px(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        self.stroke_px(&[a, b], pen, false);
+    }
+
+    /// A box between two pixel corners, filled and outlined.
+    pub fn rect_px(&mut self, min: DVec2, max: DVec2, fill: Option<(Rgb, u8)>, pen: Option<Pen>) {
+        let corners = [min, DVec2::new(max.x, min.y), max, DVec2::new(min.x, max.y)];
+        if let Some((c, a)) = fill {
+            self.fill_px(&corners, c, a);
+        }
+        if let Some(pen) = pen {
+            self.stroke_px(&corners, pen, true);
+        }
     }
 
     /// A closed polygon through `points`, filled and outlined.
@@ -425,73 +417,65 @@ impl Figure {
         );
     }
 
-    /// The caption above the frame.
-    pub fn caption(&mut self, text: &str, size: f32) {
-        let at = DVec2::new(
-            f64::from(self.frame.left()),
-            f64::from(self.frame.top()) - f64::from(size) * 0.6,
-        );
-        self.text_px(at, text, size, palette::INK, Anchor::Left, false);
+    /// The caption above the frame, a line each (see [`Figure::wrap`]).
+    pub fn caption(&mut self, lines: &[String], size: f32) {
+        let bottom = f64::from(self.frame.top()) - f64::from(size) * 0.6;
+        self.caption_at(lines, size, f64::from(self.frame.left()), bottom);
     }
 
-    /// The legend box for `entries` in each corner of the frame, in pixels
-    /// (top-left `(x, y)`, then `(w, h)`): top right, top left, bottom right, bottom left.
-    pub fn legend_boxes(&self, entries: &[(Pen, &str)], size: f32) -> [(DVec2, DVec2); 4] {
-        let line = f64::from(size) * 1.5;
-        let text_w = entries
-            .iter()
-            .map(|(_, t)| Self::text_width(t, size))
-            .fold(0.0, f32::max) as f64;
-        let wh = DVec2::new(
-            LEGEND_SAMPLE + 18.0 + text_w + 12.0,
-            line * entries.len() as f64 + 10.0,
-        );
-        let f = self.frame;
-        let (l, r, t, b) = (
-            f64::from(f.left()) + 8.0,
-            f64::from(f.right()) - wh.x - 8.0,
-            f64::from(f.top()) + 8.0,
-            f64::from(f.bottom()) - wh.y - 8.0,
-        );
-        [
-            (DVec2::new(r, t), wh),
-            (DVec2::new(l, t), wh),
-            (DVec2::new(r, b), wh),
-            (DVec2::new(l, b), wh),
-        ]
-    }
-
-    /// A legend: one line per entry, a pen sample then its text, in the box
-    /// `corner` of [`Figure::legend_boxes`].
-    pub fn legend(&mut self, entries: &[(Pen, &str)], size: f32, corner: usize) {
-        let line = f64::from(size) * 1.5;
-        let sample = LEGEND_SAMPLE;
-        let (origin, wh) = self.legend_boxes(entries, size)[corner.min(3)];
-        let (x0, y0, w, h) = (origin.x, origin.y, wh.x, wh.y);
-        let bx = [
-            DVec2::new(x0, y0),
-            DVec2::new(x0 + w, y0),
-            DVec2::new(x0 + w, y0 + h),
-            DVec2::new(x0, y0 + h),
-        ];
-        self.fill_px(&bx, palette::PAPER, 235);
-        self.stroke_px(&bx, Pen::solid([190, 190, 190], 1.0), true);
-        for (i, (pen, text)) in entries.iter().enumerate() {
-            let y = y0 + 5.0 + line * (i as f64 + 0.5);
-            self.stroke_px(
-                &[DVec2::new(x0 + 8.0, y), DVec2::new(x0 + 8.0 + sample, y)],
-                *pen,
-                false,
-            );
+    /// Caption lines starting at pixel `left`, the last line's baseline at `bottom`.
+    pub fn caption_at(&mut self, lines: &[String], size: f32, left: f64, bottom: f64) {
+        let step = f64::from(size) * 1.3;
+        for (k, line) in lines.iter().enumerate() {
+            let up = (lines.len() - 1 - k) as f64 * step;
             self.text_px(
-                DVec2::new(x0 + 8.0 + sample + 10.0, y + f64::from(size) * 0.35),
-                text,
+                DVec2::new(left, bottom - up),
+                line,
                 size,
                 palette::INK,
                 Anchor::Left,
                 false,
             );
         }
+    }
+
+    /// `text` broken at spaces into lines at most `width` pixels wide at `size`,
+    /// so a caption is never cut off.
+    pub fn wrap(text: &str, size: f32, width: f32) -> Vec<String> {
+        let mut lines: Vec<String> = Vec::new();
+        let mut line = String::new();
+        for word in text.split(' ') {
+            let candidate = if line.is_empty() {
+                word.to_owned()
+            } else {
+                format!("{line} {word}")
+            };
+            if Self::text_width(&candidate, size) > width && !line.is_empty() {
+                lines.push(std::mem::replace(&mut line, word.to_owned()));
+            } else {
+                line = candidate;
+            }
+        }
+        lines.push(line);
+        lines
+    }
+
+    /// A blank page of `width × height` pixels to paste panels onto.
+    pub fn page(width: u32, height: u32) -> Option<Self> {
+        Self::new(width, height, 0.0, 0.0)
+    }
+
+    /// Copies `panel` onto this page with its top-left corner at pixel `(x, y)`:
+    /// how a figure of several panels is put together.
+    pub fn paste(&mut self, panel: &Figure, x: i32, y: i32) {
+        self.pixmap.draw_pixmap(
+            x,
+            y,
+            panel.pixmap.as_ref(),
+            &tiny_skia::PixmapPaint::default(),
+            Transform::identity(),
+            None,
+        );
     }
 
     /// The figure as 8-bit RGB, rows top first.
@@ -524,8 +508,6 @@ impl Figure {
         out
     }
 }
-
-const LEGEND_SAMPLE: f64 = 36.0;
 
 /// The path through `points` (pixels), closed or open.
 fn polyline(points: &[DVec2], close: bool) -> Option<tiny_skia::Path> {

@@ -5,9 +5,17 @@
 pub mod numbers; // numbers written for reading
 pub mod text; // the trace in words
 pub mod explain; // the lecture's arithmetic of each step, written out
-pub mod figure; // the figure toolkit: a canvas with arrows, labels, legend, caption
+pub mod pen; // the palette and the pens every figure draws with
+pub mod figure; // the figure toolkit: a canvas with arrows, labels and a caption
+pub mod legend; // a figure's legend box
 pub mod clip; // 2D clipping to a frame
 pub mod projection; // the scene projected onto a drawing plane
+pub mod section; // what the drawing plane cuts, and what a ray only passes
 pub mod diagram_layout; // a ray diagram's rays, hits and objects, projected
+pub mod marks; // the angles, indices and badges a slide puts on a diagram
+pub mod labels; // labels placed so that none collides
+pub mod diagram_labels; // what a ray diagram labels, and drawing the labels
 pub mod diagram; // a ray diagram as a PNG figure
+pub mod camera_view; // the image plane face-on, with a pixel's place on it
+pub mod object_view; // a transformed sphere's hit in its own space, beside the world
 pub mod chart; // speed against accuracy as a chart

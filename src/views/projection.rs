@@ -43,29 +43,30 @@ impl Projection {
     /// The projection for sample `sample` of `trace`, seen from `view`.
     pub fn new(view: View, trace: &TraceDocument, sample: usize, camera: &Camera) -> Self {
         let root = &trace.samples[sample].tree.nodes[0];
-        let d = root.direction.normalize();
         let origin = root.hit.as_ref().map_or(root.origin, |h| h.point);
+        let world_up = trace
+            .camera
+            .look_at
+            .as_ref()
+            .map_or(camera.v, |l| l.up.normalize_or(camera.v));
         let (right, up) = match view {
             View::Top => (DVec3::X, DVec3::NEG_Z),
             View::Side => (DVec3::NEG_Z, DVec3::Y),
             View::Front => (DVec3::X, DVec3::Y),
-            View::Auto => match &root.hit {
-                Some(hit) => {
-                    let n = hit.shading_normal;
-                    let along = (d - d.dot(n) * n).try_normalize();
-                    // Head-on, the plane of incidence is any plane through the normal: take the camera's u.
-                    let right = along
-                        .or_else(|| (camera.u - camera.u.dot(n) * n).try_normalize())
-                        .unwrap_or(DVec3::X);
-                    (right, n)
-                }
-                None => {
-                    let up = (camera.v - camera.v.dot(d) * d)
+            View::Auto => {
+                let d = root.direction.normalize();
+                // The plane of incidence: the ray and the normal. Head-on it is any
+                // plane through the normal: take the one through the camera's u.
+                // A miss: the plane of the ray and world up.
+                let w = match &root.hit {
+                    Some(hit) => d
+                        .cross(hit.shading_normal)
                         .try_normalize()
-                        .unwrap_or(DVec3::Y);
-                    (d, up)
-                }
-            },
+                        .unwrap_or_else(|| camera.u.cross(hit.shading_normal).normalize()),
+                    None => d.cross(world_up).try_normalize().unwrap_or(camera.v),
+                };
+                upright(w, d, world_up, camera.v)
+            }
         };
         Self {
             view,
@@ -94,7 +95,9 @@ impl Projection {
     /// What the caption says the view is.
     pub fn caption(&self) -> &'static str {
         match self.view {
-            View::Auto => "view: plane of incidence at the first hit (primary ray and normal)",
+            View::Auto => {
+                "view: plane of incidence at the first hit (primary ray and normal), world up on top"
+            }
             View::Top => "view: top (looking down -y; x right, -z up)",
             View::Side => "view: side (looking along -x; -z right, y up)",
             View::Front => "view: front (looking along -z; x right, y up)",
@@ -187,6 +190,24 @@ impl Projection {
     }
 }
 
+/// The frame of a drawing plane with unit normal `w`: `up` is world up as
+/// seen in the plane (the camera's `v` when world up is nearly along `w`), and
+/// `right` makes the ray `d` run left to right, so a figure never comes out
+/// upside down or on its side.
+fn upright(w: DVec3, d: DVec3, world_up: DVec3, camera_v: DVec3) -> (DVec3, DVec3) {
+    let in_plane = |v: DVec3| (v - v.dot(w) * w).try_normalize();
+    let up = in_plane(world_up)
+        .filter(|u| u.dot(world_up).abs() > 1e-3)
+        .or_else(|| in_plane(camera_v))
+        .unwrap_or_else(|| w.any_orthonormal_vector());
+    let right = up.cross(w);
+    if right.dot(d) < 0.0 {
+        (-right, up)
+    } else {
+        (right, up)
+    }
+}
+
 /// The convex hull of `points`, counter-clockwise (Andrew's monotone chain):
 /// the exact outline of a projected box or triangle, and a mesh's silhouette
 /// with its hollows filled.
@@ -239,6 +260,11 @@ pub enum Outline {
         /// The hull's corners, counter-clockwise.
         points: Vec<DVec2>,
     },
+    /// Where the drawing plane cuts a triangle or a mesh's faces.
+    Segments {
+        /// Each cut, end to end.
+        segments: Vec<[DVec2; 2]>,
+    },
 }
 
 impl Outline {
@@ -253,6 +279,15 @@ impl Outline {
                 Some(points.iter().fold((points[0], points[0]), |(lo, hi), p| {
                     (lo.min(*p), hi.max(*p))
                 }))
+            }
+            Outline::Segments { segments } if !segments.is_empty() => {
+                let first = segments[0][0];
+                Some(
+                    segments
+                        .iter()
+                        .flatten()
+                        .fold((first, first), |(lo, hi), p| (lo.min(*p), hi.max(*p))),
+                )
             }
             _ => None,
         }
@@ -293,9 +328,16 @@ mod tests {
                 "child {child}"
             );
         }
-        // The frame is orthonormal and the normal points up the page.
+        // The frame is orthonormal, and up the page is world up (the camera's
+        // look-at's up, else its v) as seen in the plane. Tolerance: a few ULPs of unit vectors.
         assert!(proj.right.dot(proj.up).abs() < 1e-15 && (proj.right.length() - 1.0).abs() < 1e-15);
-        assert_eq!(proj.up, nodes[0].hit.as_ref().unwrap().shading_normal);
+        let v = trace
+            .camera
+            .look_at
+            .as_ref()
+            .map_or(trace.camera.v, |l| l.up.normalize());
+        let seen = (v - v.dot(w) * w).normalize();
+        assert!(proj.up.abs_diff_eq(seen, 1e-12), "{} vs {seen}", proj.up);
     }
 
     #[test]

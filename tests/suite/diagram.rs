@@ -8,9 +8,12 @@ use glam::DVec2;
 use raytree::geometry::object::Shape;
 use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
-use raytree::views::diagram::draw;
-use raytree::views::diagram_layout::{Labels, Options};
-use raytree::views::figure::{Figure, palette};
+use raytree::views::diagram::{draw, draw_with_labels};
+use raytree::views::diagram_layout::{Fit, Labels, Options, Stroke, layout};
+use raytree::views::figure::Figure;
+use raytree::views::labels::Target;
+use raytree::views::numbers::degrees;
+use raytree::views::pen::palette;
 use raytree::views::projection::{Outline, Projection, View};
 
 fn whitted_figure(
@@ -51,17 +54,31 @@ fn near(c: [u8; 3], want: [u8; 3], tol: u8) -> bool {
 }
 
 #[test]
-fn the_primary_ray_midpoint_has_the_primary_color() {
+fn the_primary_ray_is_drawn_in_its_color_where_it_is_solid() {
     let options = Options {
         labels: Labels::None,
         shadows: false,
+        fit: Fit::Tree,
         ..Options::default()
     };
-    for (x, y) in [(264, 200), (416, 209), (168, 296)] {
+    for (x, y) in [(264, 200), (416, 209), (168, 296), (300, 290)] {
         let (scene, trace, fig) = whitted_figure(x, y, &options);
-        let proj = Projection::new(View::Auto, &trace, 0, &scene.camera());
-        let root = &trace.samples[0].tree.nodes[0];
-        let mid = (proj.point(root.origin) + proj.point(root.hit.as_ref().unwrap().point)) / 2.0;
+        let lay = layout(&trace, &scene, &options).unwrap();
+        let primary = lay
+            .segments
+            .iter()
+            .find(|s| s.stroke == Stroke::Ray(raytree::tree::ray_tree::RayKind::Primary))
+            .unwrap();
+        // The middle of the longest solid piece (not passing an object).
+        let mut cuts = vec![0.0];
+        cuts.extend(primary.passing.iter().flatten());
+        cuts.push(1.0);
+        let (a, b) = cuts
+            .chunks(2)
+            .map(|w| (w[0], w[1]))
+            .max_by(|p, q| (p.1 - p.0).total_cmp(&(q.1 - q.0)))
+            .unwrap();
+        let mid = primary.from + (primary.to - primary.from) * ((a + b) / 2.0);
         // Tolerance 12: the 2.5-pixel line covers its center pixel fully; antialiasing
         // at the nearest pixel center can mix in a little paper.
         let at = fig.to_px(mid);
@@ -147,32 +164,37 @@ fn figures_are_deterministic() {
     assert!(a.png() == b.png());
 }
 
+/// Draws one golden figure.
+type Drawer = Box<dyn Fn() -> Figure>;
+
 #[test]
 fn golden_figures() {
-    let cases = [
+    let plain = |x, y, options: Options| move || whitted_figure(x, y, &options).2;
+    let small = Options {
+        width: 900,
+        height: 600,
+        ..Options::default()
+    };
+    let three_levels = Options {
+        depth: Some(3),
+        ..Options::default()
+    };
+    let camera = || {
+        let (_, trace) = traced("whitted.json", 416, 209);
+        raytree::views::camera_view::draw(&trace, 1200, 800).unwrap()
+    };
+    let cases: [(&str, Drawer); 4] = [
+        ("whitted-mirror", Box::new(plain(264, 200, small))),
+        ("whitted-glass", Box::new(plain(416, 209, three_levels))),
         (
-            "whitted-mirror",
-            264,
-            200,
-            Options {
-                width: 900,
-                height: 600,
-                ..Options::default()
-            },
+            "whitted-floor",
+            Box::new(plain(168, 296, Options::default())),
         ),
-        (
-            "whitted-glass",
-            416,
-            209,
-            Options {
-                depth: Some(3),
-                ..Options::default()
-            },
-        ),
+        ("whitted-camera", Box::new(camera)),
     ];
-    for (name, x, y, options) in cases {
+    for (name, figure) in cases {
         let path = format!("{}/tests/diagrams/{name}.png", env!("CARGO_MANIFEST_DIR"));
-        let (_, _, fig) = whitted_figure(x, y, &options);
+        let fig = figure();
         if std::env::var_os("RAYTREE_BLESS").is_some() {
             std::fs::write(&path, fig.png()).unwrap();
             continue;
@@ -196,4 +218,325 @@ fn golden_figures() {
             "{name}: a pixel differs by {worst} from tests/diagrams/{name}.png"
         );
     }
+}
+
+/// Scenes, pixels and views that between them show every kind of figure.
+fn cases() -> Vec<(&'static str, u32, u32, View)> {
+    let mut out = Vec::new();
+    for (x, y) in [
+        (416, 209),
+        (264, 200),
+        (168, 296),
+        (300, 40),
+        (440, 376),
+        (300, 290),
+    ] {
+        out.push(("whitted.json", x, y, View::Auto));
+    }
+    for view in [View::Auto, View::Top, View::Side, View::Front] {
+        out.push(("ellipsoids.json", 320, 240, view));
+    }
+    out.push(("whitted.json", 300, 290, View::Front));
+    out.push(("nested.json", 320, 240, View::Auto));
+    out.push(("spheres.json", 320, 240, View::Auto));
+    out.push(("gaspra.json", 320, 240, View::Auto));
+    out
+}
+
+fn traced(scene: &str, x: u32, y: u32) -> (raytree::scene::Scene, TraceDocument) {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("scenes")
+        .join(scene);
+    let s = raytree::scene::loader::load(&path).unwrap();
+    let t = raytree::tree::record::pixel(&s, SceneSource::new(scene, ""), x, y, None).unwrap();
+    (s, t)
+}
+
+/// Whether `p` lies inside a bounded outline by more than a hair (the test's own
+/// point-in-ellipse and point-in-convex-polygon).
+fn strictly_inside(outline: &Outline, p: DVec2) -> bool {
+    match outline {
+        Outline::Ellipse { center, axes } => {
+            let d = p - *center;
+            let (l0, l1) = (axes[0].length_squared(), axes[1].length_squared());
+            l0 > 0.0 && l1 > 0.0 && {
+                let (u, v) = (d.dot(axes[0]) / l0, d.dot(axes[1]) / l1);
+                u * u + v * v < 1.0 - 1e-6
+            }
+        }
+        Outline::Polygon { points } if points.len() >= 3 => (0..points.len()).all(|k| {
+            let (a, b) = (points[k], points[(k + 1) % points.len()]);
+            (b - a).perp_dot(p - a) > 1e-9 * (b - a).length()
+        }),
+        _ => false,
+    }
+}
+
+#[test]
+fn a_ray_over_an_object_it_does_not_enter_is_never_drawn_solid() {
+    let mut checked = 0;
+    for (name, x, y, view) in cases() {
+        let (scene, trace) = traced(name, x, y);
+        let options = Options {
+            view,
+            ..Options::default()
+        };
+        let lay = layout(&trace, &scene, &options).unwrap();
+        for seg in &lay.segments {
+            let (a, b) = seg.ends;
+            for k in 1..60 {
+                let s = f64::from(k) / 60.0;
+                let p3 = a + (b - a) * s;
+                let p2 = lay.proj.point(p3);
+                for (i, object) in scene.objects.iter().enumerate() {
+                    if !strictly_inside(&lay.objects[i].silhouette, p2) || object.contains(p3) {
+                        continue;
+                    }
+                    checked += 1;
+                    let dotted = seg
+                        .passing
+                        .iter()
+                        .any(|&[s0, s1]| s >= s0 - 1e-6 && s <= s1 + 1e-6);
+                    assert!(
+                        dotted,
+                        "{name} {x},{y} {view:?}: {:?} drawn solid over '{}' at s = {s} though it passes it",
+                        seg.stroke, object.name
+                    );
+                }
+            }
+        }
+    }
+    assert!(
+        checked > 100,
+        "only {checked} points over a silhouette checked"
+    );
+}
+
+#[test]
+fn the_auto_view_puts_world_up_on_top_and_runs_the_ray_left_to_right() {
+    for (name, x, y, view) in cases().into_iter().filter(|c| c.3 == View::Auto) {
+        let (scene, trace) = traced(name, x, y);
+        let proj = Projection::new(view, &trace, 0, &scene.camera());
+        let up = trace
+            .camera
+            .look_at
+            .as_ref()
+            .map_or(trace.camera.v, |l| l.up.normalize());
+        let at = format!("{name} {x},{y}");
+        // Tolerances: an orthonormal frame to a few ULPs.
+        assert!(proj.up.dot(up) > 0.0, "{at}: world up points down the page");
+        assert!(proj.right.dot(proj.up).abs() < 1e-12, "{at}");
+        assert!(
+            (proj.right.length() - 1.0).abs() < 1e-12 && (proj.up.length() - 1.0).abs() < 1e-12,
+            "{at}"
+        );
+        let root = &trace.samples[0].tree.nodes[0];
+        assert!(
+            proj.vector(root.direction).x > 0.0,
+            "{at}: the primary ray runs right to left"
+        );
+        // The drawing plane holds the primary ray: the plane of incidence (or, for a miss, the ray and up).
+        assert!(
+            root.direction.normalize().dot(proj.toward_viewer()).abs() < 1e-12,
+            "{at}"
+        );
+        if let Some(h) = &root.hit {
+            assert!(
+                h.shading_normal.dot(proj.toward_viewer()).abs() < 1e-12,
+                "{at}"
+            );
+        }
+    }
+}
+
+#[test]
+fn labels_never_collide_and_each_touches_what_it_names() {
+    let mut placed = 0;
+    for (name, x, y, view) in cases() {
+        let (scene, trace) = traced(name, x, y);
+        for (w, h) in [(1200, 800), (600, 400)] {
+            let options = Options {
+                width: w,
+                height: h,
+                view,
+                ..Options::default()
+            };
+            let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
+            let at = format!("{name} {x},{y} {view:?} {w}×{h}");
+            for (i, a) in drawn.labels.iter().enumerate() {
+                placed += 1;
+                let text = &a.label.text;
+                assert!(
+                    drawn.frame.holds(&a.rect),
+                    "{at}: '{text}' leaves the frame"
+                );
+                assert!(
+                    !a.rect.overlaps(&drawn.legend),
+                    "{at}: '{text}' covers the legend"
+                );
+                for b in &drawn.labels[i + 1..] {
+                    assert!(
+                        !a.rect.overlaps(&b.rect),
+                        "{at}: '{text}' and '{}' overlap",
+                        b.label.text
+                    );
+                }
+                let clearance = match a.label.target {
+                    Target::Point { clearance, .. } => clearance,
+                    Target::Outline { .. } => 0.0,
+                };
+                // Touching: within its mark's clearance and the gap the placer leaves (a few
+                // pixels) along each axis; a label at a corner position is that far in x and in y.
+                let gap = (a.rect.min - a.anchor)
+                    .max(a.anchor - a.rect.max)
+                    .max(DVec2::ZERO)
+                    .max_element();
+                let touches = gap <= clearance + 5.0;
+                let led = a
+                    .leader
+                    .is_some_and(|[from, to]| to == a.anchor && a.rect.distance(from) <= 1.5);
+                assert!(
+                    touches || led,
+                    "{at}: '{text}' floats free of what it names ({gap:.1} px away)"
+                );
+            }
+        }
+    }
+    assert!(placed > 200, "only {placed} labels placed");
+}
+
+#[test]
+fn slide_marks_carry_the_traces_numbers() {
+    // Total internal reflection: the badge quotes θ₁ and the critical angle of the trace.
+    let (scene, trace) = traced("whitted.json", 416, 209);
+    let drawn = draw_with_labels(&trace, &scene, &Options::default()).unwrap();
+    let tir = trace.samples[0]
+        .tree
+        .nodes
+        .iter()
+        .find(|n| {
+            n.refracted.as_ref().is_some_and(|b| {
+                b.outcome == raytree::tree::ray_tree::Branch::TotalInternalReflection
+            })
+        })
+        .and_then(|n| n.hit.as_ref()?.refraction)
+        .unwrap();
+    let badge = format!(
+        "total internal reflection: θ₁ = {} > critical angle {}",
+        degrees(tir.theta1),
+        degrees(tir.critical.unwrap())
+    );
+    let placed = drawn
+        .labels
+        .iter()
+        .find(|p| p.label.text == badge)
+        .expect("the badge");
+    assert!(placed.label.boxed);
+    // The README's caption of this figure quotes the same two angles.
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let quoted = format!(
+        "at {}, beyond the critical angle of {}",
+        degrees(tir.theta1),
+        degrees(tir.critical.unwrap())
+    );
+    assert!(
+        readme.replace('\n', " ").contains(&quoted),
+        "README.md should say '{quoted}'"
+    );
+    let texts: Vec<&str> = drawn.labels.iter().map(|p| p.label.text.as_str()).collect();
+    let first = trace.samples[0].tree.nodes[0].hit.as_ref().unwrap();
+    let r = first.refraction.unwrap();
+    for expected in [
+        format!("θ₁ = θᵢ = {}", degrees(r.theta1)),
+        format!("θ₂ = {}", degrees(r.theta2.unwrap())),
+        "n₁ = 1".to_owned(),
+        "n₂ = 1.5".to_owned(),
+        "P1".to_owned(),
+        "glass".to_owned(),
+    ] {
+        assert!(
+            texts.contains(&expected.as_str()),
+            "no label {expected:?} in {texts:?}"
+        );
+    }
+    // A shadow's blocker gets a cross: dark ink where the shadow ray meets it.
+    let (scene, trace) = traced("whitted.json", 168, 296);
+    let options = Options::default();
+    let lay = layout(&trace, &scene, &options).unwrap();
+    let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
+    assert!(!lay.marks.blocked.is_empty());
+    for b in &lay.marks.blocked {
+        let at = drawn.figure.to_px(b.at);
+        assert!(
+            around(&drawn.figure, at, 1)
+                .iter()
+                .any(|&c| near(c, palette::INK, 40)),
+            "no cross at the blocker {at}"
+        );
+    }
+    assert!(drawn.legend_entries.iter().any(|e| e.contains("blocker")));
+    // The legend names only what is drawn: the mirror pixel has no refracted ray.
+    let (scene, trace) = traced("whitted.json", 264, 200);
+    let drawn = draw_with_labels(&trace, &scene, &Options::default()).unwrap();
+    assert!(drawn.legend_entries.contains(&"reflected ray".to_owned()));
+    assert!(
+        !drawn.legend_entries.iter().any(|e| e.contains("refracted")),
+        "{:?}",
+        drawn.legend_entries
+    );
+}
+
+#[test]
+fn ticks_and_step_numbers_follow_the_trace() {
+    let (scene, trace) = traced("whitted.json", 416, 209);
+    let options = Options {
+        ticks: true,
+        steps: true,
+        ..Options::default()
+    };
+    let lay = layout(&trace, &scene, &options).unwrap();
+    // The primary ray's t = 1 tick lies on the image plane.
+    let root = &trace.samples[0].tree.nodes[0];
+    let one = lay.proj.point(root.origin + root.direction);
+    assert!(
+        lay.marks
+            .ticks
+            .iter()
+            .any(|t| t.label == "t = 1" && t.at.abs_diff_eq(one, 1e-9))
+    );
+    // Step numbers are those of `raytree trace --steps`: the primary ray's spawn is step 2.
+    assert!(lay.marks.steps.iter().any(|s| s.number == 2));
+    let steps = trace.steps(0);
+    for s in &lay.marks.steps {
+        assert!(s.number >= 1 && s.number <= steps.len());
+    }
+}
+
+#[test]
+fn the_camera_and_object_space_views() {
+    let (scene, trace) = traced("whitted.json", 416, 209);
+    let cam = raytree::views::camera_view::draw(&trace, 1200, 800).unwrap();
+    assert_eq!(cam.size(), (1200, 800));
+    assert!(
+        cam.png()
+            == raytree::views::camera_view::draw(&trace, 1200, 800)
+                .unwrap()
+                .png()
+    );
+    let ray = raytree::tree::record::ray(
+        &scene,
+        SceneSource::new("whitted.json", ""),
+        raytree::math::ray::Ray::new(glam::DVec3::new(0.0, 1.0, 5.0), glam::DVec3::NEG_Z),
+    )
+    .unwrap();
+    assert!(raytree::views::camera_view::draw(&ray, 1200, 800).is_err());
+    // The object view needs a transformed sphere: the Whitted scene has none.
+    let Err(err) = raytree::views::object_view::draw(&trace, &scene, &Options::default()) else {
+        panic!("the Whitted scene has no transformed sphere to draw in its own space");
+    };
+    assert!(err.contains("transformed sphere"), "{err}");
+    let (scene, trace) = traced("ellipsoids.json", 320, 240);
+    let fig = raytree::views::object_view::draw(&trace, &scene, &Options::default()).unwrap();
+    assert_eq!(fig.size(), (1200, 800));
 }

@@ -3,9 +3,10 @@
 use std::path::PathBuf;
 
 use anyhow::Result;
-use raytree::views::diagram;
-use raytree::views::diagram_layout::{Labels, Options};
+use glam::DVec2;
+use raytree::views::diagram_layout::{Fit, Labels, Options};
 use raytree::views::projection::View;
+use raytree::views::{camera_view, diagram, object_view};
 
 use crate::args::{SceneArgs, TargetArgs, parse_size};
 use crate::output;
@@ -19,14 +20,23 @@ pub struct Args {
     /// Output PNG [default: the scene's name, "diagram" and the pixel, e.g. whitted-diagram-320-240.png].
     #[arg(short, long, value_name = "FIG.png")]
     output: Option<PathBuf>,
-    /// The plane drawn: the plane of incidence at the first hit (auto), or the scene's axes.
+    /// The plane drawn: the plane of incidence at the first hit (auto), the scene's axes, or the image plane face-on (camera).
     #[arg(long, value_enum, default_value = "auto")]
-    view: View,
+    view: ViewArg,
+    /// Also draw the hit object's own frame beside the world: the untransformed primitive and the inverse-transformed ray S' + t·c' (object).
+    #[arg(long, value_enum, default_value = "world")]
+    space: Space,
+    /// What to frame: the first hits and their objects, the whole tree, or the whole scene.
+    #[arg(long, value_enum, default_value = "hits")]
+    fit: Fit,
+    /// An explicit window in drawing-plane coordinates: X0,Y0,X1,Y1 (overrides --fit).
+    #[arg(long, value_name = "X0,Y0,X1,Y1", value_parser = parse_window, allow_hyphen_values = true)]
+    window: Option<(DVec2, DVec2)>,
     /// Figure size in pixels.
     #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
     size: (u32, u32),
     /// Draw only the first D levels of rays (1: the primary ray).
-    #[arg(long, value_name = "D")]
+    #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(1..))]
     depth: Option<u32>,
     /// Leave out the shadow rays.
     #[arg(long)]
@@ -34,6 +44,50 @@ pub struct Args {
     /// Which labels to write.
     #[arg(long, value_enum, default_value = "all")]
     labels: Labels,
+    /// Tick marks along the rays at whole steps of t (the parametric line S + t·c).
+    #[arg(long)]
+    ticks: bool,
+    /// Number the rays and hits as `raytree trace --steps` numbers their steps.
+    #[arg(long)]
+    steps: bool,
+}
+
+/// The views the command line offers: the scene's projections, and the camera's.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum ViewArg {
+    /// The plane of incidence at the first hit (primary ray and normal), world up on top.
+    Auto,
+    /// Looking down the world's -y axis.
+    Top,
+    /// Looking along the world's -x axis.
+    Side,
+    /// Looking along the world's -z axis.
+    Front,
+    /// The image plane face-on: the pixel grid around the pixel, u, v, n, W, H, N.
+    Camera,
+}
+
+/// Which space to draw the hit in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+enum Space {
+    /// The world only.
+    World,
+    /// The world beside the hit object's own space (for a transformed object).
+    Object,
+}
+
+/// `X0,Y0,X1,Y1` with `X0 < X1` and `Y0 < Y1`.
+fn parse_window(s: &str) -> Result<(DVec2, DVec2), String> {
+    let v: Vec<f64> = s
+        .split(',')
+        .map(|p| p.trim().parse::<f64>().ok().filter(|x| x.is_finite()))
+        .collect::<Option<_>>()
+        .ok_or_else(|| format!("'{s}' is not four numbers X0,Y0,X1,Y1"))?;
+    match v[..] {
+        [x0, y0, x1, y1] if x0 < x1 && y0 < y1 => Ok((DVec2::new(x0, y0), DVec2::new(x1, y1))),
+        [_, _, _, _] => Err("the window needs X0 < X1 and Y0 < Y1".to_owned()),
+        _ => Err(format!("'{s}' is not four numbers X0,Y0,X1,Y1")),
+    }
 }
 
 pub fn run(args: &Args) -> Result<()> {
@@ -45,15 +99,32 @@ pub fn run(args: &Args) -> Result<()> {
     output::require_png(&path, "a diagram")?;
     let pending = output::create(&path)?;
     let trace = args.target.record(&scene, source)?;
+    let view = match args.view {
+        ViewArg::Auto => View::Auto,
+        ViewArg::Top => View::Top,
+        ViewArg::Side => View::Side,
+        ViewArg::Front => View::Front,
+        ViewArg::Camera => View::Auto,
+    };
     let options = Options {
         width: args.size.0,
         height: args.size.1,
-        view: args.view,
+        view,
         depth: args.depth,
         shadows: !args.no_shadows,
         labels: args.labels,
         sample: 0,
+        fit: args.fit,
+        window: args.window,
+        ticks: args.ticks,
+        steps: args.steps,
+        until_step: None,
     };
-    let figure = diagram::draw(&trace, &scene, &options).map_err(anyhow::Error::msg)?;
+    let figure = match (args.view, args.space) {
+        (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
+        (_, Space::Object) => object_view::draw(&trace, &scene, &options),
+        (_, Space::World) => diagram::draw(&trace, &scene, &options),
+    }
+    .map_err(anyhow::Error::msg)?;
     pending.commit(&figure.png())
 }

@@ -1,0 +1,292 @@
+//! Placing labels so that none collides: each label tries spots around what it
+//! names (a point, or the outline of an object) and takes the first that
+//! overlaps no other label, no mark that must stay visible (dots, arrowheads,
+//! the legend) and stays inside the frame, preferring spots that cross the
+//! fewest drawn lines; failing that it moves out with a leader line, and an
+//! optional label is left out. A greedy pass in priority order, in the manner
+//! of the point-feature labelling rules cartographers use (Imhof; Christensen,
+//! Marks & Shieber 1995), small enough to read.
+
+use glam::DVec2;
+
+use crate::views::figure::{Figure, Rgb};
+
+/// An axis-aligned box in pixels (y down).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PxRect {
+    /// Top-left.
+    pub min: DVec2,
+    /// Bottom-right.
+    pub max: DVec2,
+}
+
+impl PxRect {
+    /// The box around `center` of half-size `half`.
+    pub fn around(center: DVec2, half: f64) -> Self {
+        Self {
+            min: center - half,
+            max: center + half,
+        }
+    }
+
+    /// Whether the two boxes share any area.
+    pub fn overlaps(&self, o: &PxRect) -> bool {
+        self.min.x < o.max.x && o.min.x < self.max.x && self.min.y < o.max.y && o.min.y < self.max.y
+    }
+
+    /// Whether `inner` lies wholly inside.
+    pub fn holds(&self, inner: &PxRect) -> bool {
+        inner.min.cmpge(self.min).all() && inner.max.cmple(self.max).all()
+    }
+
+    /// The distance from `p` to the box (0 inside).
+    pub fn distance(&self, p: DVec2) -> f64 {
+        (self.min - p).max(p - self.max).max(DVec2::ZERO).length()
+    }
+
+    /// Whether the segment `a → b` crosses the box (Liang–Barsky).
+    pub fn crossed_by(&self, a: DVec2, b: DVec2) -> bool {
+        crate::views::clip::clip_segment(a, b, self.min, self.max).is_some()
+    }
+}
+
+/// What a label names.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Target {
+    /// A point (pixels), with the radius of the mark drawn there.
+    Point {
+        /// The point.
+        at: DVec2,
+        /// The radius of its mark: the label keeps clear of it.
+        clearance: f64,
+    },
+    /// An object: points along its outline (pixels) and a point inside it, so a
+    /// label sits just outside the outline, touching it.
+    Outline {
+        /// Points on the outline, in order of preference.
+        points: Vec<DVec2>,
+        /// A point inside.
+        inside: DVec2,
+    },
+}
+
+/// A label to place.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Label {
+    /// The text.
+    pub text: String,
+    /// Font size in pixels.
+    pub size: f32,
+    /// Its color.
+    pub color: Rgb,
+    /// What it names.
+    pub target: Target,
+    /// Drawn as a badge: boxed, on paper.
+    pub boxed: bool,
+    /// Left out when there is no room (ticks, step numbers), rather than moved out.
+    pub optional: bool,
+}
+
+/// A placed label.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Placed {
+    /// The label.
+    pub label: Label,
+    /// Its box.
+    pub rect: PxRect,
+    /// Where its text's baseline starts.
+    pub baseline: DVec2,
+    /// The point of the target it names (the nearest outline point for an object).
+    pub anchor: DVec2,
+    /// A line from the box to the anchor, when the label had to move away.
+    pub leader: Option<[DVec2; 2]>,
+}
+
+/// The box a label of `text` takes with its baseline start at `at`.
+pub fn text_box(text: &str, size: f32, at: DVec2, boxed: bool) -> PxRect {
+    let w = f64::from(Figure::text_width(text, size));
+    let s = f64::from(size);
+    let pad = if boxed { 4.0 } else { 1.0 };
+    PxRect {
+        min: DVec2::new(at.x - pad, at.y - 0.95 * s - pad),
+        max: DVec2::new(at.x + w + pad, at.y + 0.3 * s + pad),
+    }
+}
+
+/// Places `labels` in order (the first placed first) inside `frame`, clear of
+/// `blocked` boxes; `lines` are drawn segments a label would rather not cover.
+pub fn place(
+    labels: Vec<Label>,
+    blocked: &[PxRect],
+    lines: &[[DVec2; 2]],
+    frame: PxRect,
+) -> Vec<Placed> {
+    let mut placed: Vec<Placed> = Vec::new();
+    for label in labels {
+        let free = |r: &PxRect, placed: &[Placed]| {
+            frame.holds(r)
+                && !blocked.iter().any(|b| b.overlaps(r))
+                && !placed.iter().any(|p| p.rect.overlaps(r))
+        };
+        let cost = |r: &PxRect| lines.iter().filter(|[a, b]| r.crossed_by(*a, *b)).count();
+        let mut best: Option<(usize, usize, Placed)> = None;
+        for (rank, (baseline, anchor, leader)) in spots(&label).into_iter().enumerate() {
+            let rect = text_box(&label.text, label.size, baseline, label.boxed);
+            if !free(&rect, &placed) {
+                continue;
+            }
+            let c = cost(&rect) + if leader.is_some() { 3 } else { 0 };
+            if best
+                .as_ref()
+                .is_none_or(|(bc, br, _)| (c, rank) < (*bc, *br))
+            {
+                best = Some((
+                    c,
+                    rank,
+                    Placed {
+                        label: label.clone(),
+                        rect,
+                        baseline,
+                        anchor,
+                        leader: leader.map(|l| [l, anchor]),
+                    },
+                ));
+            }
+            if c == 0 && leader.is_none() {
+                break;
+            }
+        }
+        if let Some((_, _, p)) = best
+            && !(p.label.optional && p.leader.is_some())
+        {
+            placed.push(p);
+        }
+    }
+    placed
+}
+
+/// Candidate baselines for a label, nearest first: touching the target, then
+/// farther out with a leader from the box's nearest point.
+fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
+    let w = f64::from(Figure::text_width(&label.text, label.size));
+    let s = f64::from(label.size);
+    // Baseline offset that puts the text box's center at a given point.
+    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + 0.33 * s);
+    // The box center that makes the box touch a point from direction `dir`, `gap` away.
+    let touching = |p: DVec2, dir: DVec2, gap: f64| {
+        let half = DVec2::new(w / 2.0 + 2.0, 0.62 * s + 2.0);
+        // How far along `dir` the box's edge is from its center.
+        let reach = (half.x / dir.x.abs().max(1e-9)).min(half.y / dir.y.abs().max(1e-9));
+        p + dir * (reach + gap)
+    };
+    let dirs: Vec<DVec2> = (0..16)
+        .map(|k| {
+            let a = std::f64::consts::TAU * f64::from(k) / 16.0;
+            DVec2::new(a.cos(), -a.sin())
+        })
+        .collect();
+    let mut out = Vec::new();
+    match &label.target {
+        Target::Point { at, clearance } => {
+            // The cartographers' eight positions first: the point at a corner or
+            // the middle of an edge of the label, upper right preferred.
+            let g = clearance + 2.0;
+            let (top, bottom) = (at.y - g - 0.3 * s, at.y + g + 0.95 * s);
+            let (right, left, middle) = (at.x + g, at.x - g - w, at.x - w / 2.0);
+            let classic = [
+                (right, top),
+                (right, bottom),
+                (left, top),
+                (left, bottom),
+                (right, at.y + 0.33 * s),
+                (left, at.y + 0.33 * s),
+                (middle, top),
+                (middle, bottom),
+            ];
+            out.extend(classic.map(|(x, y)| (DVec2::new(x, y), *at, None)));
+            // Then all round, touching, and farther out in rings a label's
+            // height or more apart, with a leader.
+            for far in [0.0, 1.5, 3.0, 5.0] {
+                for &d in &dirs {
+                    let c = touching(*at, d, clearance + 2.0 + far * s);
+                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, *at));
+                    out.push((centered(c), *at, leader));
+                }
+            }
+        }
+        Target::Outline { points, inside } => {
+            for far in [0.0, 18.0, 40.0] {
+                for &p in points {
+                    let d = (p - *inside).normalize_or(DVec2::Y);
+                    let c = touching(p, d, 1.0 + far);
+                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, p));
+                    out.push((centered(c), p, leader));
+                }
+            }
+        }
+    }
+    out
+}
+
+/// The point of the label box centered at `c` nearest to `p`: where a leader starts.
+fn nearest_on_box(c: DVec2, w: f64, s: f64, p: DVec2) -> DVec2 {
+    let half = DVec2::new(w / 2.0 + 1.0, 0.62 * s + 1.0);
+    p.clamp(c - half, c + half)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn point(text: &str, at: DVec2) -> Label {
+        Label {
+            text: text.into(),
+            size: 14.0,
+            color: [0, 0, 0],
+            target: Target::Point { at, clearance: 4.0 },
+            boxed: false,
+            optional: false,
+        }
+    }
+
+    #[test]
+    fn crowded_labels_never_overlap_and_stay_in_the_frame() {
+        let frame = PxRect {
+            min: DVec2::ZERO,
+            max: DVec2::new(300.0, 200.0),
+        };
+        // Ten labels on nearly the same point, one near the frame's corner.
+        let mut labels: Vec<Label> = (0..10)
+            .map(|k| point(&format!("P{k}"), DVec2::new(150.0 + f64::from(k), 100.0)))
+            .collect();
+        labels.push(point("corner", DVec2::new(2.0, 2.0)));
+        let legend = PxRect {
+            min: DVec2::new(200.0, 0.0),
+            max: DVec2::new(300.0, 60.0),
+        };
+        let placed = place(labels, &[legend], &[], frame);
+        assert_eq!(placed.len(), 11, "each has room somewhere");
+        for (i, a) in placed.iter().enumerate() {
+            assert!(
+                frame.holds(&a.rect) && !a.rect.overlaps(&legend),
+                "{}",
+                a.label.text
+            );
+            for b in &placed[i + 1..] {
+                assert!(
+                    !a.rect.overlaps(&b.rect),
+                    "{} and {}",
+                    a.label.text,
+                    b.label.text
+                );
+            }
+            // Touching its point, or joined to it by a leader.
+            let touches = a.rect.distance(a.anchor) <= 4.0 + 2.0 + 2.0;
+            assert!(
+                touches || a.leader.is_some(),
+                "{} floats free",
+                a.label.text
+            );
+        }
+    }
+}

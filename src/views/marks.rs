@@ -1,0 +1,383 @@
+//! The marks a lecture slide puts on a ray diagram, computed from the recorded
+//! tree: the angles of reflection and refraction with their values, the
+//! indices on either side of a refracting boundary, a badge where total
+//! internal reflection happened, a cross where a shadow ray was blocked, a
+//! note where the light was behind the surface, ticks of `t` along the rays,
+//! and the step numbers of `raytree trace --steps`. Numbers come from the tree
+//! (the angles from its `n·c` and Snell's record), never from the figure.
+
+use glam::{DVec2, DVec3};
+
+use crate::scene::Scene;
+use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
+use crate::tree::steps::{Step, StepKind};
+use crate::views::diagram_layout::{Labels, Options};
+use crate::views::numbers::{degrees, num};
+use crate::views::projection::Projection;
+
+/// Everything marked, in diagram coordinates.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Marks {
+    /// Where shadow rays were blocked.
+    pub blocked: Vec<Blocked>,
+    /// Hits whose light was behind the surface: no shadow ray was cast.
+    pub behind: Vec<Behind>,
+    /// Angle arcs at reflections and refractions drawn in the plane.
+    pub angles: Vec<Angle>,
+    /// `n₁ | n₂` on either side of a refracting boundary.
+    pub boundaries: Vec<Boundary>,
+    /// Total internal reflections.
+    pub tir: Vec<Tir>,
+    /// Ticks of `t` along rays.
+    pub ticks: Vec<Tick>,
+    /// Step numbers.
+    pub steps: Vec<StepNumber>,
+}
+
+/// A shadow ray's blocker.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Blocked {
+    /// Where the shadow ray met it.
+    pub at: DVec2,
+    /// The hit's node.
+    pub node: usize,
+    /// That node's depth.
+    pub depth: u32,
+    /// The blocking object.
+    pub object: usize,
+}
+
+/// A light behind the surface at a hit.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Behind {
+    /// The hit.
+    pub at: DVec2,
+    /// Toward the light, in the drawing (unit).
+    pub toward: DVec2,
+}
+
+/// An angle between two directions at a point.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Angle {
+    /// The vertex.
+    pub at: DVec2,
+    /// The arc runs from this unit direction …
+    pub from: DVec2,
+    /// … to this one, the short way.
+    pub to: DVec2,
+    /// What it is and its value: `θ₁ = 24.31°`.
+    pub label: String,
+}
+
+/// The indices on either side of a refracting boundary.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Boundary {
+    /// The hit.
+    pub at: DVec2,
+    /// The normal facing the incoming ray (n₁'s side), in the drawing (unit).
+    pub normal: DVec2,
+    /// The incoming side's label.
+    pub n1: String,
+    /// The far side's label.
+    pub n2: String,
+}
+
+/// Where total internal reflection happened.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tir {
+    /// The hit.
+    pub at: DVec2,
+    /// The badge's text.
+    pub text: String,
+}
+
+/// A tick across a ray at a whole step of `t`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tick {
+    /// Where.
+    pub at: DVec2,
+    /// Across the ray (unit).
+    pub across: DVec2,
+    /// `t = 2`.
+    pub label: String,
+}
+
+/// A step number of `raytree trace --steps`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct StepNumber {
+    /// Where.
+    pub at: DVec2,
+    /// The number.
+    pub number: usize,
+}
+
+/// The objects that blocked a shadow ray.
+pub fn blockers(tree: &RayTree) -> Vec<usize> {
+    tree.nodes
+        .iter()
+        .flat_map(|n| &n.shadow_rays)
+        .filter_map(|s| match s.outcome {
+            ShadowOutcomeRecord::Blocked { object, .. } => Some(object),
+            _ => None,
+        })
+        .collect()
+}
+
+/// The marks of `tree` as drawn through `proj`; `shown` limits them to the hits
+/// a step-through has reached (`None`: all). Angles, indices and badges are
+/// marked only where the rays lie in the drawing plane, so the drawn angle is
+/// the true one.
+pub fn marks(
+    tree: &RayTree,
+    steps: &[Step],
+    proj: &Projection,
+    options: &Options,
+    shown: &Option<Vec<usize>>,
+) -> Marks {
+    let mut m = Marks::default();
+    let depth_ok = |d: u32| options.depth.is_none_or(|max| d <= max);
+    let w = proj.toward_viewer();
+    let in_plane = |v: DVec3| v.normalize_or_zero().dot(w).abs() < 1e-6;
+    for (i, node) in tree.nodes.iter().enumerate() {
+        let Some(h) = &node.hit else { continue };
+        if !depth_ok(node.depth) || shown.as_ref().is_some_and(|s| !s.contains(&i)) {
+            continue;
+        }
+        let at = proj.point(h.point);
+        shadow_marks(node, i, proj, &mut m);
+        let flat = in_plane(h.incoming) && in_plane(h.shading_normal);
+        let child_dir = |branch: &Option<crate::tree::ray_tree::BranchRecord>| {
+            branch
+                .as_ref()
+                .and_then(|b| b.node)
+                .filter(|&c| depth_ok(tree.nodes[c].depth))
+                .map(|c| tree.nodes[c].direction)
+        };
+        let unit = |v: DVec3| proj.vector(v).normalize_or_zero();
+        let (back, n) = (unit(-h.incoming), unit(h.shading_normal));
+        let labelled = options.labels == Labels::All && node.depth <= 2 && flat;
+        let reflected = child_dir(&node.reflected).filter(|&v| labelled && in_plane(v));
+        let refracted = child_dir(&node.refracted)
+            .filter(|&t| labelled && in_plane(t))
+            .zip(h.refraction.as_ref().and_then(|r| r.theta2));
+        let theta = (-h.n_dot_c).clamp(-1.0, 1.0).acos().to_degrees();
+        if reflected.is_some() || refracted.is_some() {
+            // One arc for the angle of incidence, named for both laws when both apply.
+            let name = match (reflected.is_some(), refracted.is_some()) {
+                (true, true) => "θ₁ = θᵢ",
+                (false, true) => "θ₁",
+                _ => "θᵢ",
+            };
+            m.angles.push(Angle {
+                at,
+                from: back,
+                to: n,
+                label: format!("{name} = {}", degrees(theta)),
+            });
+        }
+        if let Some(v) = reflected {
+            m.angles.push(Angle {
+                at,
+                from: n,
+                to: unit(v),
+                label: format!("θᵣ = {}", degrees(theta)),
+            });
+        }
+        if let Some((t, theta2)) = refracted {
+            m.angles.push(Angle {
+                at,
+                from: -n,
+                to: unit(t),
+                label: format!("θ₂ = {}", degrees(theta2)),
+            });
+        }
+        let Some(r) = &h.refraction else { continue };
+        let tir = node
+            .refracted
+            .as_ref()
+            .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
+        if tir && flat {
+            let text = if m.tir.is_empty() {
+                format!(
+                    "total internal reflection: θ₁ = {} > critical angle {}",
+                    degrees(r.theta1),
+                    r.critical.map_or(String::new(), degrees)
+                )
+            } else {
+                "total internal reflection".to_owned()
+            };
+            m.tir.push(Tir { at, text });
+        }
+        if labelled {
+            m.boundaries.push(Boundary {
+                at,
+                normal: n,
+                n1: format!("n₁ = {}", num(h.n1)),
+                n2: format!("n₂ = {}", num(h.n2)),
+            });
+        }
+    }
+    if options.ticks {
+        m.ticks = ticks(tree, proj, options, shown);
+    }
+    if options.steps {
+        m.steps = step_numbers(tree, steps, proj, options, shown);
+    }
+    m
+}
+
+fn shadow_marks(node: &RayNode, i: usize, proj: &Projection, m: &mut Marks) {
+    let Some(h) = &node.hit else { return };
+    for s in &node.shadow_rays {
+        match s.outcome {
+            ShadowOutcomeRecord::Blocked { object, t, .. } => m.blocked.push(Blocked {
+                at: proj.point(s.origin + t * s.direction),
+                node: i,
+                depth: node.depth,
+                object,
+            }),
+            ShadowOutcomeRecord::FacesAway => m.behind.push(Behind {
+                at: proj.point(h.point),
+                toward: proj.vector(s.direction).normalize_or_zero(),
+            }),
+            ShadowOutcomeRecord::Reaches { .. } => {}
+        }
+    }
+}
+
+/// Ticks at whole steps of `t` along each ray: a step of 1, 2 or 5 times a
+/// power of ten that gives about five ticks to the ray's end.
+fn ticks(
+    tree: &RayTree,
+    proj: &Projection,
+    options: &Options,
+    shown: &Option<Vec<usize>>,
+) -> Vec<Tick> {
+    let mut out = Vec::new();
+    for (i, node) in tree.nodes.iter().enumerate() {
+        let Some(h) = &node.hit else { continue };
+        if options.depth.is_some_and(|d| node.depth > d)
+            || shown.as_ref().is_some_and(|s| !s.contains(&i))
+        {
+            continue;
+        }
+        let step = nice_step(h.t / 5.0);
+        let across = proj.vector(node.direction).normalize_or_zero().perp();
+        let tick = |t: f64| Tick {
+            at: proj.point(node.origin + t * node.direction),
+            across,
+            label: format!("t = {}", num(t)),
+        };
+        // A primary ray's t counts in lengths of c: t = 1 is the image plane,
+        // the one tick a learner needs on every primary ray.
+        let primary = node.kind == RayKind::Primary && h.t > 1.0;
+        if primary {
+            out.push(tick(1.0));
+        }
+        let mut k = 1.0;
+        while k * step < h.t * (1.0 - 1e-9) {
+            let t = k * step;
+            // Ticks crowding the image plane's would overlap its label.
+            if !(primary && (t - 1.0).abs() < step / 2.0) {
+                out.push(tick(t));
+            }
+            k += 1.0;
+        }
+    }
+    out
+}
+
+fn nice_step(raw: f64) -> f64 {
+    let power = 10f64.powf(raw.log10().floor());
+    [1.0, 2.0, 5.0, 10.0]
+        .into_iter()
+        .map(|m| m * power)
+        .find(|&s| s >= raw)
+        .unwrap_or(10.0 * power)
+}
+
+/// The spawn step's number at a third of each ray, and the hit step's at the hit.
+fn step_numbers(
+    tree: &RayTree,
+    steps: &[Step],
+    proj: &Projection,
+    options: &Options,
+    shown: &Option<Vec<usize>>,
+) -> Vec<StepNumber> {
+    let mut out = Vec::new();
+    for (k, step) in steps.iter().enumerate() {
+        let node = &tree.nodes[step.node];
+        if options.depth.is_some_and(|d| node.depth > d)
+            || shown.as_ref().is_some_and(|s| !s.contains(&step.node))
+        {
+            continue;
+        }
+        let at = match (step.kind, &node.hit) {
+            (StepKind::Spawn, Some(h)) => proj.point(node.origin + (h.point - node.origin) / 3.0),
+            (StepKind::Hit, Some(h)) => proj.point(h.point),
+            _ => continue,
+        };
+        out.push(StepNumber { at, number: k + 1 });
+    }
+    out
+}
+
+/// How a ray that hit nothing passed an object: the gap, and the two points
+/// of closest approach (on the ray, and on the object's surface).
+#[derive(Clone, Debug, PartialEq)]
+pub struct NearMiss {
+    /// The object.
+    pub object: usize,
+    /// The gap between the ray and the object's surface.
+    pub gap: f64,
+    /// The ray's point nearest the object.
+    pub on_ray: DVec3,
+    /// The object's surface point nearest the ray.
+    pub on_object: DVec3,
+}
+
+/// For a ray that hit nothing, the two bounded objects it passed nearest: exact
+/// for untransformed spheres, from the bounding box's center and half-diagonal
+/// otherwise.
+pub fn near_misses(root: &RayNode, scene: &Scene) -> Vec<NearMiss> {
+    if root.hit.is_some() {
+        return Vec::new();
+    }
+    let d = root.direction.normalize();
+    let mut near: Vec<NearMiss> = scene
+        .objects
+        .iter()
+        .enumerate()
+        .filter_map(|(i, o)| {
+            let b = o.bounds()?;
+            let (center, radius) = match (&o.shape, &o.transform) {
+                (crate::geometry::object::Shape::Sphere(s), None) => (s.center, s.radius),
+                _ => (b.center(), (b.max - b.min).length() / 2.0),
+            };
+            let on_ray = root.origin + (center - root.origin).dot(d).max(0.0) * d;
+            let out = (on_ray - center).normalize_or(DVec3::Y);
+            Some(NearMiss {
+                object: i,
+                gap: ((on_ray - center).length() - radius).max(0.0),
+                on_ray,
+                on_object: center + radius * out,
+            })
+        })
+        .collect();
+    near.sort_by(|a, b| a.gap.total_cmp(&b.gap));
+    near.truncate(2);
+    near
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tick_steps_are_round() {
+        assert_eq!(nice_step(0.9), 1.0);
+        assert_eq!(nice_step(1.3), 2.0);
+        assert_eq!(nice_step(0.03), 0.05);
+        assert_eq!(nice_step(4.0), 5.0);
+    }
+}
