@@ -10,6 +10,7 @@ mod cli;
 mod common;
 mod diagram;
 mod golden_traces;
+mod guide;
 mod inspector;
 mod inspector_tmux;
 mod povray;

@@ -1,0 +1,434 @@
+//! A guided step-through: a teacher's script of stops along one pixel's steps,
+//! each with a sentence that quotes the trace's own numbers by name
+//! (`{theta1}`, `{critical}`), so the narrative can never disagree with the
+//! code. A stop may quote only what the algorithm knows by its step. The inspector plays it (`raytree inspect --script FILE`, `raytree
+//! lesson N`) and the book prints it.
+//!
+//! A script is a small TOML file:
+//!
+//! ```toml
+//! title = "Total internal reflection"
+//! scene = "../../scenes/whitted.json"   # relative to the script
+//! pixel = [416, 209]
+//!
+//! [[stop]]
+//! step = 1                              # as `raytree trace --steps` numbers them
+//! say = "Pixel (x, y) is column c = {c}, row r = {r}."
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use serde::Deserialize;
+
+use crate::tree::document::TraceDocument;
+use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
+use crate::tree::steps::StepKind;
+use crate::views::numbers::{color, degrees, num, vec3};
+
+/// Scripts are a page of text; anything larger is not one.
+const MAX_BYTES: u64 = 1 << 20;
+
+/// A guided step-through, read and checked.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Script {
+    /// Where it was read from (for messages).
+    pub path: PathBuf,
+    /// What it shows, for the inspector's title.
+    pub title: Option<String>,
+    /// The scene, resolved relative to the script's folder.
+    pub scene: PathBuf,
+    /// The pixel it follows.
+    pub pixel: [u32; 2],
+    /// The sample it follows (0-based; written 1-based).
+    pub sample: usize,
+    /// Its stops, in step order.
+    pub stops: Vec<Stop>,
+}
+
+/// One stop: a step and what to say there.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stop {
+    /// The step's number as `raytree trace --steps` prints it (1-based).
+    pub step: usize,
+    /// The sentence, with `{name}` placeholders.
+    pub say: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ScriptFile {
+    title: Option<String>,
+    scene: String,
+    pixel: [u32; 2],
+    sample: Option<usize>,
+    stop: Vec<StopFile>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct StopFile {
+    step: usize,
+    say: String,
+}
+
+/// Reads a script. Errors are one line naming the file (and the line, for a
+/// syntax error or a bad field).
+pub fn load(path: &Path) -> Result<Script, String> {
+    let at = path.display();
+    let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
+    if !meta.is_file() {
+        return Err(format!("{at}: not a regular file"));
+    }
+    if meta.len() > MAX_BYTES {
+        return Err(format!(
+            "{at}: {} bytes; a script is at most {MAX_BYTES}",
+            meta.len()
+        ));
+    }
+    let text = std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))?;
+    parse(path, &text)
+}
+
+/// Parses a script's text (`path` names it in messages and anchors the scene).
+pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
+    let at = path.display();
+    let file: ScriptFile = toml::from_str(text).map_err(|e| {
+        let line = e.span().map(|s| {
+            text.as_bytes()[..s.start.min(text.len())]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count()
+                + 1
+        });
+        let message = e.message().replace('\n', " ");
+        match line {
+            Some(l) => format!("{at}: line {l}: {}", message.trim()),
+            None => format!("{at}: {}", message.trim()),
+        }
+    })?;
+    if file.stop.is_empty() {
+        return Err(format!(
+            "{at}: no [[stop]]: a step-through needs at least one"
+        ));
+    }
+    for (i, pair) in file.stop.windows(2).enumerate() {
+        if pair[1].step <= pair[0].step {
+            return Err(format!(
+                "{at}: stop {}: step {} does not come after step {}; stops go forward",
+                i + 2,
+                pair[1].step,
+                pair[0].step
+            ));
+        }
+    }
+    if let Some(s) = file.stop.iter().position(|s| s.step == 0) {
+        return Err(format!("{at}: stop {}: steps count from 1", s + 1));
+    }
+    if file.sample == Some(0) {
+        return Err(format!("{at}: sample: samples count from 1"));
+    }
+    for (i, s) in file.stop.iter().enumerate() {
+        if let Some(c) = s.say.chars().find(|c| c.is_control() && *c != '\n') {
+            return Err(format!(
+                "{at}: stop {}: control character {c:?} in say",
+                i + 1
+            ));
+        }
+    }
+    let folder = path.parent().unwrap_or(Path::new(""));
+    Ok(Script {
+        path: path.to_owned(),
+        title: file.title,
+        scene: folder.join(&file.scene),
+        pixel: file.pixel,
+        sample: file.sample.map_or(0, |s| s - 1),
+        stops: file
+            .stop
+            .into_iter()
+            .map(|s| Stop {
+                step: s.step,
+                say: s.say,
+            })
+            .collect(),
+    })
+}
+
+/// One stop made concrete against a trace: the step's index into
+/// [`TraceDocument::steps`] and the sentence with its numbers filled in.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Narration {
+    /// 0-based index of the step.
+    pub step: usize,
+    /// The sentence.
+    pub text: String,
+}
+
+/// Fills every stop's placeholders from `trace` (traced at the script's pixel).
+/// A stop past the last step, or a placeholder the step has no number for, is
+/// an error naming the stop and what the step does have.
+pub fn narrate(script: &Script, trace: &TraceDocument) -> Result<Vec<Narration>, String> {
+    let at = script.path.display();
+    if script.sample >= trace.samples.len() {
+        return Err(format!(
+            "{at}: sample {} but the pixel has {} sample(s)",
+            script.sample + 1,
+            trace.samples.len()
+        ));
+    }
+    let count = trace.steps(script.sample).len();
+    script
+        .stops
+        .iter()
+        .enumerate()
+        .map(|(i, stop)| {
+            if stop.step > count {
+                return Err(format!(
+                    "{at}: stop {}: step {} is past the pixel's {count} steps",
+                    i + 1,
+                    stop.step
+                ));
+            }
+            let names = values(trace, script.sample, stop.step - 1);
+            let text = fill(&stop.say, &names).map_err(|name| {
+                let have: Vec<&str> = names.keys().map(String::as_str).collect();
+                format!(
+                    "{at}: stop {} (step {}): no number {{{name}}} here; this step has {}",
+                    i + 1,
+                    stop.step,
+                    have.join(", ")
+                )
+            })?;
+            Ok(Narration {
+                step: stop.step - 1,
+                text,
+            })
+        })
+        .collect()
+}
+
+/// Replaces `{name}` with its value (`{{` and `}}` stand for braces); the
+/// error is the first unknown name.
+fn fill(say: &str, names: &BTreeMap<String, String>) -> Result<String, String> {
+    let mut out = String::new();
+    let mut rest = say;
+    while let Some(i) = rest.find(['{', '}']) {
+        out.push_str(&rest[..i]);
+        let tail = &rest[i..];
+        if tail.starts_with("{{") || tail.starts_with("}}") {
+            out.push_str(&tail[..1]);
+            rest = &tail[2..];
+            continue;
+        }
+        if tail.starts_with('}') {
+            return Err("}".to_owned());
+        }
+        let end = tail.find('}').ok_or_else(|| tail.to_owned())?;
+        let name = &tail[1..end];
+        out.push_str(names.get(name).ok_or_else(|| name.to_owned())?);
+        rest = &tail[end + 1..];
+    }
+    out.push_str(rest);
+    Ok(out)
+}
+
+/// The numbers a stop may quote: those of the step's ray (its kind, depth, hit,
+/// angles, local color, sum), the pixel's camera stage, and the step's own
+/// (the object tested, the shadow ray's light).
+pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<String, String> {
+    let mut v = BTreeMap::new();
+    let mut put = |k: &str, s: String| {
+        v.insert(k.to_owned(), s);
+    };
+    let steps = trace.steps(sample);
+    let Some(s) = steps.get(step) else {
+        return BTreeMap::new();
+    };
+    let smp = &trace.samples[sample];
+    put("step", (step + 1).to_string());
+    put("steps", steps.len().to_string());
+    if let Some(cam) = &smp.camera {
+        put("x", num(cam.x));
+        put("y", num(cam.y));
+        put("c", num(cam.c));
+        put("r", num(cam.r));
+        put("u_c", num(cam.u_c));
+        put("v_r", num(cam.v_r));
+        put("P", vec3(cam.point));
+    }
+    if step + 1 == steps.len() {
+        put("color", color(smp.color));
+    }
+    put("N", num(trace.camera.distance));
+    put("W", num(trace.camera.half_width));
+    put("H", num(trace.camera.half_height));
+    let node = &smp.tree.nodes[s.node];
+    let kind = match node.kind {
+        RayKind::Primary => "primary",
+        RayKind::Reflected => "reflected",
+        RayKind::Refracted => "refracted",
+        RayKind::Shadow => "shadow",
+    };
+    put("ray", kind.to_owned());
+    put("depth", node.depth.to_string());
+    put("origin", vec3(node.origin));
+    put("direction", vec3(node.direction));
+    put("weight", num(node.weight));
+    // Only what the algorithm knows at this step: a stop must not give the
+    // answer away before the step that computes it.
+    let hit_known = !matches!(
+        s.kind,
+        StepKind::Camera | StepKind::Spawn | StepKind::Test(_) | StepKind::Miss
+    );
+    let local_known = matches!(
+        s.kind,
+        StepKind::Local
+            | StepKind::Reflect
+            | StepKind::Refract
+            | StepKind::Combine
+            | StepKind::Return
+    );
+    let angles_known = matches!(
+        s.kind,
+        StepKind::Refract | StepKind::Combine | StepKind::Return
+    );
+    if matches!(s.kind, StepKind::Combine | StepKind::Return) {
+        put("ray_color", color(node.sum.color));
+        put("k_rfl", num(node.sum.k_rfl));
+        put("k_rfa", num(node.sum.k_rfa));
+    }
+    if let Some(h) = node.hit.as_ref().filter(|_| hit_known) {
+        put("object", h.name.clone());
+        put("material", h.material.clone());
+        put("t", num(h.t));
+        put("point", vec3(h.point));
+        put("normal", vec3(h.shading_normal));
+        put("n1", num(h.n1));
+        put("n2", num(h.n2));
+        put("n_dot_c", num(h.n_dot_c));
+        put("mirror", vec3(h.mirror));
+        if let Some(r) = h.refraction.as_ref().filter(|_| angles_known) {
+            put("theta1", degrees(r.theta1));
+            put("sin_theta1", num(r.sin_theta1));
+            put("sin_theta2", num(r.sin_theta2));
+            put("eta", num(r.eta));
+            if let Some(t2) = r.theta2 {
+                put("theta2", degrees(t2));
+            }
+            if let Some(c) = r.critical {
+                put("critical", degrees(c));
+            }
+        }
+    }
+    if let Some(l) = node.local.as_ref().filter(|_| local_known) {
+        put("local", color(l.total));
+        put("ambient", color(l.ambient));
+        put("k_a", num(l.k_a));
+        put("k_d", num(l.k_d));
+        put("k_s", num(l.k_s));
+        put("shininess", num(l.shininess));
+        for light in &l.lights {
+            if let Some(p) = &light.phong {
+                put(&format!("n_dot_l.{}", light.name), num(p.n_dot_l));
+                put(&format!("r_dot_v.{}", light.name), num(p.r_dot_v));
+            }
+            put(&format!("diffuse.{}", light.name), color(light.diffuse));
+            put(&format!("specular.{}", light.name), color(light.specular));
+        }
+    }
+    match s.kind {
+        StepKind::Test(k) => {
+            let test = &node.tests[k];
+            put("tested", test.name.clone());
+            if let Some(crate::tree::arithmetic::Arithmetic::Quadratic {
+                a,
+                b,
+                c,
+                discriminant,
+                ..
+            }) = &test.arithmetic
+            {
+                put("A", num(*a));
+                put("B", num(*b));
+                put("C", num(*c));
+                put("discriminant", num(*discriminant));
+            }
+            let roots: Vec<String> = test.roots.iter().map(|r| num(r.t)).collect();
+            put(
+                "roots",
+                if roots.is_empty() {
+                    "none".to_owned()
+                } else {
+                    roots.join(", ")
+                },
+            );
+        }
+        StepKind::Shadow(k) => {
+            let shadow = &node.shadow_rays[k];
+            put("light", shadow.name.clone());
+            let outcome = match &shadow.outcome {
+                ShadowOutcomeRecord::Reaches { .. } => "reaches the light".to_owned(),
+                ShadowOutcomeRecord::Blocked { name, t, .. } => {
+                    put("blocker_t", num(*t));
+                    format!("blocked by {name}")
+                }
+                ShadowOutcomeRecord::FacesAway => {
+                    "not cast: the light is behind the surface".to_owned()
+                }
+            };
+            put("outcome", outcome);
+        }
+        _ => {}
+    }
+    v
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn script(text: &str) -> Result<Script, String> {
+        parse(Path::new("lessons/x/steps.toml"), text)
+    }
+
+    #[test]
+    fn the_scene_is_found_beside_the_script() {
+        let s = script("scene = \"../../scenes/whitted.json\"\npixel = [1, 2]\n[[stop]]\nstep = 1\nsay = \"hi\"\n")
+            .unwrap();
+        assert_eq!(s.scene, Path::new("lessons/x/../../scenes/whitted.json"));
+        assert_eq!((s.pixel, s.sample, s.stops.len()), ([1, 2], 0, 1));
+    }
+
+    #[test]
+    fn bad_scripts_are_one_line_naming_the_problem() {
+        let cases = [
+            ("scene = 1\n", "lessons/x/steps.toml: line 1:"),
+            ("scene = \"a\"\npixel = [1, 2]\nstop = []\n", "no [[stop]]"),
+            (
+                "scene = \"a\"\npixel = [1, 2]\n[[stop]]\nstep = 2\nsay = \"\"\n[[stop]]\nstep = 2\nsay = \"\"\n",
+                "stop 2: step 2 does not come after step 2",
+            ),
+            (
+                "scene = \"a\"\npixel = [1, 2]\nzoom = 3\n[[stop]]\nstep = 1\nsay = \"\"\n",
+                "line 3: unknown field `zoom`",
+            ),
+            (
+                "scene = \"a\"\npixel = [1, 2]\n[[stop]]\nstep = 0\nsay = \"\"\n",
+                "stop 1: steps count from 1",
+            ),
+        ];
+        for (text, want) in cases {
+            let e = script(text).unwrap_err();
+            assert!(e.contains(want), "{e:?} should contain {want:?}");
+            assert!(!e.contains('\n'), "{e:?} is more than one line");
+        }
+    }
+
+    #[test]
+    fn placeholders_fill_and_unknown_ones_are_named() {
+        let names: BTreeMap<String, String> = [("t".to_owned(), "2.5".to_owned())].into();
+        assert_eq!(fill("t = {t}, {{t}}", &names).unwrap(), "t = 2.5, {t}");
+        assert_eq!(fill("{theta}", &names).unwrap_err(), "theta");
+        assert_eq!(fill("open {t", &names).unwrap_err(), "{t");
+    }
+}
