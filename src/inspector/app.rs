@@ -5,17 +5,21 @@ use std::collections::BTreeSet;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use ratatui::crossterm::event::{
-    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
-};
 use ratatui::layout::Rect;
 
+use glam::DVec3;
+use serde_json::Value;
+
+use super::features::FeatureMap;
+use super::find::{Overlay, Seek};
 use super::preview::{Picture, Window, Worker};
+use super::reveal::Revealed;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::recorder::Branch;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
+use crate::views::guide::{Narration, Script};
 
 /// Which pane the arrow keys drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -42,6 +46,49 @@ impl Item {
             Item::Ray(n) | Item::Shadow(n, _) => n,
         }
     }
+}
+
+/// A line being typed in the step line.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Prompt {
+    /// `g`: a pixel to go to.
+    GoTo(String),
+    /// `m`: an edit of the selected hit's material or a method (`ior=1.0`).
+    Edit(String),
+    /// `w`: a new file to write the edited scene to.
+    Write(String),
+}
+
+/// Which pane a small terminal shows on the right.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Pane {
+    /// The selected ray's numbers.
+    #[default]
+    Details,
+    /// The diagram.
+    Diagram,
+}
+
+/// A guided step-through being followed.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Guided {
+    /// The script.
+    pub script: Script,
+    /// Its stops, filled with the trace's numbers.
+    pub told: Vec<Narration>,
+    /// The stop shown.
+    pub at: usize,
+}
+
+/// The pixel's color and tree before the first what-if edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Before {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// Its color.
+    pub color: DVec3,
+    /// Rays in its first sample's tree.
+    pub rays: usize,
 }
 
 /// Where the panes were last drawn, for mouse clicks and the picture's size.
@@ -85,8 +132,8 @@ pub struct App {
     pub help: bool,
     /// The user asked to quit.
     pub quit: bool,
-    /// Text typed after `g` (go to pixel), while the prompt is open.
-    pub goto: Option<String>,
+    /// A line being typed (go to, edit, write), while open.
+    pub prompt: Option<Prompt>,
     /// A one-line message for the status bar.
     pub message: String,
     /// Where the panes are.
@@ -97,19 +144,48 @@ pub struct App {
     pub trace_time: Duration,
     /// Draw in 24-bit color (else the 256-color palette).
     pub truecolor: bool,
-    worker: Option<Worker>,
-    requested: Option<Window>,
+    /// Why the terminal is drawn in 256 colors, when it is.
+    pub color_note: Option<String>,
+    /// The saved trace's file, when the inspector opened one (no timing then).
+    pub loaded_from: Option<String>,
+    /// How far the help is scrolled.
+    pub help_scroll: u16,
+    /// The image's features (computed on the first find or overlay).
+    pub features: Option<FeatureMap>,
+    /// What `f` finds.
+    pub seek: Seek,
+    /// What the image pane shows.
+    pub overlay: Overlay,
+    /// The right-hand pane on small terminals.
+    pub pane: Pane,
+    /// A guided step-through, when following one.
+    pub guide: Option<Guided>,
+    /// The scene file's JSON, for what-if edits (read on the first edit).
+    pub scene_json: Option<Value>,
+    /// The scene as loaded, while edits are in effect.
+    pub loaded: Option<Arc<Scene>>,
+    /// The what-if edits in effect, as typed.
+    pub edits: Vec<String>,
+    /// The pixel before the first edit.
+    pub before: Option<Before>,
+    pub(super) worker: Option<Worker>,
+    pub(super) requested: Option<Window>,
 }
 
 impl App {
-    /// An inspector on `scene`, the cursor at `start` (or the center). `live`
-    /// starts the preview worker; tests leave it off and call [`App::render_picture_now`].
+    /// An inspector on `scene`, the cursor at `start` (or at a pixel worth
+    /// looking at: the deepest tree, nearest the center). `live` starts the
+    /// preview worker; tests leave it off and call [`App::render_picture_now`].
     pub fn new(scene: Scene, source: SceneSource, start: Option<(u32, u32)>, live: bool) -> Self {
         let s = scene.settings;
+        let start = start.unwrap_or_else(|| {
+            // A coarse scan (every 8th pixel) is quick even for large images.
+            super::features::scan(&scene, 8).most_interesting(s.width, s.height)
+        });
         let scene = Arc::new(scene);
         let worker = live.then(|| Worker::start(Arc::clone(&scene)));
         let mut app = Self::empty(Some(scene), source, worker);
-        app.select(start.unwrap_or((s.width / 2, s.height / 2)));
+        app.select(start);
         app
     }
 
@@ -150,12 +226,24 @@ impl App {
             focus: Focus::Image,
             help: false,
             quit: false,
-            goto: None,
+            prompt: None,
             message: String::new(),
             areas: Areas::default(),
             picture: None,
             trace_time: Duration::ZERO,
             truecolor: true,
+            color_note: None,
+            loaded_from: None,
+            help_scroll: 0,
+            features: None,
+            seek: Seek::Tir,
+            overlay: Overlay::None,
+            pane: Pane::Details,
+            guide: None,
+            scene_json: None,
+            loaded: None,
+            edits: Vec::new(),
+            before: None,
             worker,
             requested: None,
         }
@@ -201,13 +289,15 @@ impl App {
         self.detail_scroll = 0;
     }
 
-    /// The tree pane's lines: the item and its indentation.
+    /// The tree pane's lines: the item and its indentation; while stepping,
+    /// only the rays spawned and shadow rays cast so far.
     pub fn items(&self) -> Vec<(Item, usize)> {
         let mut out = Vec::new();
         if let Some(t) = &self.trace {
             let nodes = &t.samples[self.sample].tree.nodes;
-            if !nodes.is_empty() {
-                self.push_items(nodes, 0, 0, &mut out);
+            let shown = self.revealed();
+            if !nodes.is_empty() && shown.node(0).spawned {
+                self.push_items(nodes, &shown, 0, 0, &mut out);
             }
         }
         out
@@ -216,19 +306,22 @@ impl App {
     fn push_items(
         &self,
         nodes: &[crate::tree::ray_tree::RayNode],
+        shown: &Revealed,
         i: usize,
         indent: usize,
         out: &mut Vec<(Item, usize)>,
     ) {
         out.push((Item::Ray(i), indent));
-        if !self.expanded.contains(&i) {
+        if !self.expanded.contains(&i) || out.len() > nodes.len() * 64 {
             return;
         }
-        for k in 0..nodes[i].shadow_rays.len() {
+        for k in 0..shown.node(i).shadows.min(nodes[i].shadow_rays.len()) {
             out.push((Item::Shadow(i, k), indent + 1));
         }
         for c in nodes[i].children() {
-            self.push_items(nodes, c, indent + 1, out);
+            if shown.node(c).spawned {
+                self.push_items(nodes, shown, c, indent + 1, out);
+            }
         }
     }
 
@@ -243,122 +336,6 @@ impl App {
             let n = &t.samples[self.sample].tree.nodes[i];
             !n.shadow_rays.is_empty() || n.children().next().is_some()
         })
-    }
-
-    /// Handles one key press.
-    pub fn on_key(&mut self, key: KeyEvent) {
-        if let Some(text) = &mut self.goto {
-            match key.code {
-                KeyCode::Char(c) if c.is_ascii_digit() || c == ',' || c == ' ' => text.push(c),
-                KeyCode::Backspace => {
-                    text.pop();
-                }
-                KeyCode::Enter => {
-                    let typed = self.goto.take().unwrap_or_default();
-                    self.go_to(&typed);
-                }
-                KeyCode::Esc => self.goto = None,
-                _ => {}
-            }
-            return;
-        }
-        if self.help {
-            self.help = false;
-            if matches!(key.code, KeyCode::Char('q')) {
-                self.quit = true;
-            }
-            return;
-        }
-        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-        match key.code {
-            KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
-            KeyCode::Char('c') if ctrl => self.quit = true,
-            KeyCode::Char('?') => self.help = true,
-            KeyCode::Tab | KeyCode::BackTab => {
-                self.focus = if self.focus == Focus::Image {
-                    Focus::Tree
-                } else {
-                    Focus::Image
-                }
-            }
-            KeyCode::Char('n') | KeyCode::Char(' ') => self.step_by(1),
-            KeyCode::Char('p') | KeyCode::Backspace => self.step_by(-1),
-            KeyCode::Char('+') | KeyCode::Char('=') => self.zoom_by(1),
-            KeyCode::Char('-') | KeyCode::Char('_') => self.zoom_by(-1),
-            KeyCode::Char('g') => self.goto = Some(String::new()),
-            KeyCode::Char('e') => self.expand_all(),
-            KeyCode::Char('s') => self.next_sample(),
-            KeyCode::PageDown => self.scroll_details(10),
-            KeyCode::PageUp => self.scroll_details(-10),
-            KeyCode::Char('t') => self.focus = Focus::Tree,
-            KeyCode::Char('i') => self.focus = Focus::Image,
-            code => match self.focus {
-                Focus::Image => self.image_key(code),
-                Focus::Tree => self.tree_key(code),
-            },
-        }
-    }
-
-    fn image_key(&mut self, code: KeyCode) {
-        let step = self.cursor_step();
-        let (x, y) = (i64::from(self.cursor.0), i64::from(self.cursor.1));
-        let to = match code {
-            KeyCode::Left | KeyCode::Char('h') => (x - step, y),
-            KeyCode::Right | KeyCode::Char('l') => (x + step, y),
-            KeyCode::Up | KeyCode::Char('k') => (x, y - step),
-            KeyCode::Down | KeyCode::Char('j') => (x, y + step),
-            KeyCode::Enter => {
-                self.focus = Focus::Tree;
-                return;
-            }
-            _ => return,
-        };
-        let (w, h) = self.image_size();
-        self.select((
-            to.0.clamp(0, i64::from(w) - 1) as u32,
-            to.1.clamp(0, i64::from(h) - 1) as u32,
-        ));
-    }
-
-    fn tree_key(&mut self, code: KeyCode) {
-        let items = self.items();
-        let Some(&(item, _)) = items.get(self.selected) else {
-            return;
-        };
-        match code {
-            KeyCode::Up | KeyCode::Char('k') => {
-                self.selected = self.selected.saturating_sub(1);
-                self.detail_scroll = 0;
-            }
-            KeyCode::Down | KeyCode::Char('j') => {
-                self.selected = (self.selected + 1).min(items.len().saturating_sub(1));
-                self.detail_scroll = 0;
-            }
-            KeyCode::Enter | KeyCode::Right | KeyCode::Char('l') => {
-                if let Item::Ray(n) = item {
-                    self.expanded.insert(n);
-                }
-            }
-            KeyCode::Left | KeyCode::Char('h') => match item {
-                Item::Ray(n) if self.expanded.contains(&n) => {
-                    self.expanded.remove(&n);
-                }
-                _ => {
-                    // Go to the parent line.
-                    let parent = match item {
-                        Item::Shadow(n, _) => Some(n),
-                        Item::Ray(n) => self
-                            .trace
-                            .as_ref()
-                            .and_then(|t| t.samples[self.sample].tree.nodes[n].parent),
-                    };
-                    if let Some(p) = parent {
-                        self.select_node(p);
-                    }
-                }
-            },
-            _ => {}
-        }
     }
 
     /// Selects node `n`'s line, expanding its ancestors.
@@ -379,7 +356,7 @@ impl App {
         }
     }
 
-    fn expand_all(&mut self) {
+    pub(super) fn expand_all(&mut self) {
         if let Some(t) = &self.trace {
             self.expanded = (0..t.samples[self.sample].tree.nodes.len()).collect();
         }
@@ -399,26 +376,6 @@ impl App {
         self.set_trace(trace);
     }
 
-    /// Moves `by` steps through the algorithm and selects the step's ray.
-    pub fn step_by(&mut self, by: i64) {
-        if self.steps.is_empty() {
-            return;
-        }
-        let last = self.steps.len() as i64 - 1;
-        let next = match self.step {
-            None if by >= 0 => 0,
-            None => last,
-            Some(s) => (s as i64 + by).clamp(0, last),
-        };
-        self.step = Some(next as usize);
-        self.select_node(self.steps[next as usize].node);
-    }
-
-    fn zoom_by(&mut self, by: i32) {
-        let max = self.max_zoom();
-        self.zoom = self.zoom.saturating_add_signed(by).min(max);
-    }
-
     /// The deepest zoom: four dots per image pixel.
     pub fn max_zoom(&self) -> u32 {
         let fit = self.fit_scale();
@@ -435,11 +392,6 @@ impl App {
             f64::from(self.areas.image.height.max(1)) * 2.0,
         );
         (f64::from(w) / cols).max(f64::from(h) / rows)
-    }
-
-    /// How far one arrow press moves the cursor: one dot, but at least one pixel.
-    fn cursor_step(&self) -> i64 {
-        (self.window().scale.round() as i64).max(1)
     }
 
     /// The part of the image the pane shows: the whole image at zoom 0, else a
@@ -465,57 +417,6 @@ impl App {
             scale,
             cols,
             rows,
-        }
-    }
-
-    /// Handles a mouse event: a left click on the image selects that pixel; on the
-    /// tree, that line.
-    pub fn on_mouse(&mut self, m: MouseEvent) {
-        if self.areas.details.contains((m.column, m.row).into()) {
-            match m.kind {
-                MouseEventKind::ScrollDown => self.scroll_details(3),
-                MouseEventKind::ScrollUp => self.scroll_details(-3),
-                _ => {}
-            }
-            return;
-        }
-        if m.kind != MouseEventKind::Down(MouseButton::Left) {
-            return;
-        }
-        let (img, tree) = (self.areas.image, self.areas.tree);
-        if img.contains((m.column, m.row).into()) {
-            let (i, j) = (m.column - img.x, (m.row - img.y) * 2);
-            let (w, h) = self.image_size();
-            if let Some(p) = self.window().pixel_at(i, j, w, h) {
-                self.focus = Focus::Image;
-                self.select(p);
-            }
-        } else if tree.contains((m.column, m.row).into()) {
-            self.focus = Focus::Tree;
-            let line = usize::from(m.row - tree.y) + self.tree_scroll(tree.height);
-            if line < self.items().len() {
-                self.selected = line;
-            }
-        }
-    }
-
-    /// The first tree line shown, so the selection stays in view.
-    pub fn tree_scroll(&self, height: u16) -> usize {
-        self.selected.saturating_sub(usize::from(height.max(1)) - 1)
-    }
-
-    fn go_to(&mut self, typed: &str) {
-        let parsed = typed.split_once(',').and_then(|(x, y)| {
-            Some((x.trim().parse::<u32>().ok()?, y.trim().parse::<u32>().ok()?))
-        });
-        let (w, h) = self.image_size();
-        match parsed {
-            Some((x, y)) if x < w && y < h => {
-                self.message.clear();
-                self.select((x, y));
-            }
-            Some((x, y)) => self.message = format!("pixel {x},{y} is outside the {w}×{h} image"),
-            None => self.message = format!("'{typed}' is not a pixel: type x,y (e.g. 320,240)"),
         }
     }
 

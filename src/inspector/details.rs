@@ -6,7 +6,7 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 
 use super::app::{App, Item};
-use super::ui::swatch;
+use super::colors::swatch;
 use crate::tree::ray_tree::RayNode;
 use crate::views::explain;
 use crate::views::numbers::{color, num, vec3};

@@ -6,9 +6,20 @@
 //! way out (quit, error, panic, SIGINT).
 
 mod app;
+mod colors;
 mod details;
+mod diagram_pane;
+mod features;
+mod find;
+mod fit;
+mod image_pane;
+mod keys;
 mod preview;
+mod reveal;
+mod stepping;
+mod tree_pane;
 mod ui;
+mod whatif;
 
 use std::io::{IsTerminal, Stdout, stdout};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -24,9 +35,13 @@ use ratatui::crossterm::terminal::{
     EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
 };
 
-pub use app::{App, Areas, Focus, Item};
+pub use app::{App, Areas, Before, Focus, Guided, Item, Pane, Prompt};
+pub use colors::detect as color_support;
+pub use features::{FeatureMap, Features, scan as scan_features};
+pub use find::{Overlay, Seek};
 pub use preview::{Picture, Window, render_picture};
-pub use ui::{KEYS, draw, truecolor};
+pub use reveal::{Progress, Revealed, call_stack};
+pub use ui::{GLYPHS, KEYS, draw};
 
 static ACTIVE: AtomicBool = AtomicBool::new(false);
 
@@ -37,7 +52,6 @@ pub fn run(mut app: App) -> std::io::Result<()> {
             "raytree inspect needs a terminal (standard output is not one)",
         ));
     }
-    app.truecolor = ui::truecolor();
     let mut terminal = setup()?;
     let result = event_loop(&mut terminal, &mut app);
     restore();

@@ -52,9 +52,21 @@ fn screen(app: &mut App) -> String {
 }
 
 #[test]
-fn starts_at_the_center_and_arrows_move_the_cursor() {
-    let mut app = app_at(None);
-    assert_eq!(app.cursor, (320, 240));
+fn starts_on_the_deepest_tree_nearest_the_center() {
+    let app = app_at(None);
+    let scene = raytree::scene::loader::whitted();
+    let map = raytree::inspector::scan_features(&scene, 8);
+    let deepest = map.cells.iter().map(|f| f.depth).max().unwrap();
+    let start = map.at(app.cursor.0, app.cursor.1);
+    assert_eq!(start.depth, deepest, "the start pixel has the deepest tree");
+    assert!(start.depth > 2, "and it is deeper than a floor pixel's");
+    // The image's center is a plain floor pixel: not where the inspector starts.
+    assert_ne!(app.cursor, (320, 240));
+}
+
+#[test]
+fn arrows_move_the_cursor() {
+    let mut app = app_at(Some((320, 240)));
     // Fitting 640×480 into 80 × 60 dots: 8 image pixels per dot, so one press moves 8 pixels.
     key(&mut app, KeyCode::Right);
     key(&mut app, KeyCode::Char('j'));

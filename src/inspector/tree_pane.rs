@@ -1,0 +1,119 @@
+//! The ray tree pane: one line per ray (its kind, depth, what it hit, its
+//! color once returned, why its branches stopped) and per shadow ray; while
+//! stepping, only what has been computed, the current step's line marked.
+
+use ratatui::Frame;
+use ratatui::layout::Rect;
+use ratatui::style::{Modifier, Style};
+use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Paragraph};
+
+use super::app::{App, Item};
+use super::colors::{swatch, term_color};
+use super::fit::cut;
+use super::reveal::Progress;
+use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
+use crate::views::numbers::num;
+use crate::views::pen::palette;
+use crate::views::text::kind_name;
+
+fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<Span<'static>> {
+    let what = match &node.hit {
+        _ if !p.hit => "testing…".to_owned(),
+        Some(h) => format!("'{}'", h.name),
+        None => "background".to_owned(),
+    };
+    let mut spans = vec![
+        Span::styled(
+            format!("{} ", kind_name(node.kind)),
+            Style::default()
+                .fg(term_color(
+                    crate::views::diagram_layout::ray_pen(node.kind).color,
+                    tc,
+                ))
+                .add_modifier(Modifier::BOLD),
+        ),
+        Span::raw(format!("d{} {what} ", node.depth)),
+    ];
+    if p.color {
+        spans.push(swatch(node.color(), tc));
+    }
+    let why = if p.reflect && p.refract || p.color {
+        app.stop_reason(n)
+    } else {
+        String::new()
+    };
+    if !why.is_empty() {
+        spans.push(Span::styled(
+            format!(" {why}"),
+            Style::default().add_modifier(Modifier::DIM),
+        ));
+    }
+    spans
+}
+
+pub fn shadow_text(node: &RayNode, k: usize) -> String {
+    let s = &node.shadow_rays[k];
+    let what = match &s.outcome {
+        ShadowOutcomeRecord::FacesAway => "faces away".to_owned(),
+        ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
+            "reaches the light".to_owned()
+        }
+        ShadowOutcomeRecord::Reaches { transmitted } => {
+            format!("reaches the light, keeping {}", num(*transmitted))
+        }
+        ShadowOutcomeRecord::Blocked { name, t, .. } => {
+            format!("blocked by '{name}' at t = {}", num(*t))
+        }
+    };
+    format!("shadow → '{}': {what}", s.name)
+}
+
+/// Draws the tree pane.
+pub fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
+    let Some(trace) = &app.trace else {
+        frame.render_widget(Paragraph::new("no pixel traced").block(block), area);
+        return;
+    };
+    let nodes = &trace.samples[app.sample].tree.nodes;
+    let inner = block.inner(area);
+    let step_node = app.step.map(|s| app.steps[s].node);
+    let shown = app.revealed();
+    let width = usize::from(inner.width);
+    let items = app.items();
+    let scroll = app.tree_scroll(inner.height);
+    let lines: Vec<Line> = items
+        .iter()
+        .enumerate()
+        .skip(scroll)
+        .take(usize::from(inner.height))
+        .map(|(row, &(item, indent))| {
+            let mut spans = vec![Span::raw("  ".repeat(indent))];
+            match item {
+                Item::Ray(n) => {
+                    let marker = if !app.expandable(n) {
+                        "  "
+                    } else if app.expanded.contains(&n) {
+                        "▾ "
+                    } else {
+                        "▸ "
+                    };
+                    spans.push(Span::raw(marker));
+                    spans.extend(ray_line(app, &nodes[n], n, shown.node(n), tc));
+                }
+                Item::Shadow(n, k) => spans.push(Span::styled(
+                    format!("  {}", shadow_text(&nodes[n], k)),
+                    Style::default().fg(term_color(palette::SHADOW_REACHES, tc)),
+                )),
+            }
+            let mut line = cut(Line::from(spans), width);
+            if row == app.selected {
+                line = line.style(Style::default().add_modifier(Modifier::REVERSED));
+            } else if step_node == Some(item.node()) && matches!(item, Item::Ray(_)) {
+                line = line.style(Style::default().add_modifier(Modifier::UNDERLINED));
+            }
+            line
+        })
+        .collect();
+    frame.render_widget(Paragraph::new(lines).block(block), area);
+}

@@ -1,0 +1,308 @@
+//! What-if: change the selected hit's material or a method choice inside the
+//! inspector and see what the pixel does. Edits are made to the scene file's
+//! JSON and the scene is parsed again, so an edit is checked exactly as a
+//! scene file would be, and the edited scene can be written out as a file
+//! that raytree reads back the same.
+
+use std::path::Path;
+use std::sync::Arc;
+
+use serde_json::Value;
+
+use super::app::{App, Before, Item};
+use super::preview::Worker;
+use crate::scene::Scene;
+use crate::scene::settings::RenderSettings;
+
+/// The material fields an edit may change, as the scene file names them.
+pub const MATERIAL_FIELDS: &[&str] = &[
+    "color",
+    "ambient",
+    "diffuse",
+    "specular",
+    "shininess",
+    "reflective",
+    "transparent",
+    "ior",
+];
+
+/// The method choices an edit may change (the scene file's `render` fields).
+pub const METHOD_FIELDS: &[&str] = &["sphere", "offset", "weights", "max_depth", "cutoff"];
+
+/// Applies `field=value` to material `material` (or, for a method field, to the
+/// render settings) in `json`, returning the new scene. `settings` are the
+/// settings in use (the command line's overrides included): they are kept,
+/// except the field edited. Errors are one line saying what is wrong.
+pub fn apply(
+    json: &mut Value,
+    material: Option<&str>,
+    typed: &str,
+    settings: &RenderSettings,
+    file: &str,
+) -> Result<Scene, String> {
+    let (field, raw) = typed
+        .split_once('=')
+        .map(|(f, v)| (f.trim(), v.trim()))
+        .ok_or_else(|| format!("'{typed}': type field=value, e.g. ior=1.0"))?;
+    let value = parse_value(raw);
+    let mut edited = json.clone();
+    if METHOD_FIELDS.contains(&field) {
+        let render = edited
+            .as_object_mut()
+            .ok_or("the scene is not a JSON object")?
+            .entry("render")
+            .or_insert_with(|| Value::Object(Default::default()));
+        render
+            .as_object_mut()
+            .ok_or("the scene's render is not an object")?
+            .insert(field.to_owned(), value);
+    } else if MATERIAL_FIELDS.contains(&field) {
+        let name = material.ok_or("select a ray that hit something to edit its material")?;
+        let m = edited
+            .get_mut("materials")
+            .and_then(|ms| ms.get_mut(name))
+            .and_then(Value::as_object_mut)
+            .ok_or_else(|| format!("material '{name}' is not in the scene file"))?;
+        if field == "color" {
+            m.remove("checker");
+        }
+        m.insert(field.to_owned(), value);
+    } else {
+        return Err(format!(
+            "'{field}' cannot be edited: try one of {}, {}",
+            MATERIAL_FIELDS.join(", "),
+            METHOD_FIELDS.join(", ")
+        ));
+    }
+    let text = serde_json::to_string(&edited).map_err(|e| e.to_string())?;
+    let mut scene = crate::scene::loader::parse(&text, file).map_err(|e| e.to_string())?;
+    let mut kept = *settings;
+    let new = scene.settings;
+    match field {
+        "sphere" => kept.sphere = new.sphere,
+        "offset" => kept.offset = new.offset,
+        "weights" => kept.weights = new.weights,
+        "max_depth" => kept.max_depth = new.max_depth,
+        "cutoff" => kept.cutoff = new.cutoff,
+        _ => {}
+    }
+    scene.settings = kept;
+    *json = edited;
+    Ok(scene)
+}
+
+/// A typed value as JSON: a number, a color `r,g,b`, or a word (`lecture`).
+fn parse_value(raw: &str) -> Value {
+    if let Ok(v) = serde_json::from_str::<Value>(raw) {
+        return v;
+    }
+    let parts: Vec<&str> = raw.split(',').map(str::trim).collect();
+    if parts.len() == 3
+        && let Ok(c) = parts
+            .iter()
+            .map(|p| p.parse::<f64>())
+            .collect::<Result<Vec<_>, _>>()
+    {
+        return serde_json::json!(c);
+    }
+    Value::String(raw.to_owned())
+}
+
+/// Writes the edited scene to `path`, which must not exist yet (an edit never
+/// replaces a file, least of all the scene it came from); atomically.
+pub fn write(json: &Value, path: &Path) -> Result<(), String> {
+    let at = path.display();
+    if path.exists() {
+        return Err(format!("{at} exists: give a new file name"));
+    }
+    let dir = path
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
+    let mut text = serde_json::to_string_pretty(json).map_err(|e| e.to_string())?;
+    text.push('\n');
+    let tmp = tempfile::Builder::new()
+        .prefix(".raytree-")
+        .suffix(".part")
+        .tempfile_in(dir)
+        .map_err(|e| format!("{at}: {e}"))?;
+    std::fs::write(tmp.path(), text).map_err(|e| format!("{at}: {e}"))?;
+    tmp.persist_noclobber(path)
+        .map_err(|e| format!("{at}: {}", e.error))?;
+    Ok(())
+}
+
+impl App {
+    /// Applies a typed edit (`ior=1.0`) to the selected hit's material (or a
+    /// method), re-traces the pixel and keeps what it was before the first edit.
+    pub fn edit(&mut self, typed: &str) {
+        let Some(scene) = self.scene.clone() else {
+            self.message = "no scene to edit".to_owned();
+            return;
+        };
+        if self.scene_json.is_none() {
+            match self.read_scene_json() {
+                Ok(v) => self.scene_json = Some(v),
+                Err(e) => {
+                    self.message = e;
+                    return;
+                }
+            }
+        }
+        let material = self.selected_material();
+        let file = self.source.file.clone();
+        let json = self.scene_json.as_mut().expect("read above");
+        match apply(json, material.as_deref(), typed, &scene.settings, &file) {
+            Ok(edited) => {
+                if self.before.is_none() {
+                    self.before = self.trace.as_ref().map(|t| Before {
+                        pixel: self.cursor,
+                        color: t.color,
+                        rays: t.samples[0].tree.nodes.len(),
+                    });
+                }
+                if self.loaded.is_none() {
+                    self.loaded = Some(Arc::clone(&scene));
+                }
+                let label = match &material {
+                    Some(m)
+                        if MATERIAL_FIELDS
+                            .iter()
+                            .any(|f| typed.trim_start().starts_with(f)) =>
+                    {
+                        format!("{m}: {}", typed.trim())
+                    }
+                    _ => typed.trim().to_owned(),
+                };
+                self.edits.push(label);
+                self.swap_scene(Arc::new(edited));
+                self.message =
+                    format!("what if {}  (u: undo all, w: write)", self.edits.join("; "));
+            }
+            Err(e) => self.message = e,
+        }
+    }
+
+    /// Back to the scene as loaded, the pixel's tree bit for bit as before.
+    pub fn restore_scene(&mut self) {
+        let Some(loaded) = self.loaded.take() else {
+            self.message = "nothing to undo: the scene is as loaded".to_owned();
+            return;
+        };
+        self.edits.clear();
+        self.before = None;
+        self.scene_json = None;
+        self.swap_scene(loaded);
+        self.message = "the scene is as loaded again".to_owned();
+    }
+
+    /// Writes the edited scene to a new file.
+    pub fn write_scene(&mut self, name: &str) {
+        let Some(json) = self.scene_json.as_ref().filter(|_| !self.edits.is_empty()) else {
+            self.message = "no edits to write (m: edit the selected hit's material)".to_owned();
+            return;
+        };
+        self.message = match write(json, Path::new(name.trim())) {
+            Ok(()) => format!("wrote {}", name.trim()),
+            Err(e) => e,
+        };
+    }
+
+    /// A name for the edited scene beside the original: `whitted-edited.json`.
+    pub fn default_edit_name(&self) -> String {
+        let file = self
+            .source
+            .file
+            .trim_end_matches(crate::scene::source::BUILT_IN);
+        let path = Path::new(if file.is_empty() {
+            "whitted.json"
+        } else {
+            file
+        });
+        let stem = path
+            .file_stem()
+            .map_or("scene".into(), |s| s.to_string_lossy());
+        path.with_file_name(format!("{stem}-edited.json"))
+            .display()
+            .to_string()
+    }
+
+    fn selected_material(&self) -> Option<String> {
+        let t = self.trace.as_ref()?;
+        let node = self.selected_item().map_or(0, Item::node);
+        let hit = t.samples[self.sample].tree.nodes.get(node)?.hit.as_ref()?;
+        Some(hit.material.clone())
+    }
+
+    fn read_scene_json(&self) -> Result<Value, String> {
+        let text = if self.source.file == crate::scene::source::BUILT_IN {
+            crate::scene::loader::WHITTED.to_owned()
+        } else {
+            crate::scene::loader::read(Path::new(&self.source.file)).map_err(|e| e.to_string())?
+        };
+        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", self.source.file))
+    }
+
+    fn swap_scene(&mut self, scene: Arc<Scene>) {
+        if self.worker.is_some() {
+            self.worker = Some(Worker::start(Arc::clone(&scene)));
+        }
+        self.scene = Some(scene);
+        self.features = None;
+        self.picture = None;
+        self.requested = None;
+        let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
+        self.select(self.cursor);
+        self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);
+        self.expanded = expanded;
+        self.selected = selected.min(self.items().len().saturating_sub(1));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn whitted_json() -> Value {
+        serde_json::from_str(crate::scene::loader::WHITTED).unwrap()
+    }
+
+    #[test]
+    fn an_edit_changes_the_material_and_keeps_the_settings() {
+        let mut json = whitted_json();
+        let mut settings = crate::scene::loader::whitted().settings;
+        settings.width = 64;
+        let scene = apply(
+            &mut json,
+            Some("glass"),
+            "ior = 1.0",
+            &settings,
+            "whitted.json",
+        )
+        .unwrap();
+        let glass = scene.materials.iter().find(|m| m.name == "glass").unwrap();
+        assert_eq!(glass.ior, 1.0);
+        assert_eq!(scene.settings.width, 64);
+        assert_eq!(json["materials"]["glass"]["ior"], serde_json::json!(1.0));
+    }
+
+    #[test]
+    fn bad_edits_say_what_is_wrong_and_change_nothing() {
+        let mut json = whitted_json();
+        let before = json.clone();
+        let settings = crate::scene::loader::whitted().settings;
+        for (typed, want) in [
+            ("ior", "type field=value"),
+            ("wobble=1", "'wobble' cannot be edited"),
+            ("ior=-1", "ior"),
+            ("sphere=sideways", "sphere"),
+        ] {
+            let e = apply(&mut json, Some("glass"), typed, &settings, "whitted.json").unwrap_err();
+            assert!(e.contains(want), "{typed}: {e}");
+            assert!(!e.contains('\n'));
+        }
+        assert_eq!(json, before);
+        let scene = apply(&mut json, None, "sphere=lecture", &settings, "whitted.json").unwrap();
+        assert_eq!(scene.settings.sphere, crate::methods::SphereMethod::Lecture);
+    }
+}
