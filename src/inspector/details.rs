@@ -7,16 +7,70 @@ use ratatui::text::{Line, Span};
 
 use super::app::{App, Item};
 use super::colors::swatch;
+use super::reveal::Progress;
 use crate::tree::ray_tree::RayNode;
+use crate::tree::steps::StepKind;
 use crate::views::explain;
 use crate::views::numbers::{color, num, vec3};
 use crate::views::text::{kind_name, searched};
 
 /// The selected line's numbers: a shadow ray's, or a ray's with the camera
 /// stage (for a pixel's primary ray), its tests, its hit and its color sum,
-/// each with the lecture's arithmetic written out.
+/// each with the lecture's arithmetic written out. Browsing, the results come
+/// first; stepping, only what the algorithm has computed so far, in the order
+/// it computed it, so the pane reads like a debugger's.
 pub(super) fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
-    let (Some(trace), Some(item)) = (&app.trace, app.selected_item()) else {
+    let mut out = what_if(app, tc);
+    out.extend(selected(app, tc));
+    out
+}
+
+/// With edits in effect: what they are, and the pixel's color and ray count
+/// before the first edit and now.
+fn what_if(app: &App, tc: bool) -> Vec<Line<'static>> {
+    let (Some(before), Some(trace)) = (&app.before, &app.trace) else {
+        return Vec::new();
+    };
+    if before.pixel != app.cursor {
+        return Vec::new();
+    }
+    let bold = Style::default().add_modifier(Modifier::BOLD);
+    vec![
+        Line::from(vec![
+            Span::styled("what if  ", bold),
+            Span::raw(format!("{} (u: undo all, w: write)", app.edits.join("; "))),
+        ]),
+        Line::from(vec![
+            Span::styled("color    ", bold),
+            swatch(before.color, tc),
+            Span::raw(format!(" {} → ", color(before.color))),
+            swatch(trace.color, tc),
+            Span::raw(format!(" {}", color(trace.color))),
+        ]),
+        Line::from(vec![
+            Span::styled("rays     ", bold),
+            Span::raw(format!(
+                "{} → {} in the first sample's tree",
+                before.rays,
+                trace.samples[0].tree.nodes.len()
+            )),
+        ]),
+        Line::from(""),
+    ]
+}
+
+fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
+    let Some(trace) = &app.trace else {
+        return vec![];
+    };
+    // The camera stage comes before any ray: it is what step 1 computes.
+    let camera_step = app
+        .step
+        .is_some_and(|s| app.steps.get(s).is_some_and(|s| s.kind == StepKind::Camera));
+    if let (true, Some(stage)) = (camera_step, &trace.samples[app.sample].camera) {
+        return explained(explain::camera(&trace.camera, stage, ""));
+    }
+    let Some(item) = app.selected_item() else {
         return vec![];
     };
     let sample = &trace.samples[app.sample];
@@ -24,22 +78,42 @@ pub(super) fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
     if let Item::Shadow(_, k) = item {
         return shadow_details(node, k);
     }
+    let kind_of = |test: &crate::tree::ray_tree::TestRecord| {
+        trace
+            .objects
+            .get(test.object)
+            .map_or("object", |o| o.kind.as_str())
+    };
+    let camera = match (&sample.camera, node.parent) {
+        (Some(stage), None) => explained(explain::camera(&trace.camera, stage, "")),
+        _ => Vec::new(),
+    };
+    if app.step.is_some() {
+        let revealed = app.revealed();
+        let p = revealed.node(item.node());
+        let mut out = ray_details(node);
+        if revealed.camera {
+            out.extend(camera);
+        }
+        for test in node.tests.iter().take(p.tests) {
+            out.extend(explained(explain::test(test, kind_of(test), node)));
+        }
+        if p.hit {
+            out.extend(hit_details(node));
+        }
+        out.extend(working(node, p, tc));
+        return out;
+    }
     // The results first (the ray, its hit, its color), then how each was worked out.
     let mut out = ray_details(node);
     out.extend(hit_details(node));
     out.extend(color_sum(node, tc));
     out.push(Line::from(""));
-    if let (Some(stage), None) = (&sample.camera, node.parent) {
-        out.extend(explained(explain::camera(&trace.camera, stage, "")));
-    }
+    out.extend(camera);
     for test in &node.tests {
-        let kind = trace
-            .objects
-            .get(test.object)
-            .map_or("object", |o| o.kind.as_str());
-        out.extend(explained(explain::test(test, kind, node)));
+        out.extend(explained(explain::test(test, kind_of(test), node)));
     }
-    out.extend(working(node));
+    out.extend(working(node, Progress::DONE, tc));
     out
 }
 
@@ -109,23 +183,40 @@ fn hit_details(node: &RayNode) -> Vec<Line<'static>> {
     explained(explain::hit(h, &searched(&node.tested)))
 }
 
-/// How the hit's color was worked out: the shadow rays, the Phong terms, and
-/// the reflected and refracted directions with their formulas.
-fn working(node: &RayNode) -> Vec<Line<'static>> {
-    let (Some(h), Some(local)) = (&node.hit, &node.local) else {
+/// How the hit's color was worked out, as far as `p` has come: the shadow
+/// rays, the Phong terms, the reflected and refracted directions with their
+/// formulas and, stepping, the color sum once it is returned.
+fn working(node: &RayNode, p: Progress, tc: bool) -> Vec<Line<'static>> {
+    let Some(h) = &node.hit else {
         return Vec::new();
     };
     let mut out: Vec<Line<'static>> = node
         .shadow_rays
         .iter()
+        .take(p.shadows)
         .map(|s| Line::from(explain::shadow(s)))
         .collect();
-    out.extend(explain::local(local).1.into_iter().map(Line::from));
-    if node.reflected.is_some() {
+    if let Some(local) = node.local.as_ref().filter(|_| p.local) {
+        let (headline, arithmetic) = explain::local(local);
+        if p != Progress::DONE {
+            out.push(Line::from(headline));
+        }
+        out.extend(
+            arithmetic
+                .into_iter()
+                .map(|d| Line::from(format!("    {d}"))),
+        );
+    }
+    if p.reflect && node.reflected.is_some() {
         out.push(Line::from(format!("reflect: {}", explain::reflection(h))));
     }
-    for line in explain::refraction(h) {
-        out.push(Line::from(format!("refract: {line}")));
+    if p.refract {
+        for line in explain::refraction(h) {
+            out.push(Line::from(format!("refract: {line}")));
+        }
+    }
+    if p.color && p != Progress::DONE {
+        out.extend(color_sum(node, tc).into_iter().skip(1));
     }
     out
 }

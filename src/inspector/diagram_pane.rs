@@ -21,9 +21,15 @@ use crate::views::projection::Outline;
 
 /// Draws the diagram pane.
 pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
-    let block = Block::default()
-        .borders(Borders::ALL)
-        .title(" diagram: plane of incidence, world up on top ");
+    let title = [
+        " diagram: plane of incidence, world up on top ",
+        " diagram: plane of incidence ",
+        " diagram ",
+    ]
+    .into_iter()
+    .find(|t| t.chars().count() + 2 <= usize::from(area.width))
+    .unwrap_or("");
+    let block = Block::default().borders(Borders::ALL).title(title);
     let (Some(trace), Some(scene)) = (&app.trace, &app.scene) else {
         frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
         return;

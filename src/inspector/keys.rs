@@ -10,6 +10,8 @@ use super::find::Seek;
 impl App {
     /// Handles one key press.
     pub fn on_key(&mut self, key: KeyEvent) {
+        // A message answers the key before; the next key clears it.
+        self.message.clear();
         if self.prompt.is_some() {
             self.prompt_key(key.code);
             return;
@@ -183,11 +185,21 @@ impl App {
     /// Handles a mouse event: a left click on the image selects that pixel; on the
     /// tree, that line.
     pub fn on_mouse(&mut self, m: MouseEvent) {
-        if self.areas.details.contains((m.column, m.row).into()) {
-            match m.kind {
-                MouseEventKind::ScrollDown => self.scroll_details(3),
-                MouseEventKind::ScrollUp => self.scroll_details(-3),
-                _ => {}
+        let at = (m.column, m.row).into();
+        let wheel = match m.kind {
+            MouseEventKind::ScrollDown => 3,
+            MouseEventKind::ScrollUp => -3,
+            _ => 0,
+        };
+        if wheel != 0 {
+            if self.help {
+                self.help_scroll = self.help_scroll.saturating_add_signed(wheel as i16);
+            } else if self.areas.details.contains(at) {
+                self.scroll_details(wheel);
+            } else if self.areas.tree.contains(at) {
+                let last = self.items().len().saturating_sub(1) as i64;
+                self.selected = (self.selected as i64 + i64::from(wheel)).clamp(0, last) as usize;
+                self.detail_scroll = 0;
             }
             return;
         }

@@ -37,22 +37,26 @@ pub struct Progress {
     pub color: bool,
 }
 
+impl Progress {
+    /// A computation that is over: every stage done (counts saturated).
+    pub const DONE: Progress = Progress {
+        spawned: true,
+        tests: usize::MAX,
+        hit: true,
+        shadows: usize::MAX,
+        local: true,
+        reflect: true,
+        refract: true,
+        color: true,
+    };
+}
+
 impl Revealed {
     /// Everything: what free browsing shows.
     pub fn all(tree: &RayTree) -> Self {
-        let done = |n: &crate::tree::ray_tree::RayNode| Progress {
-            spawned: true,
-            tests: n.tests.len(),
-            hit: true,
-            shadows: n.shadow_rays.len(),
-            local: true,
-            reflect: true,
-            refract: true,
-            color: true,
-        };
         Self {
             camera: true,
-            nodes: tree.nodes.iter().map(done).collect(),
+            nodes: vec![Progress::DONE; tree.nodes.len()],
         }
     }
 
@@ -88,8 +92,10 @@ impl Revealed {
 }
 
 /// The recursion from the primary ray down to node `n`, as a call stack:
-/// "primary → refracted d2 → reflected d3".
-pub fn call_stack(tree: &RayTree, n: usize) -> String {
+/// "primary → refracted d2 → reflected d3", within `width` columns: when it is
+/// longer, the middle calls give way to "…", the primary ray and the newest
+/// calls stay.
+pub fn call_stack(tree: &RayTree, n: usize, width: usize) -> String {
     let mut chain = Vec::new();
     let mut at = Some(n);
     while let Some(i) = at.filter(|&i| i < tree.nodes.len()) {
@@ -99,7 +105,7 @@ pub fn call_stack(tree: &RayTree, n: usize) -> String {
             break; // a loop in a damaged tree: stop rather than spin
         }
     }
-    chain
+    let calls: Vec<String> = chain
         .iter()
         .rev()
         .map(|&i| {
@@ -111,6 +117,22 @@ pub fn call_stack(tree: &RayTree, n: usize) -> String {
                 format!("{kind} d{}", node.depth)
             }
         })
-        .collect::<Vec<_>>()
-        .join(" → ")
+        .collect();
+    let whole = calls.join(" → ");
+    if whole.chars().count() <= width || calls.len() < 3 {
+        return whole;
+    }
+    // Keep the first call and as many of the newest as fit after "… → ".
+    let mut kept: Vec<&str> = Vec::new();
+    let mut used = calls[0].chars().count() + " → … → ".chars().count();
+    for call in calls[1..].iter().rev() {
+        let add = call.chars().count() + if kept.is_empty() { 0 } else { 3 };
+        if used + add > width && !kept.is_empty() {
+            break;
+        }
+        used += add;
+        kept.push(call);
+    }
+    kept.reverse();
+    format!("{} → … → {}", calls[0], kept.join(" → "))
 }

@@ -70,7 +70,8 @@ impl App {
             return;
         };
         self.step = Some(s);
-        self.detail_scroll = 0;
+        // Stepping, the newest numbers are the last lines: show the end.
+        self.detail_scroll = u16::MAX;
         self.select_node(step.node);
         if let StepKind::Shadow(k) = step.kind {
             self.expanded.insert(step.node);

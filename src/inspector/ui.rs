@@ -113,11 +113,11 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
     let tc = app.truecolor;
     let area = frame.area();
     let guide_lines = guide_text(app, area.width);
-    let stepping = app.step.is_some() && app.prompt.is_none();
+    let step_lines = step_text(app, area.width);
     let [main, guide_area, step_area, status_area] = Layout::vertical([
         Constraint::Min(6),
         Constraint::Length(guide_lines.len() as u16),
-        Constraint::Length(if stepping { 2 } else { 1 }),
+        Constraint::Length(step_lines.len() as u16),
         Constraint::Length(1),
     ])
     .areas(area);
@@ -169,15 +169,15 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
     frame.render_widget(image_block, image_area);
     frame.render_widget(ImagePane { app, truecolor: tc }, app.areas.image);
     draw_tree(frame, app, tree_block, tree_area, tc);
-    let other = if wide { "" } else { " v: diagram" };
+    let other = if wide { "" } else { " · v: diagram" };
     if let Some(d) = detail_area {
-        draw_details(frame, app, d, tc, other);
+        app.detail_scroll = draw_details(frame, app, d, tc, other);
     }
     if let Some(d) = diagram_area {
         draw_diagram(frame, app, d, tc);
     }
     frame.render_widget(Paragraph::new(guide_lines), guide_area);
-    frame.render_widget(Paragraph::new(step_text(app, area.width)), step_area);
+    frame.render_widget(Paragraph::new(step_lines), step_area);
     frame.render_widget(Paragraph::new(status_text(app, area.width)), status_area);
     if app.help {
         draw_help(frame, app);
@@ -229,6 +229,9 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         )];
     }
     let Some(s) = app.step else {
+        if !app.message.is_empty() {
+            return vec![cut(Line::from(app.message.clone()), w)];
+        }
         let find = format!("f: find a {}", app.seek.name());
         return vec![cut(
             Line::from(format!(
@@ -242,14 +245,26 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         return Vec::new();
     };
     let node = app.steps[s].node;
-    let stack = call_stack(&trace.samples[app.sample].tree, node);
+    let head = format!("step {}/{} ", s + 1, app.steps.len());
+    let room = w.saturating_sub(head.chars().count() + " in ".len() + " (x: whole tree)".len());
+    let stack = call_stack(&trace.samples[app.sample].tree, node, room);
     let first = Line::from(vec![
-        Span::styled(format!("step {}/{} ", s + 1, app.steps.len()), bold),
+        Span::styled(head, bold),
         Span::styled(format!("in {stack}"), Style::default().fg(Color::Cyan)),
         Span::raw(" (x: whole tree)"),
     ]);
     let what = describe(trace, app.sample, &app.steps[s]).0;
-    vec![cut(first, w), cut(Line::from(what), w)]
+    let mut lines = vec![cut(first, w)];
+    let mut told = wrap(vec![Line::from(what)], w);
+    if told.len() > 2 {
+        told.truncate(2);
+        told[1] = cut(told[1].clone(), w.saturating_sub(1));
+        if let Some(last) = told.get_mut(1) {
+            last.spans.push(Span::raw(super::fit::CUT));
+        }
+    }
+    lines.extend(told);
+    lines
 }
 
 /// The status line: any message, the pixel, the zoom, the scene, the time to
@@ -274,27 +289,13 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
             crate::views::numbers::color(t.color)
         ));
     }
-    if let (Some(b), Some(t)) = (&app.before, &app.trace)
-        && b.pixel == app.cursor
-    {
-        parts.insert(
-            0,
-            format!(
-                "before → after: color {} → {}, rays {} → {}",
-                crate::views::numbers::color(b.color),
-                crate::views::numbers::color(t.color),
-                b.rays,
-                t.samples[0].tree.nodes.len()
-            ),
-        );
-    }
     if let Some(l) = legend(app) {
         parts.insert(0, l);
     }
     if let Some(note) = &app.color_note {
         parts.push(note.clone());
     }
-    if !app.message.is_empty() {
+    if !app.message.is_empty() && app.step.is_some() {
         parts.insert(0, app.message.clone());
     }
     cut(
@@ -306,28 +307,49 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     )
 }
 
-fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) {
+/// Draws the selected ray's numbers; returns the first line shown (the
+/// scroll, kept in range). Stepping, the newest lines are at the bottom, so a
+/// scroll past the end shows the end.
+fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) -> u16 {
     let inner_width = usize::from(area.width.saturating_sub(2));
     let lines = wrap(super::details::details(app, tc), inner_width);
     let visible = usize::from(area.height.saturating_sub(2));
     let top = usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible));
-    let more = lines.len() > visible;
-    let title = if more {
-        let below = lines.len() - (top + visible).min(lines.len());
-        format!(
-            " selected ray {}{} lines {}–{} of {} (PgUp/PgDn){other} ",
+    let below = lines.len().saturating_sub(top + visible);
+    let title = if lines.len() > visible {
+        let arrows = format!(
+            "{}{}",
             if top > 0 { "↑" } else { "" },
-            if below > 0 { "↓" } else { "" },
-            top + 1,
-            (top + visible).min(lines.len()),
-            lines.len()
+            if below > 0 { "↓" } else { "" }
+        );
+        let (from, to, of) = (top + 1, (top + visible).min(lines.len()), lines.len());
+        fitting_title(
+            &[
+                format!(" selected ray {arrows} lines {from}–{to} of {of} (PgUp/PgDn){other} "),
+                format!(" selected ray {arrows} {from}–{to}/{of} PgUp/PgDn{other} "),
+                format!(" ray {arrows} {from}–{to}/{of}{other} "),
+            ],
+            inner_width,
         )
     } else {
-        format!(" selected ray{other} ")
+        fitting_title(&[format!(" selected ray{other} ")], inner_width)
     };
     let block = Block::default().borders(Borders::ALL).title(title);
     let shown: Vec<Line> = lines.into_iter().skip(top).take(visible).collect();
     frame.render_widget(Paragraph::new(shown).block(block), area);
+    top as u16
+}
+
+/// The first of `titles` that fits `width` columns, else the last one cut with a marker.
+fn fitting_title(titles: &[String], width: usize) -> Line<'static> {
+    let fits = titles.iter().find(|t| t.chars().count() <= width);
+    match fits {
+        Some(t) => Line::from(t.clone()),
+        None => cut(
+            Line::from(titles.last().cloned().unwrap_or_default()),
+            width,
+        ),
+    }
 }
 
 /// The help: every key and what the glyphs and colors mean, as wide as the

@@ -12,6 +12,7 @@ mod diagram;
 mod golden_traces;
 mod guide;
 mod inspector;
+mod inspector_teaching;
 mod inspector_tmux;
 mod povray;
 mod ray_tree;

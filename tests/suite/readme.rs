@@ -71,3 +71,22 @@ fn readme_lists_the_inspectors_keys_as_the_help_does() {
         assert!(readme.contains(&row), "README.md lacks the row {row}");
     }
 }
+
+#[test]
+fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let marker = "<!-- inspector: ";
+    let at = readme
+        .find(marker)
+        .expect("README.md has an inspector capture");
+    let rest = &readme[at + marker.len()..];
+    let file = &rest[..rest.find(" -->").unwrap()];
+    let block = rest.split("```text\n").nth(1).unwrap();
+    let block = &block[..block.find("```").unwrap()];
+    let snapshot = std::fs::read_to_string(format!("{root}/{file}")).unwrap();
+    assert!(
+        block == snapshot,
+        "README.md's inspector capture differs from {file} (copy it in after re-blessing)"
+    );
+}

@@ -5,7 +5,9 @@ use std::path::PathBuf;
 
 use anyhow::{Result, bail};
 use raytree::inspector::{self, App};
+use raytree::scene::source;
 use raytree::tree::document;
+use raytree::views::guide;
 
 use crate::args::{SceneArgs, parse_pixel};
 
@@ -19,14 +21,44 @@ pub struct Args {
     /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
     #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "Overrides"])]
     trace: Option<PathBuf>,
+    /// Follow a guided step-through (a lesson's TOML script: its scene, its pixel and its stops; n and p move between stops).
+    #[arg(long, value_name = "FILE.toml", conflicts_with_all = ["scene", "pixel", "trace", "Overrides"])]
+    script: Option<PathBuf>,
+    /// Colors: auto detects 24-bit color (COLORTERM, TERM, known terminals, tmux) and says so when it falls back to 256.
+    #[arg(long, value_enum, default_value_t = ColorMode::Auto)]
+    color: ColorMode,
+}
+
+/// How many colors the terminal draws.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum ColorMode {
+    /// Ask the environment.
+    Auto,
+    /// 24-bit color.
+    Truecolor,
+    /// The 256-color palette.
+    #[value(name = "256")]
+    Palette,
 }
 
 pub fn run(args: &Args) -> Result<()> {
     if !std::io::stdout().is_terminal() {
         bail!("raytree inspect needs a terminal (standard output is not one)");
     }
-    let app = match &args.trace {
-        None => {
+    let mut app = match (&args.trace, &args.script) {
+        (None, Some(path)) => {
+            let script = guide::load(path).map_err(anyhow::Error::msg)?;
+            let (scene, source) = source::load(Some(&script.scene))?;
+            let mut app = App::new(
+                scene,
+                source,
+                Some((script.pixel[0], script.pixel[1])),
+                true,
+            );
+            app.follow(script).map_err(anyhow::Error::msg)?;
+            app
+        }
+        (None, None) => {
             let (scene, source) = args.scene.load()?;
             if let Some((x, y)) = args.pixel {
                 let s = &scene.settings;
@@ -40,7 +72,7 @@ pub fn run(args: &Args) -> Result<()> {
             }
             App::new(scene, source, args.pixel, true)
         }
-        Some(path) => {
+        (Some(path), _) => {
             let trace = document::read(path)?;
             let found = document::find_scene(&trace);
             let changed = matches!(found, Some((_, false)));
@@ -48,8 +80,17 @@ pub fn run(args: &Args) -> Result<()> {
             if changed {
                 app.message = format!("{} changed since the trace was saved", app.source.file);
             }
+            app.loaded_from = Some(path.display().to_string());
             app
         }
     };
+    (app.truecolor, app.color_note) = match args.color {
+        ColorMode::Auto => inspector::color_support(),
+        ColorMode::Truecolor => (true, None),
+        ColorMode::Palette => (false, None),
+    };
+    if let (Some(note), true) = (&app.color_note, app.message.is_empty()) {
+        app.message = note.clone();
+    }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
 }
