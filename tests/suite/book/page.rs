@@ -142,15 +142,20 @@ impl Page<'_> {
                     .get(name)
                     .ok_or_else(|| unknown("figure", spec.figures.keys().collect()))?;
                 self.used.insert(format!("figure {name}"));
+                let caption = self.fill(
+                    &figure.caption,
+                    &format!("{} (figure {name})", self.src.spec_path),
+                    false,
+                )?;
                 let png = run::figure(&figure.command, name, self.scratch)?;
                 let command = format!("{} -o {name}.png", figure.command.text);
                 self.figures
                     .push((format!("{name}.png"), png, command.clone()));
                 let number = self.figures.len();
-                let alt = figure.caption.replace(['[', ']', '\n'], " ");
+                let alt = caption.replace(['[', ']', '\n'], " ");
                 Ok(format!(
                     "![{alt}]({}{name}.png)\n\n**Figure {number}.** {} <br>`{command}`",
-                    self.src.figures, figure.caption
+                    self.src.figures, caption
                 ))
             }
             ("excerpt", Some(name)) => {
