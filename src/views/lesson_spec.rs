@@ -34,6 +34,8 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::views::teacher_file::{self, line_of};
+
 /// A spec file, read and checked: every name it refers to exists.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Spec {
@@ -194,45 +196,19 @@ struct ExerciseFile {
     answer: String,
 }
 
-/// Spec files are a page or two; anything larger is not one.
-const MAX_BYTES: u64 = 1 << 20;
-
 /// Words a text uses for its own directives, so no number may take them.
 pub const RESERVED: &[&str] = &["figure", "excerpt", "steps", "exercises"];
 
 /// Reads a spec file. Errors are one line naming the file and line.
 pub fn load(path: &Path) -> Result<Spec, String> {
-    let at = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
-    if meta.len() > MAX_BYTES {
-        return Err(format!(
-            "{at}: {} bytes; a spec is at most {MAX_BYTES}",
-            meta.len()
-        ));
-    }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))?;
+    let text = teacher_file::read(path, "a spec")?;
     parse(path, &text)
-}
-
-/// The 1-based line of byte offset `at` in `text`.
-pub fn line_of(text: &str, at: usize) -> usize {
-    text.as_bytes()[..at.min(text.len())]
-        .iter()
-        .filter(|&&b| b == b'\n')
-        .count()
-        + 1
 }
 
 /// Parses a spec's text (`path` names it in messages).
 pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
     let at = path.display();
-    let file: SpecFile = toml::from_str(text).map_err(|e| {
-        let message = e.message().replace('\n', " ");
-        match e.span() {
-            Some(s) => format!("{at}: line {}: {}", line_of(text, s.start), message.trim()),
-            None => format!("{at}: {}", message.trim()),
-        }
-    })?;
+    let file: SpecFile = teacher_file::parse(path, text)?;
     let line = |s: std::ops::Range<usize>| line_of(text, s.start);
     let fail = |l: usize, what: String| format!("{at}: line {l}: {what}");
     for name in file

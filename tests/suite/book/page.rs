@@ -108,7 +108,7 @@ impl Page<'_> {
         while let Some(i) = rest.find("{{") {
             out.push_str(&rest[..i]);
             let line = text.len() - rest.len() + i;
-            let line = raytree::views::lesson_spec::line_of(text, line);
+            let line = raytree::views::teacher_file::line_of(text, line);
             let fail = |e: String| format!("{at}: line {line}: {e}");
             let end = rest[i..]
                 .find("}}")
