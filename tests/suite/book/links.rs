@@ -9,12 +9,12 @@ use std::path::{Path, PathBuf};
 
 use super::run::root;
 
-fn html_files(dir: &Path, out: &mut Vec<PathBuf>) {
+fn files_with(dir: &Path, extension: &str, out: &mut Vec<PathBuf>) {
     for entry in std::fs::read_dir(dir).unwrap().flatten() {
         let p = entry.path();
         if p.is_dir() {
-            html_files(&p, out);
-        } else if p.extension().is_some_and(|e| e == "html") {
+            files_with(&p, extension, out);
+        } else if p.extension().is_some_and(|e| e == extension) {
             out.push(p);
         }
     }
@@ -44,12 +44,35 @@ fn external(link: &str) -> bool {
 /// Every broken link of the built book, as `page: link (why)`.
 fn broken(book: &Path) -> Vec<String> {
     let mut pages = Vec::new();
-    html_files(book, &mut pages);
+    files_with(book, "html", &mut pages);
     let texts: BTreeMap<PathBuf, String> = pages
         .iter()
         .map(|p| (p.clone(), std::fs::read_to_string(p).unwrap()))
         .collect();
     let mut out = Vec::new();
+    let mut shown = std::collections::BTreeSet::new();
+    for (page, html) in &texts {
+        let links = attributes(html, "src")
+            .into_iter()
+            .chain(attributes(html, "href"));
+        for src in links.filter(|l| !external(l)) {
+            if let Ok(p) = page.parent().unwrap().join(src).canonicalize() {
+                shown.insert(p);
+            }
+        }
+    }
+    // A figure swallowed by a badly closed code block is no broken link, but
+    // it is shown nowhere.
+    let mut pngs = Vec::new();
+    files_with(book, "png", &mut pngs);
+    for png in pngs {
+        if !shown.contains(&png.canonicalize().unwrap()) {
+            out.push(format!(
+                "{}: shown on no page",
+                png.strip_prefix(book).unwrap().display()
+            ));
+        }
+    }
     for (page, html) in &texts {
         // The 404 page is served from the site's root, whatever the address.
         if page.file_name().is_some_and(|n| n == "404.html") {
@@ -113,6 +136,7 @@ fn the_link_check_finds_a_missing_image_and_anchor() {
     let dir = tempfile::tempdir().unwrap();
     std::fs::create_dir(dir.path().join("a")).unwrap();
     std::fs::write(dir.path().join("a/x.png"), "").unwrap();
+    std::fs::write(dir.path().join("a/lost.png"), "").unwrap();
     std::fs::write(
         dir.path().join("a/page.html"),
         "<h2 id=\"here\"></h2><img src=\"x.png\"><img src=\"y.png\"><a href=\"#here\"></a>\
@@ -124,6 +148,7 @@ fn the_link_check_finds_a_missing_image_and_anchor() {
     assert_eq!(
         found,
         [
+            "a/lost.png: shown on no page",
             "a/page.html: ../index.html#gone (no id gone)",
             "a/page.html: y.png (no such file)"
         ]

@@ -115,7 +115,19 @@ impl Page<'_> {
                 .ok_or_else(|| fail("{{ without }}".to_owned()))?;
             let inner = rest[i + 2..i + end].trim().to_owned();
             let made = self.directive(&inner, top).map_err(fail)?;
-            out.push_str(&made);
+            // A block written indented (in a list item) stays indented on every line.
+            let line_start = out.rfind('\n').map_or(0, |n| n + 1);
+            let indent = &out[line_start..];
+            if indent.chars().all(|c| c == ' ') && !indent.is_empty() {
+                let pad = format!("\n{indent}");
+                out.push_str(
+                    &made
+                        .replace('\n', &pad)
+                        .replace(&format!("{pad}\n"), "\n\n"),
+                );
+            } else {
+                out.push_str(&made);
+            }
             rest = &rest[i + end + 2..];
         }
         out.push_str(rest);
