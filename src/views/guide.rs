@@ -25,9 +25,7 @@ use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
 use crate::tree::steps::StepKind;
 use crate::views::numbers::{color, degrees, num, vec3};
-
-/// Scripts are a page of text; anything larger is not one.
-const MAX_BYTES: u64 = 1 << 20;
+use crate::views::teacher_file;
 
 /// A guided step-through, read and checked.
 #[derive(Clone, Debug, PartialEq)]
@@ -75,38 +73,14 @@ struct StopFile {
 /// Reads a script. Errors are one line naming the file (and the line, for a
 /// syntax error or a bad field).
 pub fn load(path: &Path) -> Result<Script, String> {
-    let at = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
-    if !meta.is_file() {
-        return Err(format!("{at}: not a regular file"));
-    }
-    if meta.len() > MAX_BYTES {
-        return Err(format!(
-            "{at}: {} bytes; a script is at most {MAX_BYTES}",
-            meta.len()
-        ));
-    }
-    let text = std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))?;
+    let text = teacher_file::read(path, "a script")?;
     parse(path, &text)
 }
 
 /// Parses a script's text (`path` names it in messages and anchors the scene).
 pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
     let at = path.display();
-    let file: ScriptFile = toml::from_str(text).map_err(|e| {
-        let line = e.span().map(|s| {
-            text.as_bytes()[..s.start.min(text.len())]
-                .iter()
-                .filter(|&&b| b == b'\n')
-                .count()
-                + 1
-        });
-        let message = e.message().replace('\n', " ");
-        match line {
-            Some(l) => format!("{at}: line {l}: {}", message.trim()),
-            None => format!("{at}: {}", message.trim()),
-        }
-    })?;
+    let file: ScriptFile = teacher_file::parse(path, text)?;
     if file.stop.is_empty() {
         return Err(format!(
             "{at}: no [[stop]]: a step-through needs at least one"

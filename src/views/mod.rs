@@ -18,5 +18,8 @@ pub mod diagram_labels; // what a ray diagram labels, and drawing the labels
 pub mod diagram; // a ray diagram as a PNG figure
 pub mod camera_view; // the image plane face-on, with a pixel's place on it
 pub mod object_view; // a transformed sphere's hit in its own space, beside the world
+pub mod teacher_file; // the small TOML files a teacher writes, read with line-numbered errors
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
+pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
+pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod chart; // speed against accuracy as a chart

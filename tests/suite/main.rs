@@ -4,6 +4,7 @@
 
 mod accel;
 mod arithmetic;
+mod book;
 mod architecture;
 mod chart;
 mod cli;

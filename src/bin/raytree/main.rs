@@ -8,6 +8,7 @@ mod diagram;
 mod diff;
 mod generate;
 mod inspect;
+mod lesson;
 mod output;
 mod render;
 mod trace;
@@ -36,6 +37,8 @@ enum Command {
     Inspect(inspect::Args),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
     Chart(chart::Args),
+    /// List the lessons, or print lesson N's guided step-through with the trace's own numbers.
+    Lesson(lesson::Args),
     /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
     Diff(diff::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
@@ -51,6 +54,7 @@ fn main() -> ExitCode {
         Command::Diagram(args) => diagram::run(&args),
         Command::Inspect(args) => inspect::run(&args),
         Command::Chart(args) => chart::run(&args),
+        Command::Lesson(args) => lesson::run(&args),
         Command::Diff(args) => diff::run(&args),
         Command::Generate(args) => generate::run(&args),
     };

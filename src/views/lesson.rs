@@ -1,0 +1,279 @@
+//! The lessons: one folder per lecture topic, `lessons/NN-topic/`, holding the
+//! text (`lesson.md`), its spec ([`crate::views::lesson_spec`]: the commands
+//! behind its figures and numbers, its exercises) and a guided step-through
+//! ([`crate::views::guide`], `steps.toml`). This module finds them, loads one
+//! with its scene, and narrates its step-through against a fresh trace: what
+//! `raytree lesson N` shows and the book prints.
+
+use std::fmt::Write;
+use std::path::{Component, Path, PathBuf};
+
+use crate::scene::Scene;
+use crate::scene::source::{self, SceneSource};
+use crate::tree::document::TraceDocument;
+use crate::tree::record;
+use crate::views::guide::{self, Narration, Script};
+use crate::views::lesson_spec::{self, Spec};
+use crate::views::text;
+
+/// The spec file in a lesson's folder.
+pub const SPEC: &str = "lesson.toml";
+/// The text.
+pub const TEXT: &str = "lesson.md";
+/// The guided step-through.
+pub const STEPS: &str = "steps.toml";
+
+/// A lesson as the list shows it.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Entry {
+    /// Its number, the folder's `NN`.
+    pub number: u32,
+    /// The folder's name, `NN-topic`.
+    pub name: String,
+    /// The folder.
+    pub folder: PathBuf,
+    /// The spec, read and checked.
+    pub spec: Spec,
+}
+
+impl Entry {
+    /// The chapter's title.
+    pub fn title(&self) -> &str {
+        self.spec.title.as_deref().unwrap_or_default()
+    }
+
+    /// One line on what it teaches.
+    pub fn summary(&self) -> &str {
+        self.spec.summary.as_deref().unwrap_or_default()
+    }
+}
+
+/// The number of a lesson folder's name (`03-camera` → 3).
+fn number_of(name: &str) -> Option<u32> {
+    let (nn, topic) = name.split_once('-')?;
+    let topic_ok = !topic.is_empty()
+        && topic
+            .chars()
+            .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-');
+    (nn.len() == 2 && nn.chars().all(|c| c.is_ascii_digit()) && topic_ok)
+        .then(|| nn.parse().ok())
+        .flatten()
+}
+
+/// Every lesson under `dir`, by number. A folder that is not `NN-topic`, two
+/// lessons with one number, or a spec without a title or summary is an error
+/// naming it.
+pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
+    let at = dir.display();
+    let read = std::fs::read_dir(dir).map_err(|e| format!("{at}: {e}"))?;
+    let mut out: Vec<Entry> = Vec::new();
+    for item in read {
+        let item = item.map_err(|e| format!("{at}: {e}"))?;
+        if !item.path().is_dir() {
+            continue;
+        }
+        let name = item.file_name().to_string_lossy().into_owned();
+        let number = number_of(&name).ok_or_else(|| {
+            format!(
+                "{at}/{name}: a lesson folder is NN-topic (two digits, a dash, lowercase words)"
+            )
+        })?;
+        let folder = item.path();
+        let spec_path = folder.join(SPEC);
+        let spec = lesson_spec::load(&spec_path)?;
+        for (field, value) in [("title", &spec.title), ("summary", &spec.summary)] {
+            if value
+                .as_deref()
+                .is_none_or(|v| v.trim().is_empty() || v.contains('\n'))
+            {
+                return Err(format!(
+                    "{}: a lesson needs a one-line {field}",
+                    spec_path.display()
+                ));
+            }
+        }
+        out.push(Entry {
+            number,
+            name,
+            folder,
+            spec,
+        });
+    }
+    out.sort_by_key(|e| e.number);
+    if let Some(w) = out.windows(2).find(|w| w[0].number == w[1].number) {
+        return Err(format!(
+            "{at}: {} and {} have the same number",
+            w[0].name, w[1].name
+        ));
+    }
+    Ok(out)
+}
+
+/// The list as `raytree lesson` prints it: number, title and summary, a line each.
+pub fn list_text(entries: &[Entry]) -> String {
+    let width = entries
+        .iter()
+        .map(|e| e.title().chars().count())
+        .max()
+        .unwrap_or(0);
+    let mut out = String::new();
+    for e in entries {
+        let _ = writeln!(
+            out,
+            "{:>3}  {:<width$}  {}",
+            e.number,
+            e.title(),
+            e.summary()
+        );
+    }
+    out
+}
+
+/// A lesson ready to step through: its spec, its script and the script's scene.
+#[derive(Clone, Debug)]
+pub struct Lesson {
+    /// The lesson.
+    pub entry: Entry,
+    /// The step-through, read and checked.
+    pub script: Script,
+    /// The scene the script follows.
+    pub scene: Scene,
+    /// What names the scene in a trace.
+    pub source: SceneSource,
+}
+
+/// Loads lesson `number` from `dir`: its spec, its step-through script and the
+/// script's scene, each checked. Errors are one line naming the file (and the
+/// line where there is one).
+pub fn load(dir: &Path, number: u32) -> Result<Lesson, String> {
+    let entries = list(dir)?;
+    let Some(entry) = entries.iter().find(|e| e.number == number).cloned() else {
+        let have: Vec<String> = entries.iter().map(|e| e.number.to_string()).collect();
+        return Err(format!(
+            "{}: no lesson {number} (there are: {})",
+            dir.display(),
+            have.join(", ")
+        ));
+    };
+    let mut script = guide::load(&entry.folder.join(STEPS))?;
+    script.scene = tidy(&script.scene);
+    let (scene, source) = source::load(Some(&script.scene))
+        .map_err(|e| format!("{e} (the scene of {})", script.path.display()))?;
+    Ok(Lesson {
+        entry,
+        script,
+        scene,
+        source,
+    })
+}
+
+/// `a/b/../c` → `a/c`, without asking the file system, so traces name a lesson's
+/// scene as a learner would type it from the repository (`scenes/whitted.json`).
+fn tidy(path: &Path) -> PathBuf {
+    let mut out = PathBuf::new();
+    for part in path.components() {
+        match part {
+            Component::CurDir => {}
+            Component::ParentDir
+                if matches!(out.components().next_back(), Some(Component::Normal(_))) =>
+            {
+                out.pop();
+            }
+            other => out.push(other),
+        }
+    }
+    out
+}
+
+/// One stop of a step-through: the step's headline as the trace prints it,
+/// and the script's sentence with its numbers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Stop {
+    /// The step, 1-based.
+    pub step: usize,
+    /// The step's first line in `raytree trace --steps`.
+    pub headline: String,
+    /// The sentence.
+    pub say: String,
+}
+
+/// The step-through made concrete: the pixel's trace and each stop.
+#[derive(Clone, Debug)]
+pub struct StepThrough {
+    /// The trace the stops quote.
+    pub trace: TraceDocument,
+    /// How many steps the traced sample has.
+    pub steps: usize,
+    /// The stops, in order.
+    pub stops: Vec<Stop>,
+}
+
+/// Traces the script's pixel and fills in its stops.
+pub fn step_through(lesson: &Lesson) -> Result<StepThrough, String> {
+    let [x, y] = lesson.script.pixel;
+    let trace = record::pixel(&lesson.scene, lesson.source.clone(), x, y, None)
+        .map_err(|e| format!("{}: {e}", lesson.script.path.display()))?;
+    let told: Vec<Narration> = guide::narrate(&lesson.script, &trace)?;
+    let steps = trace.steps(lesson.script.sample);
+    let stops = told
+        .into_iter()
+        .map(|n| Stop {
+            step: n.step + 1,
+            headline: text::describe(&trace, lesson.script.sample, &steps[n.step]).0,
+            say: n.text,
+        })
+        .collect();
+    Ok(StepThrough {
+        steps: steps.len(),
+        trace,
+        stops,
+    })
+}
+
+/// The step-through as text, as `raytree lesson N` prints it.
+pub fn step_through_text(lesson: &Lesson, walk: &StepThrough) -> String {
+    let [x, y] = lesson.script.pixel;
+    let scene = lesson.script.scene.display();
+    let mut out = String::new();
+    let _ = writeln!(
+        out,
+        "Lesson {}: {}",
+        lesson.entry.number,
+        lesson.entry.title()
+    );
+    let what = lesson.script.title.as_deref().unwrap_or("Step-through");
+    let _ = writeln!(
+        out,
+        "{what}: pixel {x},{y} of {scene}, {} steps; walk them all with `raytree inspect {scene} --pixel {x},{y}`",
+        walk.steps
+    );
+    for stop in &walk.stops {
+        let _ = write!(
+            out,
+            "\nstep {} · {}\n    {}\n",
+            stop.step, stop.headline, stop.say
+        );
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn lesson_folders_are_numbered_topics() {
+        assert_eq!(number_of("03-camera"), Some(3));
+        assert_eq!(number_of("14-postscript-twin"), Some(14));
+        for bad in ["3-camera", "03", "03-", "03-Camera", "x3-camera", "003-a"] {
+            assert_eq!(number_of(bad), None, "{bad}");
+        }
+    }
+
+    #[test]
+    fn paths_are_tidied_as_written() {
+        let p = tidy(Path::new("lessons/03-camera/../../scenes/whitted.json"));
+        assert_eq!(p, Path::new("scenes/whitted.json"));
+        assert_eq!(tidy(Path::new("../a/./b")), Path::new("../a/b"));
+    }
+}

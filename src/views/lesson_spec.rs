@@ -1,0 +1,507 @@
+//! A lesson's spec file (`lesson.toml`, and a book page's `PAGE.toml`): the
+//! raytree commands behind every figure, trace excerpt and number its text
+//! quotes, and its exercises. The book is generated from it and a test checks
+//! the book against fresh output, so nothing a learner reads is typed by hand.
+//! `lessons/README.md` documents the format for writers.
+//!
+//! ```toml
+//! title = "The camera and the image plane"
+//! summary = "eye, u, v, n and the image plane; a pixel's (r, c) → (u_c, v_r) → P(r, c)"
+//!
+//! [run.pixel]      # a raytree command; a `raytree trace` is run with --json
+//! command = "raytree trace scenes/whitted.json --pixel 416,209"
+//!
+//! [figure.camera]  # a raytree command that writes a PNG (the book adds -o)
+//! command = "raytree diagram scenes/whitted.json --pixel 416,209 --view camera"
+//! caption = "The image plane face-on."
+//!
+//! [excerpt.camera] # steps of a trace run (or lines of any other run)
+//! run = "pixel"
+//! steps = [1, 2]
+//!
+//! [number]         # quoted in the text as {{name}}
+//! u_c = { run = "pixel", step = 1, value = "u_c" }   # a step-through name
+//! eye = { run = "pixel", json = "/camera/eye" }      # any field of the trace
+//!
+//! [[exercise]]
+//! task = "Change X; predict Y."
+//! answer = "raytree says {{u_c}}."
+//! ```
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use serde::Deserialize;
+use toml::Spanned;
+
+use crate::views::teacher_file::{self, line_of};
+
+/// A spec file, read and checked: every name it refers to exists.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Spec {
+    /// The chapter's title (required of a lesson).
+    pub title: Option<String>,
+    /// One line on what it teaches (required of a lesson).
+    pub summary: Option<String>,
+    /// Commands whose output numbers and excerpts come from, by name.
+    pub runs: BTreeMap<String, Run>,
+    /// Figures, by name (the file is `NAME.png`).
+    pub figures: BTreeMap<String, Figure>,
+    /// Excerpts of runs' output, by name.
+    pub excerpts: BTreeMap<String, Excerpt>,
+    /// Numbers, by the name the text quotes them with.
+    pub numbers: BTreeMap<String, Number>,
+    /// Exercises, in order.
+    pub exercises: Vec<Exercise>,
+}
+
+/// A raytree command line, as written in the spec and as arguments.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Command {
+    /// As written: `raytree trace scenes/whitted.json --pixel 416,209`.
+    pub text: String,
+    /// The arguments after `raytree`.
+    pub args: Vec<String>,
+}
+
+impl Command {
+    /// Whether it is `raytree trace`: run with `--json`, its numbers named.
+    pub fn is_trace(&self) -> bool {
+        self.args.first().is_some_and(|a| a == "trace")
+    }
+}
+
+/// A command whose output the text quotes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Run {
+    /// The command.
+    pub command: Command,
+    /// Line of the spec file it is defined on.
+    pub line: usize,
+}
+
+/// A figure: a command that writes a PNG, and what it shows.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Figure {
+    /// The command, without `-o`.
+    pub command: Command,
+    /// One or two sentences under the figure.
+    pub caption: String,
+    /// Line of the spec file.
+    pub line: usize,
+}
+
+/// Part of a run's output, shown as a code block.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Excerpt {
+    /// The run's name.
+    pub run: String,
+    /// First and last step (of a trace, as `raytree trace --steps` numbers
+    /// them) or line (of any other run's output), 1-based; all when `None`.
+    pub range: Option<(usize, usize)>,
+    /// Line of the spec file.
+    pub line: usize,
+}
+
+/// Where a number comes from.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Source {
+    /// A name the step-through scripts use (`views::guide::values`) at a step of a trace.
+    Step {
+        /// The step, 1-based.
+        step: usize,
+        /// The name, e.g. `u_c`, `discriminant`, `theta1`.
+        value: String,
+    },
+    /// A field of the trace document, by JSON pointer (`/camera/eye`).
+    Json(String),
+    /// The word after this text in a run's output.
+    After(String),
+}
+
+/// A number the text quotes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Number {
+    /// The run's name.
+    pub run: String,
+    /// Where in its output.
+    pub source: Source,
+    /// Line of the spec file.
+    pub line: usize,
+}
+
+/// "Change X and predict Y", with an answer raytree computes.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Exercise {
+    /// What to change and what to predict (Markdown).
+    pub task: String,
+    /// The answer (Markdown quoting numbers, figures or excerpts).
+    pub answer: String,
+    /// Line of the spec file.
+    pub line: usize,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SpecFile {
+    title: Option<String>,
+    summary: Option<String>,
+    #[serde(default)]
+    run: BTreeMap<String, Spanned<RunFile>>,
+    #[serde(default)]
+    figure: BTreeMap<String, Spanned<FigureFile>>,
+    #[serde(default)]
+    excerpt: BTreeMap<String, Spanned<ExcerptFile>>,
+    #[serde(default)]
+    number: BTreeMap<String, Spanned<NumberFile>>,
+    #[serde(default)]
+    exercise: Vec<Spanned<ExerciseFile>>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RunFile {
+    command: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct FigureFile {
+    command: String,
+    caption: String,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ExcerptFile {
+    run: String,
+    steps: Option<[usize; 2]>,
+    lines: Option<[usize; 2]>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct NumberFile {
+    run: String,
+    step: Option<usize>,
+    value: Option<String>,
+    json: Option<String>,
+    after: Option<String>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ExerciseFile {
+    task: String,
+    answer: String,
+}
+
+/// Words a text uses for its own directives, so no number may take them.
+pub const RESERVED: &[&str] = &["figure", "excerpt", "steps", "exercises"];
+
+/// Reads a spec file. Errors are one line naming the file and line.
+pub fn load(path: &Path) -> Result<Spec, String> {
+    let text = teacher_file::read(path, "a spec")?;
+    parse(path, &text)
+}
+
+/// Parses a spec's text (`path` names it in messages).
+pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
+    let at = path.display();
+    let file: SpecFile = teacher_file::parse(path, text)?;
+    let line = |s: std::ops::Range<usize>| line_of(text, s.start);
+    let fail = |l: usize, what: String| format!("{at}: line {l}: {what}");
+    for name in file
+        .run
+        .keys()
+        .chain(file.figure.keys())
+        .chain(file.excerpt.keys())
+    {
+        check_name(name, false).map_err(|e| format!("{at}: {e}"))?;
+    }
+    for name in file.number.keys() {
+        check_name(name, true).map_err(|e| format!("{at}: {e}"))?;
+    }
+    let mut runs = BTreeMap::new();
+    for (name, r) in &file.run {
+        let l = line(r.span());
+        let command = command(&r.get_ref().command, false)
+            .map_err(|e| fail(l, format!("run {name}: {e}")))?;
+        runs.insert(name.clone(), Run { command, line: l });
+    }
+    let mut figures = BTreeMap::new();
+    for (name, f) in &file.figure {
+        let l = line(f.span());
+        let command = command(&f.get_ref().command, true)
+            .map_err(|e| fail(l, format!("figure {name}: {e}")))?;
+        let caption = f.get_ref().caption.trim().to_owned();
+        figures.insert(
+            name.clone(),
+            Figure {
+                command,
+                caption,
+                line: l,
+            },
+        );
+    }
+    let run_of = |what: &str, run: &str, l: usize| -> Result<&Run, String> {
+        runs.get(run).ok_or_else(|| {
+            let have: Vec<&str> = runs.keys().map(String::as_str).collect();
+            fail(
+                l,
+                format!("{what}: no run '{run}' (runs: {})", have.join(", ")),
+            )
+        })
+    };
+    let mut excerpts = BTreeMap::new();
+    for (name, x) in &file.excerpt {
+        let l = line(x.span());
+        let x = x.get_ref();
+        let run = run_of(&format!("excerpt {name}"), &x.run, l)?;
+        let range = match (run.command.is_trace(), x.steps, x.lines) {
+            (_, Some(_), Some(_)) => {
+                return Err(fail(l, format!("excerpt {name}: steps or lines, not both")));
+            }
+            (true, _, Some(_)) => {
+                return Err(fail(
+                    l,
+                    format!("excerpt {name}: a trace is cut by steps, not lines"),
+                ));
+            }
+            (false, Some(_), _) => {
+                return Err(fail(
+                    l,
+                    format!(
+                        "excerpt {name}: only a trace has steps; cut run '{}' by lines",
+                        x.run
+                    ),
+                ));
+            }
+            (_, s, ls) => s.or(ls),
+        };
+        if let Some([a, b]) = range
+            && (a == 0 || b < a)
+        {
+            return Err(fail(
+                l,
+                format!("excerpt {name}: [{a}, {b}] is not a range counted from 1"),
+            ));
+        }
+        excerpts.insert(
+            name.clone(),
+            Excerpt {
+                run: x.run.clone(),
+                range: range.map(|[a, b]| (a, b)),
+                line: l,
+            },
+        );
+    }
+    let mut numbers = BTreeMap::new();
+    for (name, n) in &file.number {
+        let l = line(n.span());
+        let n = n.get_ref();
+        let run = run_of(&format!("number {name}"), &n.run, l)?;
+        let source = source(n, run.command.is_trace())
+            .map_err(|e| fail(l, format!("number {name}: {e}")))?;
+        numbers.insert(
+            name.clone(),
+            Number {
+                run: n.run.clone(),
+                source,
+                line: l,
+            },
+        );
+    }
+    let exercises = file
+        .exercise
+        .iter()
+        .map(|e| Exercise {
+            task: e.get_ref().task.trim().to_owned(),
+            answer: e.get_ref().answer.trim().to_owned(),
+            line: line(e.span()),
+        })
+        .collect();
+    Ok(Spec {
+        title: file.title,
+        summary: file.summary,
+        runs,
+        figures,
+        excerpts,
+        numbers,
+        exercises,
+    })
+}
+
+/// Names are what the text writes between braces and what files are called:
+/// letters, digits, `_` and `-` (and `.` for numbers, as in `n_dot_l.key`).
+fn check_name(name: &str, number: bool) -> Result<(), String> {
+    let ok = |c: char| c.is_ascii_alphanumeric() || c == '_' || c == '-' || (number && c == '.');
+    if name.is_empty() || !name.chars().all(ok) {
+        return Err(format!(
+            "'{name}' is not a name: use letters, digits, _ and -"
+        ));
+    }
+    if number && RESERVED.contains(&name) {
+        return Err(format!(
+            "'{name}' is a directive of the text; call the number something else"
+        ));
+    }
+    Ok(())
+}
+
+/// Splits `raytree ARGS…` into arguments. The book adds the output options,
+/// so a command may not give them.
+fn command(text: &str, figure: bool) -> Result<Command, String> {
+    if text.contains(['"', '\'', '\\', '|', '>', '<', ';', '&', '$', '`']) {
+        return Err(format!(
+            "'{text}': plain words only (no quotes or shell syntax)"
+        ));
+    }
+    let mut words = text.split_whitespace().map(str::to_owned);
+    if words.next().as_deref() != Some("raytree") {
+        return Err(format!("'{text}' does not start with raytree"));
+    }
+    let args: Vec<String> = words.collect();
+    if args.is_empty() {
+        return Err("no command after raytree".to_owned());
+    }
+    let given = |flag: &str| {
+        args.iter()
+            .any(|a| a == flag || a.starts_with(&format!("{flag}=")))
+    };
+    if given("-o") || given("--output") {
+        return Err(format!("'{text}': leave out -o; the book names the output"));
+    }
+    if !figure && args[0] == "trace" && (given("--json") || given("--steps")) {
+        return Err(format!(
+            "'{text}': leave out --json and --steps; the book adds them"
+        ));
+    }
+    Ok(Command {
+        text: text.split_whitespace().collect::<Vec<_>>().join(" "),
+        args,
+    })
+}
+
+fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
+    match (&n.step, &n.value, &n.json, &n.after) {
+        (Some(0), ..) => Err("steps count from 1".to_owned()),
+        (Some(step), Some(value), None, None) if trace => Ok(Source::Step {
+            step: *step,
+            value: value.clone(),
+        }),
+        (None, None, Some(json), None) if trace => {
+            if json.starts_with('/') {
+                Ok(Source::Json(json.clone()))
+            } else {
+                Err(format!(
+                    "json = '{json}' is not a JSON pointer (it starts with /)"
+                ))
+            }
+        }
+        (None, None, None, Some(after)) if !trace => Ok(Source::After(after.clone())),
+        _ if trace => Err("a trace's number is step + value, or json".to_owned()),
+        _ => Err("a number from a run other than a trace is after = \"text before it\"".to_owned()),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn spec(text: &str) -> Result<Spec, String> {
+        parse(Path::new("lessons/03-x/lesson.toml"), text)
+    }
+
+    #[test]
+    fn a_spec_reads_with_every_kind_of_entry() {
+        let s = spec(
+            "title = \"T\"\n[run.p]\ncommand = \"raytree trace  scenes/w.json --pixel 1,2\"\n\
+             [run.h]\ncommand = \"raytree --help\"\n\
+             [figure.f]\ncommand = \"raytree diagram scenes/w.json --pixel 1,2\"\ncaption = \" A. \"\n\
+             [excerpt.x]\nrun = \"p\"\nsteps = [1, 2]\n\
+             [number]\nu = { run = \"p\", step = 1, value = \"u_c\" }\n\
+             e = { run = \"p\", json = \"/camera/eye\" }\nv = { run = \"h\", after = \"Usage:\" }\n\
+             [[exercise]]\ntask = \"t\"\nanswer = \"{{u}}\"\n",
+        )
+        .unwrap();
+        assert_eq!(
+            s.runs["p"].command.args,
+            ["trace", "scenes/w.json", "--pixel", "1,2"]
+        );
+        assert_eq!(
+            s.runs["p"].command.text,
+            "raytree trace scenes/w.json --pixel 1,2"
+        );
+        assert!(s.runs["p"].command.is_trace() && !s.runs["h"].command.is_trace());
+        assert_eq!(s.figures["f"].caption, "A.");
+        assert_eq!(s.excerpts["x"].range, Some((1, 2)));
+        assert_eq!(
+            s.numbers["u"].source,
+            Source::Step {
+                step: 1,
+                value: "u_c".into()
+            }
+        );
+        assert_eq!(s.numbers["e"].source, Source::Json("/camera/eye".into()));
+        assert_eq!(s.numbers["v"].source, Source::After("Usage:".into()));
+        assert_eq!(s.numbers["u"].line, 13);
+        assert_eq!(s.exercises[0].line, 16);
+    }
+
+    #[test]
+    fn bad_specs_are_one_line_naming_file_and_line() {
+        let run = "[run.p]\ncommand = \"raytree trace a.json --pixel 1,2\"\n";
+        let cases = [
+            (
+                "titel = 1\n",
+                "lessons/03-x/lesson.toml: line 1: unknown field `titel`",
+            ),
+            (
+                &format!("{run}[number]\nu = {{ run = \"q\", step = 1, value = \"u_c\" }}\n"),
+                "line 4: number u: no run 'q' (runs: p)",
+            ),
+            (
+                &format!("{run}[number]\nu = {{ run = \"p\", after = \"x\" }}\n"),
+                "line 4: number u: a trace's number is step + value, or json",
+            ),
+            (
+                &format!("{run}[number]\nsteps = {{ run = \"p\", json = \"/x\" }}\n"),
+                "'steps' is a directive",
+            ),
+            (
+                &format!("{run}[excerpt.x]\nrun = \"p\"\nlines = [1, 2]\n"),
+                "line 3: excerpt x: a trace is cut by steps",
+            ),
+            (
+                &format!("{run}[excerpt.x]\nrun = \"p\"\nsteps = [3, 2]\n"),
+                "[3, 2] is not a range",
+            ),
+            (
+                "[run.p]\ncommand = \"cargo run\"\n",
+                "line 1: run p: 'cargo run' does not start with raytree",
+            ),
+            (
+                "[run.p]\ncommand = \"raytree trace a.json --pixel 1,2 --json\"\n",
+                "leave out --json",
+            ),
+            (
+                "[figure.f]\ncommand = \"raytree diagram a.json -o x.png\"\ncaption = \"\"\n",
+                "leave out -o",
+            ),
+            (
+                "[figure.f]\ncommand = \"raytree diagram 'a b.json'\"\ncaption = \"\"\n",
+                "plain words only",
+            ),
+            (
+                "[figure.\"a b\"]\ncommand = \"raytree diagram\"\ncaption = \"\"\n",
+                "'a b' is not a name",
+            ),
+        ];
+        for (text, want) in cases {
+            let e = spec(text).unwrap_err();
+            assert!(e.contains(want), "{e:?} should contain {want:?}");
+            assert!(!e.contains('\n'), "{e:?} is more than one line");
+        }
+    }
+}

@@ -1,0 +1,217 @@
+//! The whole book made from its sources: a chapter per lesson (`lessons/`),
+//! the pages in `book/pages/` (text and spec, like a lesson's), the command
+//! reference from the binary's own help, the scene format from
+//! `scenes/README.md`, and the table of contents listing what exists.
+
+use std::fmt::Write;
+use std::path::Path;
+
+use raytree::views::{lesson, lesson_spec};
+
+use super::page::{self, Input, Quoted};
+use super::run;
+
+/// A file the book is made of.
+pub struct File {
+    /// Relative to the repository.
+    pub path: String,
+    /// What it holds.
+    pub content: Content,
+    /// What it is made from, for messages.
+    pub origin: String,
+    /// The numbers a chapter quotes.
+    pub numbers: Vec<Quoted>,
+    /// The blocks a chapter shows, named.
+    pub blocks: Vec<(String, String)>,
+}
+
+pub enum Content {
+    Text(String),
+    Png(Vec<u8>),
+}
+
+/// The folders the book's generation owns: every file in them is made by it.
+pub const OWNED: &[&str] = &["book/src/lessons", "book/src/figures"];
+
+/// Book pages: `book/pages/NAME.md` and `NAME.toml`, made into `book/src/NAME.md`.
+const PAGES: &[(&str, &str)] = &[("preface", "Preface: reading a trace and a diagram")];
+
+fn text(path: &str, text: String, origin: &str) -> File {
+    File {
+        path: path.to_owned(),
+        content: Content::Text(text),
+        origin: origin.to_owned(),
+        numbers: Vec::new(),
+        blocks: Vec::new(),
+    }
+}
+
+/// The line every generated page starts with.
+fn generated_from(what: &str) -> String {
+    format!(
+        "<!-- Made from {what} by `RAYTREE_BLESS=1 cargo test --release book`: edit that, not this file. -->\n\n"
+    )
+}
+
+/// Makes every file of the book.
+pub fn book() -> Result<Vec<File>, String> {
+    let scratch = tempfile::tempdir().map_err(|e| e.to_string())?;
+    let mut files = Vec::new();
+    let entries = lesson::list(&run::root().join("lessons"))?;
+    for entry in &entries {
+        let loaded = lesson::load(&run::root().join("lessons"), entry.number)?;
+        let walk = lesson::step_through(&loaded)?;
+        let folder = format!("lessons/{}", entry.name);
+        let input = Input {
+            text: &format!("{folder}/{}", lesson::TEXT),
+            spec_path: &format!("{folder}/{}", lesson::SPEC),
+            spec: &entry.spec,
+            figures: &format!("{}/", entry.name),
+            lesson: Some((entry.number, &walk)),
+        };
+        let heading = format!("# Lesson {}: {}\n\n", entry.number, entry.title());
+        chapter(
+            &input,
+            &format!("book/src/lessons/{}", entry.name),
+            &heading,
+            scratch.path(),
+            &mut files,
+        )?;
+    }
+    for (name, _) in PAGES {
+        let spec_path = format!("book/pages/{name}.toml");
+        let spec = lesson_spec::load(&run::root().join(&spec_path))?;
+        let input = Input {
+            text: &format!("book/pages/{name}.md"),
+            spec_path: &spec_path,
+            spec: &spec,
+            figures: &format!("figures/{name}/"),
+            lesson: None,
+        };
+        chapter(
+            &input,
+            &format!("book/src/{name}"),
+            "",
+            scratch.path(),
+            &mut files,
+        )?;
+    }
+    files.push(text(
+        "book/src/commands.md",
+        commands()?,
+        "the binary's --help",
+    ));
+    files.push(text(
+        "book/src/scene-format.md",
+        scene_format()?,
+        "scenes/README.md",
+    ));
+    files.push(text(
+        "book/src/SUMMARY.md",
+        summary(&entries),
+        "the lessons and pages",
+    ));
+    Ok(files)
+}
+
+/// A chapter `out.md` with its figures; `book/src/NAME` puts figures in
+/// `book/src/figures/NAME/` and lessons' in `book/src/lessons/NAME/`.
+fn chapter(
+    input: &Input,
+    out: &str,
+    heading: &str,
+    scratch: &Path,
+    files: &mut Vec<File>,
+) -> Result<(), String> {
+    let made = page::make(input, scratch)?;
+    let origin = format!("{} and {}", input.text, input.spec_path);
+    let figure_dir = match out.strip_prefix("book/src/lessons/") {
+        Some(_) => out.to_owned(),
+        None => format!("book/src/figures/{}", out.trim_start_matches("book/src/")),
+    };
+    for (name, png, command) in made.figures {
+        files.push(File {
+            path: format!("{figure_dir}/{name}"),
+            content: Content::Png(png),
+            origin: format!("`{command}`"),
+            numbers: Vec::new(),
+            blocks: Vec::new(),
+        });
+    }
+    files.push(File {
+        path: format!("{out}.md"),
+        content: Content::Text(format!(
+            "{}{heading}{}",
+            generated_from(&origin),
+            made.text.trim_start()
+        )),
+        origin,
+        numbers: made.numbers,
+        blocks: made.blocks,
+    });
+    Ok(())
+}
+
+/// The command reference: `raytree --help` and each command's `--help`.
+fn commands() -> Result<String, String> {
+    let help = |args: &[&str]| -> Result<String, String> {
+        let args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
+        Ok(String::from_utf8_lossy(&run::raytree(&args)?).into_owned())
+    };
+    let top = help(&["--help"])?;
+    let mut out = generated_from("the binary's own `--help`");
+    out.push_str(
+        "# Commands\n\nEvery command and flag, as the binary you built explains them (`raytree --help`, \
+         `raytree COMMAND --help`): this page is made from that help, so it cannot drift from the program.\n\n",
+    );
+    let _ = write!(out, "## raytree\n\n```text\n{}```\n", top);
+    let names: Vec<&str> = top
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|n| *n != "help")
+        .collect();
+    if names.is_empty() {
+        return Err("raytree --help lists no commands".to_owned());
+    }
+    for name in names {
+        let _ = write!(
+            out,
+            "\n## raytree {name}\n\n```text\n{}```\n",
+            help(&[name, "--help"])?
+        );
+    }
+    Ok(out)
+}
+
+/// The scene format, from the file that documents it beside the scenes.
+fn scene_format() -> Result<String, String> {
+    let readme = std::fs::read_to_string(run::root().join("scenes/README.md"))
+        .map_err(|e| format!("scenes/README.md: {e}"))?;
+    Ok(format!("{}{readme}", generated_from("`scenes/README.md`")))
+}
+
+/// The table of contents: the preface, the lessons that exist, where next,
+/// and the appendices.
+fn summary(entries: &[lesson::Entry]) -> String {
+    let mut out = generated_from("the lessons in `lessons/`");
+    out.push_str("# Summary\n\n");
+    for (name, title) in PAGES {
+        let _ = writeln!(out, "[{title}]({name}.md)\n");
+    }
+    out.push_str("# Lessons\n\n");
+    for e in entries {
+        let _ = writeln!(
+            out,
+            "- [{}. {}](lessons/{}.md)",
+            e.number,
+            e.title(),
+            e.name
+        );
+    }
+    out.push_str("- [Where next](where-next.md)\n\n# Appendices\n\n");
+    out.push_str("- [Commands](commands.md)\n- [Scene files](scene-format.md)\n- [The trace format](trace-format.md)\n");
+    out
+}

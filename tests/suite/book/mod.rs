@@ -1,0 +1,136 @@
+//! The lessons and the book. The book (`book/src/`) is made from the lessons
+//! (`lessons/`) and the pages in `book/pages/` by running the raytree commands
+//! their specs name; the made files are committed, and `book_is_current`
+//! makes them afresh and names every figure, number, excerpt or page that
+//! differs. After an intended change:
+//! `RAYTREE_BLESS=1 cargo test --release book`, then read the diff and look at
+//! the figures. `lessons/README.md` explains the format.
+
+mod check;
+mod links;
+mod make;
+mod page;
+mod run;
+
+use std::process::Command;
+
+use raytree::views::lesson;
+
+#[test]
+fn book_is_current() {
+    let files = make::book().unwrap_or_else(|e| panic!("{e}"));
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        check::bless(&files);
+        return;
+    }
+    let stale = check::stale(&files);
+    assert!(
+        stale.is_empty(),
+        "the book is stale; regenerate it with `RAYTREE_BLESS=1 cargo test --release book` and read the diff:\n{}",
+        stale.join("\n")
+    );
+}
+
+#[test]
+fn every_lesson_loads_and_its_step_through_narrates() {
+    let dir = run::root().join("lessons");
+    let entries = lesson::list(&dir).unwrap_or_else(|e| panic!("{e}"));
+    assert!(!entries.is_empty(), "no lessons in lessons/");
+    for e in &entries {
+        let loaded = lesson::load(&dir, e.number).unwrap_or_else(|e| panic!("{e}"));
+        let walk = lesson::step_through(&loaded).unwrap_or_else(|e| panic!("{e}"));
+        assert!(!walk.stops.is_empty(), "{}: no stops", e.name);
+        for stop in &walk.stops {
+            assert!(
+                !stop.say.contains('{') && !stop.headline.is_empty(),
+                "{}: step {} narrates {:?}",
+                e.name,
+                stop.step,
+                stop.say
+            );
+        }
+    }
+}
+
+fn raytree(args: &[&str]) -> (bool, String, String) {
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(run::root())
+        .output()
+        .unwrap();
+    (
+        out.status.success(),
+        String::from_utf8(out.stdout).unwrap(),
+        String::from_utf8(out.stderr).unwrap(),
+    )
+}
+
+#[test]
+fn raytree_lesson_lists_the_lessons_and_steps_through_one() {
+    let (ok, list, _) = raytree(&["lesson"]);
+    assert!(ok);
+    let entries = lesson::list(&run::root().join("lessons")).unwrap();
+    for e in &entries {
+        let line = list
+            .lines()
+            .find(|l| l.trim_start().starts_with(&format!("{} ", e.number)));
+        let line = line.unwrap_or_else(|| panic!("no line for lesson {}:\n{list}", e.number));
+        assert!(
+            line.contains(e.title()) && line.contains(e.summary()),
+            "{line}"
+        );
+    }
+    let (ok, text, _) = raytree(&["lesson", "3"]);
+    assert!(ok);
+    assert!(
+        text.starts_with("Lesson 3: The camera and the image plane\n"),
+        "{text}"
+    );
+    assert!(text.contains("\nstep 1 · camera: pixel "), "{text}");
+
+    let (ok, _, err) = raytree(&["lesson", "99"]);
+    assert!(!ok);
+    let numbers: Vec<String> = entries.iter().map(|e| e.number.to_string()).collect();
+    let want = format!(
+        "error: lessons: no lesson 99 (there are: {})\n",
+        numbers.join(", ")
+    );
+    assert_eq!(err, want);
+    let (ok, _, err) = raytree(&["lesson", "--lessons", "no/such/dir"]);
+    assert!(!ok && err.contains("no/such/dir: no such folder"), "{err}");
+}
+
+#[test]
+fn a_broken_lesson_is_one_line_naming_file_and_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let lesson = dir.path().join("07-light");
+    std::fs::create_dir(&lesson).unwrap();
+    std::fs::write(
+        lesson.join("lesson.toml"),
+        "title = \"Light\"\nsummary = \"s\"\n[number]\nx = { run = \"nope\", json = \"/a\" }\n",
+    )
+    .unwrap();
+    let dir_arg = dir.path().display().to_string();
+    let (ok, _, err) = raytree(&["lesson", "--lessons", &dir_arg]);
+    assert!(!ok);
+    assert!(
+        err.contains("07-light/lesson.toml: line 4: number x: no run 'nope'"),
+        "{err}"
+    );
+    std::fs::write(
+        lesson.join("lesson.toml"),
+        "title = \"Light\"\nsummary = \"s\"\n",
+    )
+    .unwrap();
+    std::fs::write(
+        lesson.join("steps.toml"),
+        "scene = \"x.json\"\npixel = [1, 2]\n[[stop]]\nstep = 1\nsay = \"{nope}\"\n",
+    )
+    .unwrap();
+    let (ok, _, err) = raytree(&["lesson", "--lessons", &dir_arg, "7"]);
+    assert!(
+        !ok && err.contains("x.json") && err.contains("steps.toml"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+}

@@ -1,0 +1,185 @@
+//! Running the spec's raytree commands: the real binary, in the repository,
+//! exactly as a learner would type them.
+
+use std::collections::BTreeMap;
+use std::path::Path;
+use std::process::Command as Process;
+
+use raytree::tree::document::TraceDocument;
+use raytree::views::guide;
+use raytree::views::lesson_spec::{Command, Number, Run, Source, Spec};
+use raytree::views::numbers::{num, vec3};
+use raytree::views::text;
+use serde_json::Value;
+
+/// The repository: commands run here, paths are relative to it.
+pub fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs `raytree ARGS` and returns its standard output. Help text is wrapped
+/// at 100 columns whatever the terminal, so the book does not depend on it.
+pub fn raytree(args: &[String]) -> Result<Vec<u8>, String> {
+    let out = Process::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(root())
+        .env("COLUMNS", "100")
+        .env_remove("NO_COLOR")
+        .output()
+        .map_err(|e| format!("cannot run raytree: {e}"))?;
+    if !out.status.success() {
+        return Err(format!(
+            "`raytree {}` failed: {}",
+            args.join(" "),
+            String::from_utf8_lossy(&out.stderr).trim()
+        ));
+    }
+    Ok(out.stdout)
+}
+
+/// What a run gave: a trace document (and its text, as `trace --steps` prints
+/// it), or plain text.
+pub enum Output {
+    Trace(Box<TraceDocument>, String),
+    Text(String),
+}
+
+/// Runs every run of a spec.
+pub fn runs(spec: &Spec) -> Result<BTreeMap<String, Output>, String> {
+    spec.runs
+        .iter()
+        .map(|(name, run)| Ok((name.clone(), output(run)?)))
+        .collect()
+}
+
+fn output(run: &Run) -> Result<Output, String> {
+    let Command { args, .. } = &run.command;
+    if run.command.is_trace() {
+        let mut with_json = args.clone();
+        with_json.push("--json".to_owned());
+        let bytes = raytree(&with_json)?;
+        let doc: TraceDocument = serde_json::from_slice(&bytes)
+            .map_err(|e| format!("`{}`: not a trace: {e}", run.command.text))?;
+        let text = text::format(&doc, true);
+        Ok(Output::Trace(Box::new(doc), text))
+    } else {
+        let bytes = raytree(args)?;
+        Ok(Output::Text(String::from_utf8_lossy(&bytes).into_owned()))
+    }
+}
+
+/// A figure's PNG, made by its command with `-o` into `scratch`.
+pub fn figure(command: &Command, name: &str, scratch: &Path) -> Result<Vec<u8>, String> {
+    let path = scratch.join(format!("{name}.png"));
+    let mut args = command.args.clone();
+    args.extend(["-o".to_owned(), path.display().to_string()]);
+    raytree(&args)?;
+    std::fs::read(&path).map_err(|e| format!("`{}` wrote no figure: {e}", command.text))
+}
+
+/// A number's value, written as the trace writes numbers.
+pub fn number(n: &Number, out: &Output) -> Result<String, String> {
+    match (&n.source, out) {
+        (Source::Step { step, value }, Output::Trace(doc, _)) => {
+            let count = doc.steps(0).len();
+            if *step > count {
+                return Err(format!("step {step} is past the trace's {count} steps"));
+            }
+            let names = guide::values(doc, 0, step - 1);
+            names.get(value).cloned().ok_or_else(|| {
+                let have: Vec<&str> = names.keys().map(String::as_str).collect();
+                format!("step {step} has no {value}; it has {}", have.join(", "))
+            })
+        }
+        (Source::Json(pointer), Output::Trace(doc, _)) => {
+            let value = serde_json::to_value(doc.as_ref()).map_err(|e| e.to_string())?;
+            let found = value
+                .pointer(pointer)
+                .ok_or_else(|| format!("the trace has no {pointer}"))?;
+            json_number(found)
+                .ok_or_else(|| format!("{pointer} is {found}: not a number, a vector or a word"))
+        }
+        (Source::After(before), Output::Text(text)) => {
+            let at = text
+                .find(before.as_str())
+                .ok_or_else(|| format!("the output has no '{before}'"))?;
+            let word: String = text[at + before.len()..]
+                .trim_start()
+                .chars()
+                .take_while(|c| !c.is_whitespace() && !",;()".contains(*c))
+                .collect();
+            let word = word.trim_end_matches('.').to_owned();
+            if word.is_empty() {
+                Err(format!("nothing follows '{before}'"))
+            } else {
+                Ok(word)
+            }
+        }
+        _ => Err("the spec checked this pairing; it cannot happen".to_owned()),
+    }
+}
+
+fn json_number(v: &Value) -> Option<String> {
+    match v {
+        Value::Number(n) if n.is_u64() || n.is_i64() => Some(n.to_string()),
+        Value::Number(n) => n.as_f64().map(num),
+        Value::String(s) => Some(s.clone()),
+        Value::Bool(b) => Some(b.to_string()),
+        Value::Array(a) if a.len() == 3 => {
+            let xyz: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
+            xyz.map(|v| vec3(glam::DVec3::new(v[0], v[1], v[2])))
+        }
+        _ => None,
+    }
+}
+
+/// Steps `from..=to` of a trace's text (`raytree trace --steps`), or the whole
+/// text; `⋮` marks the steps left out.
+pub fn trace_steps(text: &str, range: Option<(usize, usize)>) -> Result<String, String> {
+    let Some((from, to)) = range else {
+        return Ok(text.to_owned());
+    };
+    let mut out = String::new();
+    let mut current = 0;
+    let mut last = 0;
+    for line in text.lines() {
+        if let Some(n) = step_number(line) {
+            current = n;
+            last = n;
+        }
+        // Before step 1 come the trace's header lines: they belong to step 1's excerpt.
+        if (from..=to).contains(&current.max(1)) {
+            out.push_str(line);
+            out.push('\n');
+        }
+    }
+    if to > last {
+        return Err(format!("steps {from} to {to}, but the trace has {last}"));
+    }
+    let before = if from > 1 { "     ⋮\n" } else { "" };
+    let after = if to < last { "     ⋮\n" } else { "" };
+    Ok(format!("{before}{out}{after}"))
+}
+
+/// The number of a line that starts a step (`  12. …`).
+fn step_number(line: &str) -> Option<usize> {
+    let (head, _) = line.split_once(". ")?;
+    (head.len() == 4)
+        .then(|| head.trim_start().parse().ok())
+        .flatten()
+}
+
+/// Lines `from..=to` of a text.
+pub fn text_lines(text: &str, range: Option<(usize, usize)>) -> Result<String, String> {
+    let Some((from, to)) = range else {
+        return Ok(text.to_owned());
+    };
+    let lines: Vec<&str> = text.lines().collect();
+    if to > lines.len() {
+        return Err(format!(
+            "lines {from} to {to}, but the output has {}",
+            lines.len()
+        ));
+    }
+    Ok(lines[from - 1..to].join("\n") + "\n")
+}
