@@ -37,7 +37,7 @@ pub fn detect() -> (bool, Option<String>) {
     (
         false,
         Some(
-            "256 colors (no sign of 24-bit color: --color truecolor if your terminal has it)"
+            "256 colors: no sign of 24-bit color (COLORTERM=truecolor or --color truecolor if the terminal has it)"
                 .to_owned(),
         ),
     )

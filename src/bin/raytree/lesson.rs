@@ -1,8 +1,11 @@
-//! `raytree lesson`: the lessons, and one lesson's guided step-through.
+//! `raytree lesson`: the lessons, and one lesson's guided step-through, in
+//! the inspector when standard output is a terminal, else as text.
 
+use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
+use raytree::inspector::{self, App};
 use raytree::views::lesson;
 
 use crate::output;
@@ -15,6 +18,9 @@ pub struct Args {
     /// The folder holding the lessons (run from the repository, it is ./lessons).
     #[arg(long, value_name = "DIR", default_value = "lessons")]
     lessons: PathBuf,
+    /// Print the step-through as text instead of opening it in the inspector.
+    #[arg(long)]
+    text: bool,
 }
 
 pub fn run(args: &Args) -> Result<()> {
@@ -35,8 +41,23 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
+            if !args.text && std::io::stdout().is_terminal() {
+                return guided(loaded);
+            }
             lesson::step_through_text(&loaded, &walk)
         }
     };
     output::write_stdout(text.as_bytes())
+}
+
+/// Opens the lesson's step-through in the inspector, at its first stop.
+fn guided(loaded: lesson::Lesson) -> Result<()> {
+    let [x, y] = loaded.script.pixel;
+    let mut app = App::new(loaded.scene, loaded.source, Some((x, y)), true);
+    app.follow(loaded.script).map_err(anyhow::Error::msg)?;
+    (app.truecolor, app.color_note) = inspector::color_support();
+    if let Some(note) = &app.color_note {
+        app.message = note.clone();
+    }
+    inspector::run(app).map_err(|e| anyhow!("terminal error: {e}"))
 }
