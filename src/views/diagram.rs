@@ -108,10 +108,10 @@ pub fn draw_with_labels(
     let (legend, legend_entries) = draw_legend(&mut fig, &lay, &scale);
     let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen);
     let frame = frame_px(&fig);
-    let placed = labels::place(
+    let placed = labels::place_weighted(
         requests,
         &blocked(&fig, &lay, legend, &scale),
-        &lines_px(&fig, &lay),
+        &lines_px(&fig, &lay, &scale),
         frame,
     );
     for p in &placed {
@@ -320,6 +320,14 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
         );
     }
     for a in &m.angles {
+        if let Some(g) = a.guide {
+            let end = a.at + g * scale.px(45.0) / fig.scale();
+            fig.line(
+                a.at,
+                end,
+                scale.pen(Pen::pattern(palette::NORMAL, 1.0, &[2.0, 3.0])),
+            );
+        }
         fig.arc(
             a.at,
             scale.px(30.0),

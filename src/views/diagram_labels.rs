@@ -7,7 +7,7 @@ use glam::DVec2;
 use crate::scene::Scene;
 use crate::views::clip::clip_line;
 use crate::views::diagram::{Scale, in_frame};
-use crate::views::diagram_layout::{Labels, Layout, Options};
+use crate::views::diagram_layout::{Labels, Layout, Options, Stroke};
 use crate::views::figure::{Anchor, Figure, Rgb};
 use crate::views::labels::{Label, Placed, PxRect, Target};
 use crate::views::numbers::num;
@@ -53,6 +53,27 @@ pub(super) fn label_requests(
                 out.push(text(format!("P{}", k + 1), palette::INK, point(h.at, 5.0)));
             }
         }
+        for b in &lay.marks.boundaries {
+            // Each index on its own side of the boundary, along the normal.
+            for (label, side) in [(&b.n1, 1.0), (&b.n2, -1.0)] {
+                let at =
+                    fig.to_px(b.at) + DVec2::new(b.normal.x, -b.normal.y) * side * scale.px(58.0);
+                // An index belongs on its own side: left out rather than led
+                // across the boundary when that side has no room.
+                out.push(Label {
+                    size: size - 2.0,
+                    optional: true,
+                    ..text(
+                        label.clone(),
+                        palette::OBJECT,
+                        Target::Point {
+                            at,
+                            clearance: scale.px(2.0),
+                        },
+                    )
+                });
+            }
+        }
         for a in &lay.marks.angles {
             let mid = (a.from + a.to).normalize_or(a.to);
             let at = fig.to_px(a.at) + DVec2::new(mid.x, -mid.y) * scale.px(30.0);
@@ -67,24 +88,6 @@ pub(super) fn label_requests(
                     },
                 )
             });
-        }
-        for b in &lay.marks.boundaries {
-            // Each index on its own side of the boundary, along the normal.
-            for (label, side) in [(&b.n1, 1.0), (&b.n2, -1.0)] {
-                let at =
-                    fig.to_px(b.at) + DVec2::new(b.normal.x, -b.normal.y) * side * scale.px(58.0);
-                out.push(Label {
-                    size: size - 2.0,
-                    ..text(
-                        label.clone(),
-                        palette::OBJECT,
-                        Target::Point {
-                            at,
-                            clearance: scale.px(2.0),
-                        },
-                    )
-                });
-            }
         }
     }
     for (light, &p) in scene.lights.iter().zip(&lay.lights) {
@@ -226,28 +229,56 @@ pub(super) fn blocked(fig: &Figure, lay: &Layout, legend: PxRect, scale: &Scale)
     out
 }
 
-/// The drawn lines in pixels, which labels would rather not cover: the rays,
-/// and the edges of what the drawing plane cuts of each object.
-pub(super) fn lines_px(fig: &Figure, lay: &Layout) -> Vec<[DVec2; 2]> {
-    let mut out: Vec<[DVec2; 2]> = lay
+/// The drawn lines in pixels, which labels would rather not cover, each with
+/// how much covering it costs: the rays and the angle arcs most, the edges of
+/// what the drawing plane cuts of each object less, shadow rays least.
+pub(super) fn lines_px(fig: &Figure, lay: &Layout, scale: &Scale) -> Vec<([DVec2; 2], usize)> {
+    let (ray, arc, edge, shadow) = (4, 4, 2, 1);
+    let mut out: Vec<([DVec2; 2], usize)> = lay
         .segments
         .iter()
-        .map(|s| [fig.to_px(s.from), fig.to_px(s.to)])
+        .map(|s| {
+            let w = if matches!(s.stroke, Stroke::Ray(_)) {
+                ray
+            } else {
+                shadow
+            };
+            ([fig.to_px(s.from), fig.to_px(s.to)], w)
+        })
         .collect();
+    for a in &lay.marks.angles {
+        // The arc as drawn (radius 30 at the figure's scale), in eight chords.
+        let (c, r) = (fig.to_px(a.at), scale.px(30.0));
+        let (from, to) = (a.from.y.atan2(a.from.x), a.to.y.atan2(a.to.x));
+        let mut sweep = to - from;
+        if sweep > std::f64::consts::PI {
+            sweep -= std::f64::consts::TAU;
+        } else if sweep < -std::f64::consts::PI {
+            sweep += std::f64::consts::TAU;
+        }
+        let at = |k: u32| {
+            let t = from + sweep * f64::from(k) / 8.0;
+            c + DVec2::new(t.cos(), -t.sin()) * r
+        };
+        out.extend((0..8).map(|k| ([at(k), at(k + 1)], arc)));
+    }
     for section in lay.objects.iter().filter_map(|o| o.section.as_ref()) {
         if let Outline::Ellipse { center, axes } = section {
             let at = |k: u32| {
                 let t = std::f64::consts::TAU * f64::from(k) / 32.0;
                 fig.to_px(*center + t.cos() * axes[0] + t.sin() * axes[1])
             };
-            out.extend((0..32).map(|k| [at(k), at(k + 1)]));
+            out.extend((0..32).map(|k| ([at(k), at(k + 1)], edge)));
         }
         if let Outline::Polygon { points } = section {
             out.extend((0..points.len()).map(|k| {
-                [
-                    fig.to_px(points[k]),
-                    fig.to_px(points[(k + 1) % points.len()]),
-                ]
+                (
+                    [
+                        fig.to_px(points[k]),
+                        fig.to_px(points[(k + 1) % points.len()]),
+                    ],
+                    edge,
+                )
             }));
         }
     }

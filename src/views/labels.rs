@@ -121,48 +121,94 @@ pub fn place(
     lines: &[[DVec2; 2]],
     frame: PxRect,
 ) -> Vec<Placed> {
+    let weighted: Vec<([DVec2; 2], usize)> = lines.iter().map(|&l| (l, 1)).collect();
+    place_weighted(labels, blocked, &weighted, frame)
+}
+
+/// [`place`] with a weight per line: covering a line of weight 3 costs as
+/// much as covering three of weight 1 (a figure's main rays against faint
+/// shadow rays).
+pub fn place_weighted(
+    labels: Vec<Label>,
+    blocked: &[PxRect],
+    lines: &[([DVec2; 2], usize)],
+    frame: PxRect,
+) -> Vec<Placed> {
     let mut placed: Vec<Placed> = Vec::new();
     for label in labels {
-        let free = |r: &PxRect, placed: &[Placed]| {
-            frame.holds(r)
-                && !blocked.iter().any(|b| b.overlaps(r))
-                && !placed.iter().any(|p| p.rect.overlaps(r))
-        };
-        let cost = |r: &PxRect| lines.iter().filter(|[a, b]| r.crossed_by(*a, *b)).count();
-        let mut best: Option<(usize, usize, Placed)> = None;
-        for (rank, (baseline, anchor, leader)) in spots(&label).into_iter().enumerate() {
-            let rect = text_box(&label.text, label.size, baseline, label.boxed);
-            if !free(&rect, &placed) {
-                continue;
-            }
-            let c = cost(&rect) + if leader.is_some() { 3 } else { 0 };
-            if best
-                .as_ref()
-                .is_none_or(|(bc, br, _)| (c, rank) < (*bc, *br))
-            {
-                best = Some((
-                    c,
-                    rank,
-                    Placed {
-                        label: label.clone(),
-                        rect,
-                        baseline,
-                        anchor,
-                        leader: leader.map(|l| [l, anchor]),
-                    },
-                ));
-            }
-            if c == 0 && leader.is_none() {
-                break;
-            }
-        }
-        if let Some((_, _, p)) = best
+        // Leaders that cross nothing first; in a crowd where none can, a
+        // leader may cross another label's leader or box rather than the
+        // label be lost.
+        let found = best_spot(&label, blocked, lines, frame, &placed, true)
+            .or_else(|| best_spot(&label, blocked, lines, frame, &placed, false));
+        if let Some(p) = found
             && !(p.label.optional && p.leader.is_some())
         {
             placed.push(p);
         }
     }
     placed
+}
+
+/// The cheapest free spot for `label` (covering the fewest weighted lines,
+/// nearest first among equals). A spot is free when its box is in the frame
+/// and clear of the marks and the labels placed; with `clean_leaders`, also
+/// clear of their leaders, its own leader crossing no mark and no label.
+fn best_spot(
+    label: &Label,
+    blocked: &[PxRect],
+    lines: &[([DVec2; 2], usize)],
+    frame: PxRect,
+    placed: &[Placed],
+    clean_leaders: bool,
+) -> Option<Placed> {
+    let free = |r: &PxRect, leader: Option<[DVec2; 2]>| {
+        // A leader ends at its anchor's mark: only the part short of it counts.
+        let short = leader
+            .filter(|_| clean_leaders)
+            .map(|[a, z]| [a, z + (a - z).clamp_length_max(10.0)]);
+        let crosses = |b: &PxRect| short.is_some_and(|[a, z]| b.crossed_by(a, z));
+        frame.holds(r)
+            && !blocked.iter().any(|b| b.overlaps(r) || crosses(b))
+            && !placed.iter().any(|p| {
+                p.rect.overlaps(r)
+                    || crosses(&p.rect)
+                    || (clean_leaders && p.leader.is_some_and(|[a, z]| r.crossed_by(a, z)))
+            })
+    };
+    let cost = |r: &PxRect| {
+        lines
+            .iter()
+            .filter(|([a, b], _)| r.crossed_by(*a, *b))
+            .map(|(_, w)| w)
+            .sum::<usize>()
+    };
+    let mut best: Option<(usize, usize, Placed)> = None;
+    for (rank, (baseline, anchor, leader)) in spots(label).into_iter().enumerate() {
+        let rect = text_box(&label.text, label.size, baseline, label.boxed);
+        let leader = leader.map(|l| [l, anchor]);
+        if !free(&rect, leader) {
+            continue;
+        }
+        let c = cost(&rect) + if leader.is_some() { 3 } else { 0 };
+        if best
+            .as_ref()
+            .is_none_or(|(bc, br, _)| (c, rank) < (*bc, *br))
+        {
+            let p = Placed {
+                label: label.clone(),
+                rect,
+                baseline,
+                anchor,
+                leader,
+            };
+            best = Some((c, rank, p));
+        }
+        if c == 0 && leader.is_none() {
+            break;
+        }
+    }
+    best.map(|(_, _, p)| p)
 }
 
 /// Candidate baselines for a label, nearest first: touching the target, then

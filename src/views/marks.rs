@@ -67,6 +67,9 @@ pub struct Angle {
     pub to: DVec2,
     /// What it is and its value: `θ₁ = 24.31°`.
     pub label: String,
+    /// A side of the angle the figure does not otherwise draw (the normal's
+    /// continuation into the second medium, for θ₂): drawn dotted.
+    pub guide: Option<DVec2>,
 }
 
 /// The indices on either side of a refracting boundary.
@@ -173,6 +176,7 @@ pub fn marks(
                 from: back,
                 to: n,
                 label: format!("{name} = {}", degrees(theta)),
+                guide: None,
             });
         }
         if let Some(v) = reflected {
@@ -181,6 +185,7 @@ pub fn marks(
                 from: n,
                 to: unit(v),
                 label: format!("θᵣ = {}", degrees(theta)),
+                guide: None,
             });
         }
         if let Some((t, theta2)) = refracted {
@@ -189,6 +194,7 @@ pub fn marks(
                 from: -n,
                 to: unit(t),
                 label: format!("θ₂ = {}", degrees(theta2)),
+                guide: Some(-n),
             });
         }
         let Some(r) = &h.refraction else { continue };
