@@ -20,3 +20,4 @@ pub mod camera_view; // the image plane face-on, with a pixel's place on it
 pub mod object_view; // a transformed sphere's hit in its own space, beside the world
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
 pub mod chart; // speed against accuracy as a chart
+pub mod aov_figure; // a per-pixel quantity with its color bar or key

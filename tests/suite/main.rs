@@ -3,6 +3,7 @@
 //! `cargo test --release MODULE` runs one, e.g. `cargo test --release golden_traces`.
 
 mod accel;
+mod aov;
 mod arithmetic;
 mod architecture;
 mod chart;

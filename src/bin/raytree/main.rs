@@ -2,6 +2,7 @@
 //! Each command lives in a file of its own; the argument groups they share are
 //! in `args.rs`, the output-file helpers in `output.rs`.
 
+mod aov;
 mod args;
 mod chart;
 mod diagram;
