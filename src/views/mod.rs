@@ -21,3 +21,4 @@ pub mod object_view; // a transformed sphere's hit in its own space, beside the 
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
 pub mod chart; // speed against accuracy as a chart
 pub mod aov_figure; // a per-pixel quantity with its color bar or key
+pub mod filmstrip; // frames side by side, one per value of a setting

@@ -21,4 +21,5 @@ mod recursion;
 mod render;
 mod scenes;
 mod stability;
+mod strip;
 mod worked;

@@ -11,6 +11,7 @@ mod generate;
 mod inspect;
 mod output;
 mod render;
+mod strip;
 mod trace;
 
 use std::process::ExitCode;
@@ -37,6 +38,8 @@ enum Command {
     Inspect(inspect::Args),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
     Chart(chart::Args),
+    /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
+    Strip(strip::Args),
     /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
     Diff(diff::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
@@ -52,6 +55,7 @@ fn main() -> ExitCode {
         Command::Diagram(args) => diagram::run(&args),
         Command::Inspect(args) => inspect::run(&args),
         Command::Chart(args) => chart::run(&args),
+        Command::Strip(args) => strip::run(&args),
         Command::Diff(args) => diff::run(&args),
         Command::Generate(args) => generate::run(&args),
     };
