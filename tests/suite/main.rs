@@ -10,6 +10,7 @@ mod chart;
 mod cli;
 mod common;
 mod diagram;
+mod forward;
 mod golden_traces;
 mod guide;
 mod inspector;

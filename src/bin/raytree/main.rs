@@ -7,6 +7,7 @@ mod args;
 mod chart;
 mod diagram;
 mod diff;
+mod forward;
 mod generate;
 mod inspect;
 mod output;
@@ -40,6 +41,8 @@ enum Command {
     Chart(chart::Args),
     /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
     Strip(strip::Args),
+    /// Trace rays forward from the lights and count how few reach the eye, beside the backward render (PNG).
+    Forward(forward::Args),
     /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
     Diff(diff::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
@@ -56,6 +59,7 @@ fn main() -> ExitCode {
         Command::Inspect(args) => inspect::run(&args),
         Command::Chart(args) => chart::run(&args),
         Command::Strip(args) => strip::run(&args),
+        Command::Forward(args) => forward::run(&args),
         Command::Diff(args) => diff::run(&args),
         Command::Generate(args) => generate::run(&args),
     };
