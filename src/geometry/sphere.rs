@@ -22,6 +22,24 @@ pub struct Sphere {
     pub radius: f64,
 }
 
+/// The lecture's quadratic for a ray against the unit sphere at the origin
+/// (see [`Sphere::unit_quadratic`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct UnitQuadratic {
+    /// `S₁`, the ray's origin in the unit sphere's frame.
+    pub origin: DVec3,
+    /// `c₁`, its direction there.
+    pub direction: DVec3,
+    /// `A = |c₁|²`.
+    pub a: f64,
+    /// `B = S₁·c₁`.
+    pub b: f64,
+    /// `C = |S₁|² - 1`.
+    pub c: f64,
+    /// `B² - AC`: below 0 no root, 0 one, above 0 two.
+    pub discriminant: f64,
+}
+
 impl Sphere {
     /// The stable roots (Ray Tracing Gems, ch. 7, eq. 7.11–7.13): with `f = S - C`,
     /// `a = c·c` and `b = f·c`, the discriminant is `Δ = r² - |f - (b/a)c|²`, the
@@ -65,6 +83,28 @@ impl Sphere {
         } else {
             let s = disc.sqrt();
             Roots::two((-b - s) / a, (-b + s) / a)
+        }
+    }
+
+    /// The lecture's quadratic `A t² + 2B t + C = 0` for the unit sphere at the
+    /// origin: the ray moved into this sphere's frame and scaled by its radius
+    /// (`S₁ = (S - center)/r`, `c₁ = c/r`), so `A = |c₁|²`, `B = S₁·c₁`,
+    /// `C = |S₁|² - 1`. Its `B² - AC` is what a trace prints and what
+    /// `raytree render --aov discriminant` maps; its sign is the sign of
+    /// [`Sphere::lecture_roots`]'s discriminant (they differ by the factor `r⁴`).
+    pub fn unit_quadratic(&self, ray: &Ray) -> UnitQuadratic {
+        let origin = (ray.origin - self.center) / self.radius;
+        let direction = ray.dir / self.radius;
+        let a = direction.length_squared();
+        let b = origin.dot(direction);
+        let c = origin.length_squared() - 1.0;
+        UnitQuadratic {
+            origin,
+            direction,
+            a,
+            b,
+            c,
+            discriminant: b * b - a * c,
         }
     }
 

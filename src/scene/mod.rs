@@ -10,6 +10,7 @@ pub mod loader; // the scene file, checked, into a Scene
 pub mod obj; // OBJ meshes
 pub mod source; // which scene file, by name and hash
 pub mod generate; // scenes made by program
+pub mod vary; // one numeric field of a scene file, varied (filmstrips)
 
 use glam::DVec3;
 

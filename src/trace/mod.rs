@@ -7,4 +7,7 @@ pub mod tracer; // the lecture's raytrace(): closest hit, shadow rays, reflectio
 pub mod accelerator; // which objects a ray is tested against
 pub mod pixel; // one pixel's rays: its center, a grid, or adaptive subdivision
 pub mod render; // every pixel, on all cores
+pub mod aov; // per-pixel quantities that explain an image: what each is and how it reads
+pub mod aov_render; // rendering one, through a recorder
+pub mod forward; // rays from the lights to the eye, counted
 pub mod sweep; // speed against accuracy, measured

@@ -35,7 +35,7 @@ use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
 use crate::trace::recorder::{
-    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, RayKind, RayStart, Recorder,
+    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart, Recorder,
     ShadowEvent, ShadowOutcome, SumEvent,
 };
 
@@ -125,6 +125,14 @@ impl<'s> Tracer<'s> {
             color,
         }));
         color
+    }
+
+    /// The closest hit of `ray` travelling in `media`, and the surface there:
+    /// how the forward tracer ([`crate::trace::forward`]) follows light with
+    /// this tracer's own intersection code.
+    pub fn intersect(&self, ray: &Ray, media: &Media) -> Option<(HitEvent, Surface)> {
+        let found = self.closest_hit(ray, 0.0, f64::INFINITY, &mut NoRecorder)?;
+        Some(self.hit_at(ray, found, media))
     }
 
     /// What a ray that hits nothing returns: the scene's background.

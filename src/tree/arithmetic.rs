@@ -345,18 +345,14 @@ pub fn object_test(
 
 /// The lecture's unit-sphere quadratic for `ray` (in the sphere's object frame).
 fn quadratic(s: &Sphere, ray: &Ray) -> Arithmetic {
-    let origin = (ray.origin - s.center) / s.radius;
-    let direction = ray.dir / s.radius;
-    let a = direction.length_squared();
-    let b = origin.dot(direction);
-    let c = origin.length_squared() - 1.0;
+    let q = s.unit_quadratic(ray);
     Arithmetic::Quadratic {
-        origin,
-        direction,
-        a,
-        b,
-        c,
-        discriminant: b * b - a * c,
+        origin: q.origin,
+        direction: q.direction,
+        a: q.a,
+        b: q.b,
+        c: q.c,
+        discriminant: q.discriminant,
     }
 }
 

@@ -8,6 +8,7 @@ use glam::DVec2;
 use crate::methods::Offset;
 use crate::trace::sweep::Point;
 use crate::views::figure::{Anchor, Figure};
+use crate::views::labels::{Label, Placed, PxRect, Target, place, text_box};
 use crate::views::pen::{Pen, palette};
 
 /// Indices of the points on the Pareto front (no other point is at least as fast
@@ -50,6 +51,16 @@ pub fn csv(points: &[Point]) -> String {
 
 /// The chart: time (x, log) against RMSE (y, log).
 pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Figure> {
+    draw_with_labels(points, title, width, height).map(|(fig, _)| fig)
+}
+
+/// [`draw`], also returning where each point's label went (for the tests).
+pub fn draw_with_labels(
+    points: &[Point],
+    title: &str,
+    width: u32,
+    height: u32,
+) -> Option<(Figure, Vec<Placed>)> {
     let mut fig = Figure::new(width, height, 44.0, 12.0)?;
     let xy = log_positions(points);
     let lo = xy
@@ -75,14 +86,15 @@ pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Fi
     for w in front.windows(2) {
         fig.line(xy[w[0]], xy[w[1]], Pen::dashed(palette::REFLECTED, 2.0));
     }
-    draw_points(&mut fig, points, &xy, &front);
+    let mut blocked = draw_axis_titles(&mut fig, "median of the runs");
+    blocked.push(draw_legend(&mut fig, &xy));
+    let placed = draw_points(&mut fig, points, &xy, &front, &blocked);
     fig.frame_border();
-    draw_legend(&mut fig, &xy);
     let caption = format!(
-        "{title} · x: wall time (median), log · y: RMSE against the converged reference (linear RGB), log"
+        "{title} · each setting's time against its error; the Pareto front joins those nothing beats on both"
     );
     fig.caption(&Figure::wrap(&caption, 15.0, fig.frame().width()), 15.0);
-    Some(fig)
+    Some((fig, placed))
 }
 
 /// Each point at (log₁₀ seconds, log₁₀ RMSE); an RMSE of 0 sits at half the
@@ -131,16 +143,20 @@ fn draw_grid(fig: &mut Figure) {
     }
 }
 
-/// Each point as a dot (the defaults last, on top) with its label in the first
-/// spot beside it that overlaps no dot and no other label.
-fn draw_points(fig: &mut Figure, points: &[Point], xy: &[DVec2], front: &[usize]) {
+/// Each point as a dot (the defaults last, on top), then the labels, placed
+/// by [`crate::views::labels`] as the diagrams' are: touching their dot where
+/// there is room, else with a leader line, never over another label, a dot,
+/// the legend or an axis title. The defaults are placed first, so their
+/// label sits at their dot.
+fn draw_points(
+    fig: &mut Figure,
+    points: &[Point],
+    xy: &[DVec2],
+    front: &[usize],
+    blocked: &[PxRect],
+) -> Vec<Placed> {
     let mut order: Vec<usize> = (0..points.len()).collect();
     order.sort_by_key(|&i| points[i].default);
-    let mut placed: Vec<(DVec2, DVec2)> = xy
-        .iter()
-        .map(|&p| fig.to_px(p))
-        .map(|c| (c - 6.0, c + 6.0))
-        .collect();
     for &i in &order {
         let (p, at) = (&points[i], xy[i]);
         let color = if p.default {
@@ -156,49 +172,72 @@ fn draw_points(fig: &mut Figure, points: &[Point], xy: &[DVec2], front: &[usize]
             color,
             Some(palette::INK),
         );
-        let c = fig.to_px(at);
-        let w = f64::from(Figure::text_width(&p.label, 13.0));
-        let spots = [
-            (9.0, 4.0),
-            (9.0, 18.0),
-            (9.0, -10.0),
-            (-9.0 - w, 4.0),
-            (9.0, 32.0),
-            (9.0, -24.0),
-            (-9.0 - w, 18.0),
-            (-9.0 - w, -10.0),
-            (9.0, 46.0),
-            (9.0, -38.0),
-        ];
-        let (dx, dy) = spots
-            .into_iter()
-            .find(|&(dx, dy)| {
-                let (lo, hi) = (
-                    c + DVec2::new(dx, dy - 11.0),
-                    c + DVec2::new(dx + w, dy + 3.0),
-                );
-                !placed
-                    .iter()
-                    .any(|&(a, b)| lo.x < b.x && hi.x > a.x && lo.y < b.y && hi.y > a.y)
-            })
-            .unwrap_or(spots[0]);
-        placed.push((
-            c + DVec2::new(dx, dy - 11.0),
-            c + DVec2::new(dx + w, dy + 3.0),
-        ));
-        fig.label(
-            at,
-            DVec2::new(dx, dy),
-            &p.label,
-            13.0,
-            palette::INK,
+    }
+    let px: Vec<DVec2> = xy.iter().map(|&p| fig.to_px(p)).collect();
+    let mut avoid: Vec<PxRect> = px.iter().map(|&c| PxRect::around(c, 7.0)).collect();
+    avoid.extend_from_slice(blocked);
+    let lines: Vec<[DVec2; 2]> = front.windows(2).map(|w| [px[w[0]], px[w[1]]]).collect();
+    let labels = order.iter().rev().map(|&i| Label {
+        text: points[i].label.clone(),
+        size: 13.0,
+        color: palette::INK,
+        target: Target::Point {
+            at: px[i],
+            clearance: if points[i].default { 7.0 } else { 5.0 },
+        },
+        boxed: false,
+        optional: false,
+    });
+    let f = fig.frame();
+    let frame = PxRect {
+        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
+        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
+    };
+    let placed = place(labels.collect(), &avoid, &lines, frame);
+    for placed in &placed {
+        if let Some([a, b]) = placed.leader {
+            fig.line_px(a, b, Pen::solid([120, 120, 120], 0.9));
+        }
+        fig.text_px(
+            placed.baseline,
+            &placed.label.text,
+            placed.label.size,
+            placed.label.color,
             Anchor::Left,
+            false,
         );
     }
+    placed
 }
 
-/// The legend, in the corner with the fewest points near it.
-fn draw_legend(fig: &mut Figure, xy: &[DVec2]) {
+/// The axis titles, along the bottom and up the left edge of the frame; the
+/// boxes they take, which the points' labels keep clear of.
+fn draw_axis_titles(fig: &mut Figure, runs_note: &str) -> Vec<PxRect> {
+    let f = fig.frame();
+    let size = 14.0;
+    let x_title = format!("wall time ({runs_note}), log scale →");
+    let y_title = "↑ RMSE against the converged reference (linear RGB), log scale";
+    let x_at = DVec2::new(f64::from(f.right()) - 10.0, f64::from(f.bottom()) - 26.0);
+    let y_at = DVec2::new(f64::from(f.left()) + 8.0, f64::from(f.top()) + 20.0);
+    let mut boxes = Vec::new();
+    for (at, text, anchor) in [
+        (x_at, x_title.as_str(), Anchor::Right),
+        (y_at, y_title, Anchor::Left),
+    ] {
+        let w = f64::from(Figure::text_width(text, size));
+        let left = if anchor == Anchor::Right {
+            at.x - w
+        } else {
+            at.x
+        };
+        boxes.push(text_box(text, size, DVec2::new(left, at.y), true));
+        fig.text_px(at, text, size, palette::INK, anchor, false);
+    }
+    boxes
+}
+
+/// The legend, in the corner with the fewest points near it; its box.
+fn draw_legend(fig: &mut Figure, xy: &[DVec2]) -> PxRect {
     let legend = [
         (Pen::solid(palette::REFRACTED, 6.0), "the defaults"),
         (Pen::solid(palette::REFLECTED, 6.0), "on the Pareto front"),
@@ -218,6 +257,11 @@ fn draw_legend(fig: &mut Figure, xy: &[DVec2]) {
     };
     let corner = (0..4).min_by_key(|&c| (covered(boxes[c]), c)).unwrap_or(0);
     fig.legend(&legend, 13.0, corner);
+    let (origin, wh) = boxes[corner];
+    PxRect {
+        min: origin,
+        max: origin + wh,
+    }
 }
 
 fn seconds_label(log10: f64) -> String {

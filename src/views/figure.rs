@@ -478,6 +478,21 @@ impl Figure {
         );
     }
 
+    /// Copies an 8-bit RGB image (`rgb`, rows top first, `width` pixels wide)
+    /// onto the page with its top-left corner at pixel `(x, y)`: a rendered
+    /// image inside a figure, pixel for pixel.
+    pub fn image(&mut self, x: u32, y: u32, width: u32, rgb: &[u8]) {
+        let (w, h) = (self.pixmap.width(), self.pixmap.height());
+        let data = self.pixmap.data_mut();
+        for (i, p) in rgb.chunks_exact(3).enumerate() {
+            let (px, py) = (x + i as u32 % width.max(1), y + i as u32 / width.max(1));
+            if px < w && py < h {
+                let at = (py as usize * w as usize + px as usize) * 4;
+                data[at..at + 4].copy_from_slice(&[p[0], p[1], p[2], 255]);
+            }
+        }
+    }
+
     /// The figure as 8-bit RGB, rows top first.
     pub fn rgb(&self) -> Vec<u8> {
         // Everything is drawn on an opaque page, so premultiplied equals straight RGB.

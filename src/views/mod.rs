@@ -23,3 +23,5 @@ pub mod guide; // a guided step-through: a teacher's stops with the trace's numb
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
 pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod chart; // speed against accuracy as a chart
+pub mod aov_figure; // a per-pixel quantity with its color bar or key
+pub mod filmstrip; // frames side by side, one per value of a setting

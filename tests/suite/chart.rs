@@ -64,3 +64,84 @@ fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
     assert!(rmse("depth 2") > rmse("default"), "{csv}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
+
+/// The points of the committed chart, read back from `docs/chart.csv`.
+fn committed_points() -> Vec<raytree::trace::sweep::Point> {
+    let csv =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/chart.csv")).unwrap();
+    csv.lines()
+        .skip(1)
+        .map(|l| {
+            let (label, rest) = l[1..].split_once("\",").expect("a quoted label");
+            let f: Vec<&str> = rest.split(',').collect();
+            raytree::trace::sweep::Point {
+                label: label.replace("\"\"", "\""),
+                settings: raytree::scene::settings::RenderSettings::default(),
+                default: f[0] == "true",
+                seconds: f[6].parse().unwrap(),
+                rmse: f[7].parse().unwrap(),
+                off: f[8].parse().unwrap(),
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn chart_labels_touch_their_dots_and_never_overlap() {
+    let points = committed_points();
+    let (_, placed) =
+        raytree::views::chart::draw_with_labels(&points, "docs/chart.csv", 1200, 800).unwrap();
+    assert_eq!(placed.len(), points.len(), "every point is labelled");
+    for (i, a) in placed.iter().enumerate() {
+        for b in &placed[i + 1..] {
+            assert!(
+                !a.rect.overlaps(&b.rect),
+                "{} and {}",
+                a.label.text,
+                b.label.text
+            );
+        }
+        // Touching its dot, or led to it: a label at a corner of its dot sits
+        // the clearance (at most 7) and a gap of 2 plus a pixel of padding away
+        // on both axes, (7 + 2 + 1)·√2 ≈ 14.1 from the dot's center.
+        let touching = |p: &raytree::views::labels::Placed| p.rect.distance(p.anchor) <= 14.2;
+        assert!(
+            touching(a) || a.leader.is_some(),
+            "{} floats away from its dot",
+            a.label.text
+        );
+    }
+    let default = placed.iter().find(|p| p.label.text == "default").unwrap();
+    assert!(default.leader.is_none() && default.rect.distance(default.anchor) <= 14.2);
+}
+
+#[test]
+fn docs_chart_png_is_drawn_from_docs_chart_csv_as_the_code_draws_today() {
+    // The timing is not re-run (40 s, and noisy): the committed figures are redrawn.
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/chart.png");
+    let fig = raytree::views::chart::draw(
+        &committed_points(),
+        "scenes/whitted.json at 640×480, 5 runs each",
+        1200,
+        800,
+    )
+    .unwrap();
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::write(path, fig.png()).unwrap();
+        return;
+    }
+    let shown = image::open(path).unwrap().to_rgb8();
+    assert_eq!(shown.dimensions(), fig.size());
+    // Tolerance 8 of 255, as for the golden diagrams (antialiasing may round an edge differently).
+    let worst = shown
+        .as_raw()
+        .iter()
+        .zip(fig.rgb())
+        .map(|(&a, b)| a.abs_diff(b))
+        .max()
+        .unwrap();
+    assert!(
+        worst <= 8,
+        "docs/chart.png is stale: RAYTREE_BLESS=1 cargo test --release chart"
+    );
+}

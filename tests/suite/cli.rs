@@ -31,7 +31,12 @@ fn fails(name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
 }
 
 /// As [`fails`], for any subcommand.
-fn fails_in(command: &str, name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
+pub(crate) fn fails_in(
+    command: &str,
+    name: &str,
+    scene_text: Option<&str>,
+    extra: &[&str],
+) -> String {
     let dir = workdir(name);
     let mut args = vec![command];
     if let Some(text) = scene_text {

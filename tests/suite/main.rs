@@ -3,6 +3,7 @@
 //! `cargo test --release MODULE` runs one, e.g. `cargo test --release golden_traces`.
 
 mod accel;
+mod aov;
 mod arithmetic;
 mod book;
 mod architecture;
@@ -10,6 +11,7 @@ mod chart;
 mod cli;
 mod common;
 mod diagram;
+mod forward;
 mod golden_traces;
 mod guide;
 mod inspector;
@@ -22,4 +24,5 @@ mod recursion;
 mod render;
 mod scenes;
 mod stability;
+mod strip;
 mod worked;

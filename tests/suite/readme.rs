@@ -90,3 +90,104 @@ fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
         "README.md's inspector capture differs from {file} (copy it in after re-blessing)"
     );
 }
+
+/// Runs the binary from the project's root (so captions name `scenes/…`),
+/// writing into a fresh folder; returns its standard output.
+fn run_in_root(args: &[&str]) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).unwrap()
+}
+
+#[test]
+fn readme_figures_are_what_the_commands_draw_today() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let dir = std::env::temp_dir().join(format!("raytree-readme-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let cases: [(&str, Vec<&str>); 2] = [
+        (
+            "whitted-shadow-key.png",
+            vec!["render", "scenes/whitted.json", "--aov", "shadow=key", "-q"],
+        ),
+        (
+            "whitted-strip-max_depth.png",
+            vec![
+                "strip",
+                "scenes/whitted.json",
+                "--vary",
+                "max_depth=1..5",
+                "-q",
+            ],
+        ),
+    ];
+    for (name, args) in cases {
+        let fresh = dir.join(name);
+        let fresh = fresh.to_str().unwrap();
+        run_in_root(&[&args[..], &["-o", fresh]].concat());
+        let shown = format!("{root}/docs/{name}");
+        if std::env::var_os("RAYTREE_BLESS").is_some() {
+            std::fs::copy(fresh, &shown).unwrap();
+            continue;
+        }
+        let (now, then) = (
+            image::open(fresh).unwrap().to_rgb8(),
+            image::open(&shown).unwrap().to_rgb8(),
+        );
+        assert_eq!(now.dimensions(), then.dimensions(), "{name}");
+        // Tolerance 8 of 255, as for the golden diagrams: the rasterizer may
+        // round an edge of the key's text differently on another machine.
+        let worst = now
+            .as_raw()
+            .iter()
+            .zip(then.as_raw())
+            .map(|(a, b)| a.abs_diff(*b))
+            .max()
+            .unwrap();
+        assert!(
+            worst <= 8,
+            "docs/{name} is stale: RAYTREE_BLESS=1 cargo test --release readme"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn readme_forward_report_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+    let readme = std::fs::read_to_string(path).unwrap();
+    let marker = "$ raytree forward scenes/whitted.json --photons 1000000\n";
+    let start = readme
+        .find(marker)
+        .expect("the README shows a forward report")
+        + marker.len();
+    let end = readme[start..].find("```").unwrap() + start;
+    let out =
+        std::env::temp_dir().join(format!("raytree-readme-forward-{}.png", std::process::id()));
+    let now = run_in_root(&[
+        "forward",
+        "scenes/whitted.json",
+        "--photons",
+        "1000000",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    let _ = std::fs::remove_file(&out);
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::write(path, format!("{}{now}{}", &readme[..start], &readme[end..])).unwrap();
+        return;
+    }
+    assert_eq!(
+        &readme[start..end],
+        now,
+        "README.md's forward report is stale: RAYTREE_BLESS=1 cargo test --release readme"
+    );
+}

@@ -2,15 +2,18 @@
 //! Each command lives in a file of its own; the argument groups they share are
 //! in `args.rs`, the output-file helpers in `output.rs`.
 
+mod aov;
 mod args;
 mod chart;
 mod diagram;
 mod diff;
+mod forward;
 mod generate;
 mod inspect;
 mod lesson;
 mod output;
 mod render;
+mod strip;
 mod trace;
 
 use std::process::ExitCode;
@@ -37,7 +40,11 @@ enum Command {
     Inspect(inspect::Args),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
     Chart(chart::Args),
-    /// List the lessons, or print lesson N's guided step-through with the trace's own numbers.
+    /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
+    Strip(strip::Args),
+    /// Trace rays forward from the lights and count how few reach the eye, beside the backward render (PNG).
+    Forward(forward::Args),
+    /// List the lessons, or open lesson N's guided step-through (the trace's own numbers, stop by stop).
     Lesson(lesson::Args),
     /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
     Diff(diff::Args),
@@ -54,6 +61,8 @@ fn main() -> ExitCode {
         Command::Diagram(args) => diagram::run(&args),
         Command::Inspect(args) => inspect::run(&args),
         Command::Chart(args) => chart::run(&args),
+        Command::Strip(args) => strip::run(&args),
+        Command::Forward(args) => forward::run(&args),
         Command::Lesson(args) => lesson::run(&args),
         Command::Diff(args) => diff::run(&args),
         Command::Generate(args) => generate::run(&args),

@@ -13,35 +13,39 @@ use crate::output;
 #[derive(clap::Args)]
 pub struct Args {
     #[command(flatten)]
-    scene: SceneArgs,
+    pub scene: SceneArgs,
     /// Output image (.png or .ppm) [default: the scene's name with .png, in the current folder].
     #[arg(short, long, value_name = "OUT")]
-    output: Option<PathBuf>,
+    pub output: Option<PathBuf>,
     /// Worker threads [default: one per core].
     #[arg(long, value_name = "N")]
-    threads: Option<usize>,
+    pub threads: Option<usize>,
     /// Print nothing but errors.
     #[arg(short, long)]
-    quiet: bool,
+    pub quiet: bool,
     /// Also count the rays cast, by kind, and report rays per second (about 1% slower).
-    #[arg(long, conflicts_with = "quiet")]
+    #[arg(long, conflicts_with_all = ["quiet", "aov"])]
     stats: bool,
+    /// Render a per-pixel quantity instead of the color, as a PNG with its color
+    /// bar or key below: local, reflected, refracted, ambient, diffuse, specular,
+    /// shadow[=LIGHT], depth, rays[=KIND], tests, normal, t, object,
+    /// discriminant[=SPHERE], tir (see the README's list).
+    #[arg(long, value_name = "NAME")]
+    pub aov: Option<String>,
+    /// With --aov: write the image alone, without the key strip.
+    #[arg(long, requires = "aov")]
+    pub no_key: bool,
 }
 
 pub fn run(args: &Args) -> Result<()> {
+    if let Some(name) = &args.aov {
+        return crate::aov::run(args, name);
+    }
     let (scene, _) = args.scene.load()?;
     let path = output::name_or(&args.output, || format!("{}.png", args.scene.stem()));
     let format = image_file::format_of(&path)?;
     let pending = output::create(&path)?;
-    let threads = match args.threads {
-        Some(0) => bail!("--threads: must be at least 1"),
-        Some(n) => n,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
-    };
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .context("cannot start worker threads")?;
+    let (pool, threads) = thread_pool(args.threads)?;
     let progress = output::progress_bar(
         args.quiet,
         "{spinner} rendering [{bar:40}] {pos}/{len} rows, {elapsed} (eta {eta})",
@@ -85,4 +89,18 @@ pub fn run(args: &Args) -> Result<()> {
         );
     }
     Ok(())
+}
+
+/// A pool of `threads` workers (one per core by default), and how many.
+pub fn thread_pool(threads: Option<usize>) -> Result<(rayon::ThreadPool, usize)> {
+    let threads = match threads {
+        Some(0) => bail!("--threads: must be at least 1"),
+        Some(n) => n,
+        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
+    };
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("cannot start worker threads")?;
+    Ok((pool, threads))
 }

@@ -1,0 +1,335 @@
+//! One numeric field of a scene file, varied: what a filmstrip (`raytree
+//! strip --vary max_depth=1..5`) renders a frame of per value. The field is
+//! named by its path in the scene file (`materials.glass.ior`,
+//! `render.max_depth`, `lights[0].position[1]`; a render setting may drop its
+//! `render.`), set in the file's JSON, and the whole scene is read again by
+//! [`crate::scene::loader`], so a varied value is checked exactly as the same
+//! value written in the file would be.
+
+use serde_json::Value as Json;
+
+use crate::scene::Scene;
+use crate::scene::loader::{self, SceneError};
+use crate::scene::overrides::Overrides;
+use crate::scene::settings::RenderSettings;
+
+/// The most frames a filmstrip takes.
+pub const MAX_VALUES: usize = 12;
+
+/// A field and the values it takes in turn.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Variation {
+    /// The field's path in the scene file, as given.
+    pub path: String,
+    /// Its values, in order.
+    pub values: Vec<f64>,
+}
+
+/// Reads `PATH=A..B` (whole numbers from A to B) or `PATH=V1,V2,…`.
+pub fn parse(spec: &str) -> Result<Variation, String> {
+    let (path, values) = spec
+        .split_once('=')
+        .ok_or("expected PATH=VALUES, e.g. max_depth=1..5 or materials.glass.ior=1.0,1.33,1.5")?;
+    let path = path.trim();
+    if path.is_empty() {
+        return Err("the field's path is empty".into());
+    }
+    let number = |v: &str| {
+        v.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| format!("'{}' is not a finite number", v.trim()))
+    };
+    let values: Vec<f64> = match values.split_once("..") {
+        Some((a, b)) => {
+            let (a, b) = (number(a)?, number(b)?);
+            if a.fract() != 0.0 || b.fract() != 0.0 || b < a {
+                return Err(format!(
+                    "a range A..B counts whole numbers up from A to B, got {a}..{b}; list other values with commas"
+                ));
+            }
+            if b - a >= MAX_VALUES as f64 {
+                return Err(format!("{a}..{b} is more than {MAX_VALUES} frames"));
+            }
+            (a as i64..=b as i64).map(|v| v as f64).collect()
+        }
+        None => values.split(',').map(number).collect::<Result<_, _>>()?,
+    };
+    if values.len() > MAX_VALUES {
+        return Err(format!(
+            "{} values: a strip has at most {MAX_VALUES}",
+            values.len()
+        ));
+    }
+    Ok(Variation {
+        path: path.to_owned(),
+        values,
+    })
+}
+
+/// The scene of `text` (file `file`) with `overrides` applied to its render
+/// settings and then the field at `path` set to `value`. Errors are one line
+/// naming the field and the value.
+pub fn scene_with(
+    text: &str,
+    file: &str,
+    overrides: &Overrides,
+    path: &str,
+    value: f64,
+) -> Result<Scene, String> {
+    let fail = |m: String| format!("--vary {path}={value}: {m}");
+    let mut json: Json = serde_json::from_str(text).map_err(|e| fail(e.to_string()))?;
+    let render = object_at(&mut json, "render")?;
+    if let Json::Object(given) = serde_json::to_value(overrides).map_err(|e| fail(e.to_string()))? {
+        render.extend(given);
+    }
+    let segments = segments(&full_path(path)).map_err(fail)?;
+    set(&mut json, &segments, value).map_err(fail)?;
+    let text = serde_json::to_string(&json).map_err(|e| fail(e.to_string()))?;
+    loader::parse(&text, file).map_err(|e| {
+        fail(match e {
+            // The line and column are of the rewritten text, not the file: leave them out.
+            SceneError::Syntax { message, .. } => message,
+            SceneError::Invalid { field, message, .. } => format!("{field}: {message}"),
+            other => other.to_string(),
+        })
+    })
+}
+
+/// The path with `render.` put before a render setting's bare name.
+fn full_path(path: &str) -> String {
+    let settings = serde_json::to_value(RenderSettings::default()).unwrap_or_default();
+    let first = path.split(['.', '[']).next().unwrap_or("");
+    match settings.get(first) {
+        Some(_) => format!("render.{path}"),
+        None => path.to_owned(),
+    }
+}
+
+/// A step along a path: a field, or an index into a list.
+#[derive(Clone, Debug, PartialEq)]
+enum Segment {
+    Field(String),
+    Index(usize),
+}
+
+/// `a.b[2].c` as its steps.
+fn segments(path: &str) -> Result<Vec<Segment>, String> {
+    let mut out = Vec::new();
+    for part in path.split('.') {
+        let (name, mut rest) = part.split_once('[').map_or((part, ""), |(n, r)| (n, r));
+        if name.is_empty() && rest.is_empty() {
+            return Err(format!("'{path}' has an empty step"));
+        }
+        if !name.is_empty() {
+            out.push(Segment::Field(name.to_owned()));
+        }
+        while !rest.is_empty() {
+            let (index, after) = rest
+                .split_once(']')
+                .ok_or(format!("'{path}': a [ is not closed"))?;
+            let index = index
+                .parse()
+                .map_err(|_| format!("'{path}': [{index}] is not an index"))?;
+            out.push(Segment::Index(index));
+            rest = after.strip_prefix('[').unwrap_or(after);
+            if !after.is_empty() && !after.starts_with('[') {
+                return Err(format!("'{path}': expected . or [ after ]"));
+            }
+        }
+    }
+    Ok(out)
+}
+
+/// The object at `key` of the scene's top level, made if missing.
+fn object_at<'a>(
+    json: &'a mut Json,
+    key: &str,
+) -> Result<&'a mut serde_json::Map<String, Json>, String> {
+    let top = json
+        .as_object_mut()
+        .ok_or("the scene is not a JSON object")?;
+    top.entry(key)
+        .or_insert_with(|| Json::Object(Default::default()))
+        .as_object_mut()
+        .ok_or_else(|| format!("'{key}' is not an object"))
+}
+
+/// Sets the number at `path`. Every step but the last must exist (the scene
+/// has the material, the light, the object); the last may be a field the
+/// file leaves at its default, which the loader then checks by name.
+fn set(json: &mut Json, path: &[Segment], value: f64) -> Result<(), String> {
+    let Some((last, steps)) = path.split_last() else {
+        return Err("the path is empty".into());
+    };
+    let mut here = json;
+    let mut walked = String::new();
+    for step in steps {
+        here = match step {
+            Segment::Field(f) => {
+                let known = keys(here);
+                let next = here.get_mut(f.as_str());
+                walked = join(&walked, step);
+                next.ok_or_else(|| format!("the scene has no '{walked}' ({known})"))?
+            }
+            Segment::Index(i) => {
+                let len = here.as_array().map_or(0, Vec::len);
+                walked = join(&walked, step);
+                here.get_mut(*i)
+                    .ok_or_else(|| format!("the scene has no '{walked}' (the list has {len})"))?
+            }
+        };
+    }
+    let number = if value.fract() == 0.0 && value.abs() < 9e15 {
+        Json::from(value as i64)
+    } else {
+        Json::from(value)
+    };
+    let target = match last {
+        Segment::Field(f) => here
+            .as_object_mut()
+            .map(|o| o.entry(f.as_str()).or_insert(Json::Null)),
+        Segment::Index(i) => here.get_mut(*i),
+    };
+    let walked = join(&walked, last);
+    match target {
+        Some(t) if t.is_null() || t.is_number() => {
+            *t = number;
+            Ok(())
+        }
+        Some(_) => Err(format!("'{walked}' is not a number")),
+        None => Err(format!("the scene has no '{walked}'")),
+    }
+}
+
+/// The path walked so far, one step longer.
+fn join(walked: &str, step: &Segment) -> String {
+    match step {
+        Segment::Field(f) if walked.is_empty() => f.clone(),
+        Segment::Field(f) => format!("{walked}.{f}"),
+        Segment::Index(i) => format!("{walked}[{i}]"),
+    }
+}
+
+/// What an object holds, for an error message.
+fn keys(json: &Json) -> String {
+    match json.as_object() {
+        Some(o) if o.is_empty() => "it is empty".into(),
+        Some(o) => format!(
+            "it has {}",
+            o.keys().cloned().collect::<Vec<_>>().join(", ")
+        ),
+        None => "it is not an object".into(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scene::loader::WHITTED;
+
+    fn with(path: &str, value: f64) -> Result<Scene, String> {
+        scene_with(WHITTED, "whitted.json", &Overrides::default(), path, value)
+    }
+
+    #[test]
+    fn ranges_and_lists_read_as_values() {
+        assert_eq!(
+            parse("max_depth=1..5").unwrap().values,
+            [1.0, 2.0, 3.0, 4.0, 5.0]
+        );
+        let v = parse("materials.glass.ior=1.0, 1.33,1.5").unwrap();
+        assert_eq!(
+            (v.path.as_str(), v.values),
+            ("materials.glass.ior", vec![1.0, 1.33, 1.5])
+        );
+        assert!(
+            parse("max_depth=1.5..3")
+                .unwrap_err()
+                .contains("whole numbers")
+        );
+        assert!(
+            parse("max_depth=1..40")
+                .unwrap_err()
+                .contains("more than 12")
+        );
+        assert!(parse("max_depth").is_err());
+        assert!(
+            parse("ior=a,b")
+                .unwrap_err()
+                .contains("'a' is not a finite number")
+        );
+    }
+
+    #[test]
+    fn a_varied_field_reaches_the_scene() {
+        assert_eq!(with("max_depth", 3.0).unwrap().settings.max_depth, 3);
+        let glass = |s: &Scene| s.materials.iter().find(|m| m.name == "glass").unwrap().ior;
+        assert_eq!(glass(&with("materials.glass.ior", 1.33).unwrap()), 1.33);
+        // A field the file leaves at its default can be varied too.
+        let s = with("materials.air.shininess", 7.0).unwrap();
+        assert_eq!(
+            s.materials
+                .iter()
+                .find(|m| m.name == "air")
+                .unwrap()
+                .shininess,
+            7.0
+        );
+        assert_eq!(
+            with("lights[1].position[0]", 2.0).unwrap().lights[1]
+                .position
+                .x,
+            2.0
+        );
+        // The command line's settings apply, and the varied one wins.
+        let o = Overrides {
+            width: Some(40),
+            max_depth: Some(7),
+            ..Overrides::default()
+        };
+        let s = scene_with(WHITTED, "w.json", &o, "render.max_depth", 2.0).unwrap();
+        assert_eq!((s.settings.width, s.settings.max_depth), (40, 2));
+    }
+
+    #[test]
+    fn a_missing_field_or_a_bad_value_is_one_line() {
+        let e = with("materials.steel.ior", 1.5).unwrap_err();
+        assert_eq!(
+            e,
+            "--vary materials.steel.ior=1.5: the scene has no 'materials.steel' (it has air, checker, glass, mirror)"
+        );
+        let e = with("max_depth", 0.0).unwrap_err();
+        assert_eq!(
+            e,
+            "--vary max_depth=0: render.max_depth: must be 1 to 1000, got 0"
+        );
+        assert!(
+            with("materials.glass.ior", -1.0)
+                .unwrap_err()
+                .contains("materials.glass.ior: a refractive index must be > 0")
+        );
+        assert!(
+            with("materials.glass.iior", 1.0)
+                .unwrap_err()
+                .contains("unknown field `iior`")
+        );
+        assert!(with("max_depth", 2.5).unwrap_err().contains("max_depth"));
+        assert!(
+            with("sphere", 1.0)
+                .unwrap_err()
+                .starts_with("--vary sphere=1: render.sphere: ")
+        );
+        assert!(
+            with("materials.glass", 1.0)
+                .unwrap_err()
+                .contains("'materials.glass' is not a number")
+        );
+        assert!(
+            with("lights[5].color", 1.0)
+                .unwrap_err()
+                .contains("the list has 2")
+        );
+    }
+}

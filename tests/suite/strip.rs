@@ -1,0 +1,112 @@
+//! `raytree strip`: a frame per value with the share of pixels that changed,
+//! as `raytree diff` measures it, and one-line errors for a field that does
+//! not exist or a value the scene refuses.
+
+use std::process::Command;
+
+use crate::cli::fails_in;
+
+#[test]
+fn a_strip_has_a_frame_per_value_and_the_changes_raytree_diff_measures() {
+    let dir = std::env::temp_dir().join(format!("raytree-strip-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let run = |args: &[&str]| {
+        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(args)
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let size = ["--width", "64", "--height", "48"];
+    let printed = run(&[
+        &["strip", "--vary", "max_depth=1..3", "-o", "s.png"][..],
+        &size,
+    ]
+    .concat());
+    let png = image::open(dir.join("s.png")).unwrap();
+    // Three 64-pixel frames with gaps and margins are narrower than the 480-pixel minimum.
+    assert_eq!(png.width(), 480);
+    // The second frame's share is what raytree diff says of depth 1 against depth 2.
+    for depth in ["1", "2"] {
+        run(&[
+            &[
+                "render",
+                "--max-depth",
+                depth,
+                "-q",
+                "-o",
+                &format!("d{depth}.png"),
+            ][..],
+            &size,
+        ]
+        .concat());
+    }
+    let diff = run(&["diff", "d1.png", "d2.png"]);
+    let share = diff.split(", ").nth(2).unwrap().split('%').next().unwrap();
+    let share: f64 = share.parse().unwrap();
+    let line = printed.lines().nth(1).unwrap();
+    assert!(
+        line.starts_with(&format!("max_depth = 2: {share:.1}% of pixels changed")),
+        "{line} against {diff}"
+    );
+    // The same strip twice is the same file.
+    let again = run(&[
+        &["strip", "--vary", "max_depth=1..3", "-o", "t.png"][..],
+        &size,
+    ]
+    .concat());
+    assert_eq!(printed, again);
+    assert_eq!(
+        std::fs::read(dir.join("s.png")).unwrap(),
+        std::fs::read(dir.join("t.png")).unwrap()
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+#[test]
+fn bad_variations_are_one_line_errors() {
+    let e = fails_in(
+        "strip",
+        "strip-missing",
+        None,
+        &["--vary", "materials.steel.ior=1,2"],
+    );
+    assert!(
+        e.starts_with("error: --vary materials.steel.ior=1: the scene has no 'materials.steel'"),
+        "{e}"
+    );
+    let e = fails_in("strip", "strip-range", None, &["--vary", "max_depth=0..2"]);
+    assert_eq!(
+        e,
+        "error: --vary max_depth=0: render.max_depth: must be 1 to 1000, got 0"
+    );
+    let e = fails_in(
+        "strip",
+        "strip-ior",
+        None,
+        &["--vary", "materials.glass.ior=1.5,-1"],
+    );
+    assert!(e.contains("a refractive index must be > 0, got -1"), "{e}");
+    let e = fails_in("strip", "strip-width", None, &["--vary", "width=100,200"]);
+    assert!(e.contains("share one size"), "{e}");
+    let dir = std::env::temp_dir();
+    for bad in ["max_depth", "max_depth=1..40", "max_depth=a,b"] {
+        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(["strip", "--vary", bad])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert_eq!(
+            out.status.code(),
+            Some(2),
+            "{bad}: a malformed command line"
+        );
+    }
+}
