@@ -115,6 +115,11 @@ impl Bvh {
         }
     }
 
+    /// The primitives as the leaves list them, leaf by leaf.
+    pub fn leaf_order(&self) -> &[u32] {
+        &self.order
+    }
+
     /// Renames the primitives: leaf entry `i` becomes `name(i)`, so a hierarchy
     /// built over a subset can hand out the indices the caller uses, with no
     /// second lookup per visit.
