@@ -70,9 +70,10 @@ fn main() {
 
     println!("\nTime per ray against object count (random spheres, 320×240, 1 spp)");
     println!(
-        "{:>9} {:>12} {:>14} {:>14} {:>12} {:>12}",
-        "objects", "build ms", "BVH memory", "rays", "ns/ray BVH", "ns/ray none"
+        "{:>9} {:>10} {:>10} {:>14} {:>14} {:>12} {:>12}",
+        "objects", "parse ms", "build ms", "BVH memory", "rays", "ns/ray BVH", "ns/ray none"
     );
+    let mut per_ray = Vec::new();
     let counts: &[usize] = if quick {
         &[10, 1000]
     } else {
@@ -80,8 +81,10 @@ fn main() {
     };
     for &n in counts {
         let text = raytree::scene::generate::random_spheres(n, 1);
+        let start = Instant::now();
         let mut scene =
             raytree::scene::loader::parse(&text, "random.json").expect("generated scene");
+        let parse = start.elapsed().as_secs_f64();
         scene.settings.width = 320;
         scene.settings.height = 240;
         scene.settings.accel = Accel::Bvh;
@@ -99,14 +102,24 @@ fn main() {
         } else {
             "(too slow)".to_owned()
         };
+        per_ray.push((n, with / rays as f64));
         println!(
-            "{:>9} {:>12.2} {:>11.1} KB {:>14} {:>12.0} {:>12}",
+            "{:>9} {:>10.1} {:>10.2} {:>11.1} KB {:>14} {:>12.0} {:>12}",
             n,
+            1e3 * parse,
             1e3 * build,
             memory as f64 / 1024.0,
             rays,
             1e9 * with / rays as f64,
             none
+        );
+    }
+
+    let at = |n: usize| per_ray.iter().find(|p| p.0 == n).map(|p| p.1);
+    if let (Some(small), Some(large)) = (at(1_000), at(1_000_000)) {
+        println!(
+            "time per ray, 1,000,000 ÷ 1,000 objects: {:.2}× (target ≤ 2×)",
+            large / small
         );
     }
 

@@ -5,17 +5,27 @@
 # hand-written POV-Ray twins (whitted.pov, spheres.pov beside this script) at
 # 640×480 and 1280×960, 1 sample per pixel (antialiasing off), max depth 8, on
 # all cores, alternating the two renderers run after run so a busy machine slows
-# both alike. Prints each side's median wall time (the whole command: start-up,
-# parsing and rendering), the ratio, and how far the images differ in 8-bit.
+# both alike. Prints, as medians:
+#   - each side's wall time for the whole command (start-up, parsing, building,
+#     rendering, writing the PNG) and their ratio, and
+#   - each side's own report of its rendering time (POV-Ray's "Trace Time",
+#     raytree's "in … s", both without start-up, parsing and writing the file)
+#     and their ratio: POV-Ray's fixed start-up (about 0.7 s) flatters small
+#     images in the first ratio, not in this one,
+# and how far the images differ in 8-bit.
 #
-# Usage: benches/povray/compare.sh [RUNS]     (RUNS defaults to 5)
-# Installs POV-Ray from the system's package manager (apt-get) if it is missing.
+# Usage: benches/povray/compare.sh [RUNS] [SIZES]
+#   RUNS defaults to 5; SIZES to "640x480 1280x960" (e.g. "160x120" for a quick check).
+# Installs POV-Ray from the system's package manager (apt-get) if it is missing,
+# and waits (see ../idle.sh) until the machine is idle enough to time.
 set -euo pipefail
 
 runs=${1:-5}
-[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "usage: $0 [RUNS]" >&2; exit 2; }
+sizes=${2:-640x480 1280x960}
+[[ $runs =~ ^[1-9][0-9]*$ ]] || { echo "usage: $0 [RUNS] [SIZES]" >&2; exit 2; }
 here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
+source "$here/../idle.sh"
 cores=$(nproc)
 
 if ! command -v povray >/dev/null; then
@@ -33,7 +43,7 @@ raytree="$root/target/release/raytree"
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 
-# Wall time of one command in seconds.
+# Runs a command; prints its wall time in seconds, keeps its stderr in $out/stderr.
 wall() {
     local start end
     start=$(date +%s.%N)
@@ -42,29 +52,34 @@ wall() {
     awk -v a="$start" -v b="$end" 'BEGIN { printf "%.6f\n", b - a }'
 }
 
-median() {
-    sort -g | awk '{ v[NR] = $1 } END { if (NR % 2) print v[(NR + 1) / 2]; else print (v[NR / 2] + v[NR / 2 + 1]) / 2 }'
-}
+ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2fx", a / b }'; }
 
-echo "raytree $("$raytree" --version | cut -d' ' -f2) vs $povray_version, $cores cores, median of $runs alternating runs"
-printf '%-8s %-9s %12s %12s %8s   %s\n' scene size raytree POV-Ray ratio "image difference (8-bit)"
+wait_for_idle
+echo "raytree $("$raytree" --version | cut -d' ' -f2) vs $povray_version, $cores cores, median of $runs alternating runs$busy"
+printf '%-8s %-9s | %9s %9s %7s | %9s %9s %7s | %s\n' scene size \
+    "raytree" "POV-Ray" "ratio" "raytree" "POV-Ray" "ratio" "image difference (8-bit)"
+printf '%-8s %-9s | %-27s | %-27s |\n' "" "" "wall time, whole command" "own render / trace time"
 for scene in whitted spheres; do
-    for size in 640x480 1280x960; do
+    for size in $sizes; do
         w=${size%x*}
         h=${size#*x}
-        ours=()
-        theirs=()
+        ours=() theirs=() ours_own=() theirs_own=()
         for ((i = 0; i < runs; i++)); do
             ours+=("$(wall "$raytree" render "$root/scenes/$scene.json" --width "$w" --height "$h" \
-                --spp 1 --max-depth 8 --threads "$cores" -q -o "$out/raytree.png")")
-            # POV-Ray finds spheres.inc in the working folder.
+                --spp 1 --max-depth 8 --threads "$cores" -o "$out/raytree.png")")
+            ours_own+=("$(sed -n 's/.* in \([0-9.]*\) s on .*/\1/p' "$out/stderr")")
+            # POV-Ray finds spheres.inc in the working folder; +GS prints its statistics (the trace time).
             theirs+=("$(cd "$here" && wall povray "+I$scene.pov" "+O$out/povray.png" "+W$w" "+H$h" \
-                -D -A +FN8 File_Gamma=sRGB "+WT$cores" -V -GA)")
+                -D -A +FN8 File_Gamma=sRGB "+WT$cores" -V +GS)")
+            theirs_own+=("$(sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p' "$out/stderr")")
         done
         t_ours=$(printf '%s\n' "${ours[@]}" | median)
         t_theirs=$(printf '%s\n' "${theirs[@]}" | median)
-        ratio=$(awk -v a="$t_theirs" -v b="$t_ours" 'BEGIN { printf "%.6f", a / b }')
+        o_ours=$(printf '%s\n' "${ours_own[@]}" | median)
+        o_theirs=$(printf '%s\n' "${theirs_own[@]}" | median)
         diff=$("$raytree" diff "$out/raytree.png" "$out/povray.png")
-        printf '%-8s %-9s %10.3f s %10.3f s %7.2fx   %s\n' "$scene" "$size" "$t_ours" "$t_theirs" "$ratio" "$diff"
+        printf '%-8s %-9s | %7.3f s %7.3f s %7s | %7.3f s %7.3f s %7s | %s\n' "$scene" "$size" \
+            "$t_ours" "$t_theirs" "$(ratio "$t_theirs" "$t_ours")" \
+            "$o_ours" "$o_theirs" "$(ratio "$o_theirs" "$o_ours")" "$diff"
     done
 done

@@ -24,7 +24,13 @@ pub struct Mesh {
     pub faces: Vec<[u32; 3]>,
     /// Normal indices of each triangle, if the mesh has normals.
     pub face_normals: Vec<[u32; 3]>,
+    /// The hierarchy over the faces; its leaves name positions in `leaf_triangles`.
     bvh: Bvh,
+    /// Every face's corners, in the order the hierarchy's leaves list them, so a
+    /// leaf's triangles lie side by side in memory and a test reads no indices.
+    leaf_triangles: Vec<Triangle>,
+    /// The face each entry of `leaf_triangles` is.
+    leaf_faces: Vec<u32>,
 }
 
 impl Mesh {
@@ -42,6 +48,8 @@ impl Mesh {
             faces,
             face_normals,
             bvh: Bvh::build(&[]),
+            leaf_triangles: Vec::new(),
+            leaf_faces: Vec::new(),
         };
         let bounds: Vec<Bounds> = (0..mesh.faces.len())
             .map(|f| {
@@ -50,6 +58,15 @@ impl Mesh {
             })
             .collect();
         mesh.bvh = Bvh::build(&bounds);
+        mesh.leaf_faces = mesh.bvh.leaf_order().to_vec();
+        mesh.leaf_triangles = (mesh.leaf_faces.iter())
+            .map(|&f| mesh.triangle(f as usize))
+            .collect();
+        let mut position = vec![0; mesh.faces.len()];
+        for (i, &f) in mesh.leaf_faces.iter().enumerate() {
+            position[f as usize] = i as u32;
+        }
+        mesh.bvh.relabel(|f| position[f as usize]);
         mesh
     }
 
@@ -90,11 +107,12 @@ impl Mesh {
         let mut faces = 0;
         let _ = self
             .bvh
-            .traverse(&RayBox::new(ray), 0.0, &mut t_max, tested, |face, t_max| {
+            .traverse(&RayBox::new(ray), 0.0, &mut t_max, tested, |at, t_max| {
                 faces += 1;
-                if let Some(hit) = self.hit_face(face, ray, &sheared, method, *t_max) {
+                let tri = &self.leaf_triangles[at];
+                if let Some(hit) = hit_triangle(tri, ray, &sheared, method, *t_max) {
                     *t_max = hit.t;
-                    nearest = Some((hit.t, face));
+                    nearest = Some((hit.t, self.leaf_faces[at]));
                     if search == Search::Any {
                         return ControlFlow::Break(());
                     }
@@ -102,7 +120,7 @@ impl Mesh {
                 ControlFlow::Continue(())
             });
         tested.primitives += faces;
-        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_face(t, face as u32))
+        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_face(t, face))
     }
 
     #[inline]
@@ -114,11 +132,7 @@ impl Mesh {
         method: TriangleMethod,
         t_max: f64,
     ) -> Option<TriangleHit> {
-        let tri = self.triangle(face);
-        match method {
-            TriangleMethod::Watertight => tri.watertight(sheared, 0.0, t_max),
-            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, 0.0, t_max),
-        }
+        hit_triangle(&self.triangle(face), ray, sheared, method, t_max)
     }
 
     /// The surface where `ray` meets face `face` at `t`.
@@ -139,6 +153,21 @@ impl Mesh {
             ]
         });
         tri.surface(&hit, normals)
+    }
+}
+
+/// The hit of `ray` with `tri` in `(0, t_max)` by `method`.
+#[inline]
+fn hit_triangle(
+    tri: &Triangle,
+    ray: &Ray,
+    sheared: &ShearedRay,
+    method: TriangleMethod,
+    t_max: f64,
+) -> Option<TriangleHit> {
+    match method {
+        TriangleMethod::Watertight => tri.watertight(sheared, 0.0, t_max),
+        TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, 0.0, t_max),
     }
 }
 

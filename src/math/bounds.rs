@@ -100,6 +100,18 @@ impl RayBox {
         }
     }
 
+    /// The ray's origin.
+    #[inline]
+    pub fn origin(&self) -> DVec3 {
+        self.origin
+    }
+
+    /// The reciprocal of the ray's direction, per component.
+    #[inline]
+    pub fn inv_dir(&self) -> DVec3 {
+        self.inv_dir
+    }
+
     /// Whether the direction's component along `axis` is negative: the child of a
     /// split on that axis with the larger coordinates is the nearer one.
     #[inline]

@@ -23,17 +23,27 @@ pub fn gamma(n: u32) -> f64 {
 /// component one more ULP away (pbrt-v4's `OffsetRayOrigin`). Unlike pbrt, the
 /// last ULP is taken even when the bound is zero, so the origin always leaves the
 /// surface.
+#[inline]
 pub fn offset_ray_origin(p: DVec3, p_error: DVec3, n: DVec3, w: DVec3) -> DVec3 {
     let side = if w.dot(n) < 0.0 { -n } else { n };
-    let mut po = p + n.abs().dot(p_error) * side;
-    for i in 0..3 {
-        if side[i] > 0.0 {
-            po[i] = po[i].next_up();
-        } else if side[i] < 0.0 {
-            po[i] = po[i].next_down();
-        }
+    let po = p + n.abs().dot(p_error) * side;
+    DVec3::new(
+        one_ulp_toward(po.x, side.x),
+        one_ulp_toward(po.y, side.y),
+        one_ulp_toward(po.z, side.z),
+    )
+}
+
+/// `x` moved one ULP in the direction of `s`'s sign (not at all for a zero `s`).
+#[inline(always)]
+fn one_ulp_toward(x: f64, s: f64) -> f64 {
+    if s > 0.0 {
+        x.next_up()
+    } else if s < 0.0 {
+        x.next_down()
+    } else {
+        x
     }
-    po
 }
 
 #[cfg(test)]

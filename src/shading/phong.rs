@@ -61,7 +61,7 @@ pub fn direct(
     let r = 2.0 * n_dot_l * n - l;
     let r_dot_v = r.dot(v).max(0.0);
     let highlight = if material.specular > 0.0 && r_dot_v > 0.0 {
-        material.specular * r_dot_v.powf(material.shininess)
+        material.specular * power(r_dot_v, material.shininess)
     } else {
         0.0
     };
@@ -71,6 +71,19 @@ pub fn direct(
         diffuse: material.diffuse * n_dot_l * color * light,
         specular: highlight * light,
         ..unlit
+    }
+}
+
+/// `x^e`: by repeated squaring (`powi`) when the exponent is a whole number, as
+/// Phong exponents nearly always are, which costs a few multiplications instead
+/// of a general `powf`. The two can differ in the last bits, far below what an
+/// 8-bit pixel shows.
+#[inline]
+pub fn power(x: f64, e: f64) -> f64 {
+    if e == e.trunc() && e.abs() <= 4096.0 {
+        x.powi(e as i32)
+    } else {
+        x.powf(e)
     }
 }
 
@@ -108,6 +121,20 @@ mod tests {
         // Viewer straight above: R·V = cos 60° = 0.5, highlight 0.5·0.5¹⁰.
         let d = direct(&m, color, n, l, DVec3::Y, DVec3::ONE);
         assert!((d.specular.x - 0.5 * 0.5f64.powi(10)).abs() < 1e-15);
+    }
+
+    #[test]
+    fn whole_exponents_by_squaring_agree_with_powf() {
+        // Tolerance: each squaring doubles the relative error carried so far, so the
+        // roundings add up to about e half-ULPs: e·ε relative (9e-13 at e = 4096,
+        // 4.4e-14 at 200, where an 8-bit pixel resolves 4e-3).
+        for e in [1.0, 2.0, 10.0, 200.0, 4096.0, 2.5] {
+            for x in [0.1, 0.5, 0.9232, 0.999] {
+                let (fast, exact) = (power(x, e), x.powf(e));
+                let tolerance = e.max(1.0) * f64::EPSILON * exact;
+                assert!((fast - exact).abs() <= tolerance, "{x}^{e}: {fast} {exact}");
+            }
+        }
     }
 
     #[test]

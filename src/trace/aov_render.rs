@@ -196,6 +196,9 @@ pub fn render_aov(
                 let mut rec = AovRecorder::new(scene, aov);
                 let mut at = Vec::new();
                 let (x, y) = (x as u32, y as u32);
+                // Each pixel starts with no remembered blocker, as `raytree
+                // trace` does: its counts are its own, whatever the threads.
+                tracer.forget_recent();
                 pixel_color_at(&tracer, &camera, x, y, &mut rec, Some(&mut at));
                 *value = pixel_value(aov, &rec.samples, &at, (x, y));
             }

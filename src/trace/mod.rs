@@ -5,6 +5,7 @@
 pub mod recorder; // what the tracer reports, and to whom
 pub mod tracer; // the lecture's raytrace(): closest hit, shadow rays, reflection, refraction
 pub mod accelerator; // which objects a ray is tested against
+pub mod recent; // try the recent hit first: the last blocker of each light's shadow rays
 pub mod pixel; // one pixel's rays: its center, a grid, or adaptive subdivision
 pub mod render; // every pixel, on all cores
 pub mod aov; // per-pixel quantities that explain an image: what each is and how it reads

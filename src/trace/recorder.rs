@@ -113,6 +113,18 @@ pub struct ShadowEvent {
     pub outcome: ShadowOutcome,
     /// The boxes and primitives it was tested against.
     pub tested: TestCounts,
+    /// The object tried before any other, if this light's shadow rays on this
+    /// thread were blocked before (the lecture's "try the recent hit first").
+    pub recent: Option<RecentTry>,
+}
+
+/// The last blocker of a light's shadow rays, tried first by the next one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct RecentTry {
+    /// Index of the object.
+    pub object: usize,
+    /// Whether it blocks this shadow ray too (then nothing else was tested).
+    pub blocks: bool,
 }
 
 /// The start of a hit's local color: the surface's color there and the

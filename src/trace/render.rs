@@ -1,7 +1,7 @@
 //! The full renderer: every pixel, in parallel on all cores.
 //!
 //! Each pixel depends on nothing but the scene, so the image is the same bit for
-//! bit whatever the number of threads or the order rows finish in.
+//! bit whatever the number of threads or the order tiles finish in.
 
 use glam::DVec3;
 use indicatif::ProgressBar;
@@ -12,6 +12,9 @@ use crate::scene::Scene;
 use crate::trace::pixel::pixel_color;
 use crate::trace::recorder::{NoRecorder, RayCounter, Recorder};
 use crate::trace::tracer::Tracer;
+
+/// Pixels are traced in square tiles of this side.
+const TILE: usize = 8;
 
 /// Renders the scene at its settings' size, reporting finished rows to `progress`.
 /// Fails only if the image's memory cannot be had.
@@ -28,6 +31,15 @@ pub fn render_counting(
     progress: &ProgressBar,
 ) -> Result<(Image, RayCounter), std::collections::TryReserveError> {
     render_with::<RayCounter>(scene, progress)
+}
+
+/// Renders with a tracer already built (its hierarchy too): what a sweep over
+/// settings that share one hierarchy needs.
+pub fn render_with_tracer(
+    tracer: &Tracer,
+    progress: &ProgressBar,
+) -> Result<Image, std::collections::TryReserveError> {
+    render_traced::<NoRecorder>(tracer, progress).map(|(image, _)| image)
 }
 
 /// Renders with a tracer already built (its hierarchy too), counting every ray
@@ -59,15 +71,25 @@ fn render_traced<R: Recorder + Default + Send + Tally>(
     pixels.resize(width as usize * height as usize, DVec3::ZERO);
     let camera = scene.camera();
     progress.set_length(u64::from(height));
+    // Bands of TILE rows, traced TILE × TILE pixels at a time: neighbouring rays
+    // meet the same boxes and objects, which then stay in the cache.
     let tally = pixels
-        .par_chunks_mut(width as usize)
+        .par_chunks_mut(TILE * width as usize)
         .enumerate()
-        .map(|(y, row)| {
+        .map(|(band, rows)| {
             let mut rec = R::default();
-            for (x, pixel) in row.iter_mut().enumerate() {
-                *pixel = pixel_color(tracer, &camera, x as u32, y as u32, &mut rec);
+            let y0 = band * TILE;
+            let band_height = rows.len() / width as usize;
+            for x0 in (0..width as usize).step_by(TILE) {
+                for dy in 0..band_height {
+                    for x in x0..(x0 + TILE).min(width as usize) {
+                        let (px, py) = (x as u32, (y0 + dy) as u32);
+                        rows[dy * width as usize + x] =
+                            pixel_color(tracer, &camera, px, py, &mut rec);
+                    }
+                }
             }
-            progress.inc(1);
+            progress.inc(band_height as u64);
             rec
         })
         .reduce(R::default, R::merge);

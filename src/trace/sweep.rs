@@ -16,7 +16,8 @@ use crate::io::image::{Image, to_rgb8};
 use crate::methods::{Antialiasing, Offset, SphereMethod};
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
-use crate::trace::render::render;
+use crate::trace::render::render_with_tracer;
+use crate::trace::tracer::Tracer;
 
 /// One point of the sweep.
 #[derive(Clone, Debug, PartialEq)]
@@ -125,33 +126,32 @@ pub fn reference_settings(base: &RenderSettings) -> RenderSettings {
     }
 }
 
-/// Renders every setting of the sweep `runs` times and measures it.
+/// Renders every setting of the sweep `runs` times and measures it. The scene's
+/// hierarchy is built once and shared by every setting (none of them changes
+/// the objects), so only tracing is timed.
 pub fn measure(scene: &Scene, runs: usize, progress: &ProgressBar) -> Vec<Point> {
     let points = sweep(&scene.settings);
     progress.set_length(points.len() as u64 + 1);
-    let mut reference_scene = scene.clone();
-    reference_scene.settings = reference_settings(&scene.settings);
-    let reference =
-        render(&reference_scene, &ProgressBar::hidden()).expect("the size was validated");
+    let base = Tracer::new(scene);
+    let render = |settings: RenderSettings| {
+        let mut s = scene.clone();
+        s.settings = settings;
+        let started = Instant::now();
+        let image = render_with_tracer(&base.with_settings(&s), &ProgressBar::hidden())
+            .expect("the size was validated");
+        (image, started.elapsed().as_secs_f64())
+    };
+    let (reference, _) = render(reference_settings(&scene.settings));
     progress.inc(1);
     let reference8 = to_rgb8(&reference);
-    let scenes: Vec<Scene> = points
-        .iter()
-        .map(|(_, settings, _)| {
-            let mut s = scene.clone();
-            s.settings = *settings;
-            s
-        })
-        .collect();
     // Runs alternate over the settings, so a machine that slows down or speeds up
     // during the sweep shifts every setting alike.
-    let mut times = vec![Vec::with_capacity(runs); scenes.len()];
-    let mut images = vec![None; scenes.len()];
+    let mut times = vec![Vec::with_capacity(runs); points.len()];
+    let mut images = vec![None; points.len()];
     for run in 0..runs.max(1) {
-        for (k, s) in scenes.iter().enumerate() {
-            let started = Instant::now();
-            let image = render(s, &ProgressBar::hidden()).expect("the size was validated");
-            times[k].push(started.elapsed().as_secs_f64());
+        for (k, (_, settings, _)) in points.iter().enumerate() {
+            let (image, seconds) = render(*settings);
+            times[k].push(seconds);
             images[k] = Some(image);
         }
         progress.set_position(1 + (points.len() * (run + 1) / runs.max(1)) as u64);

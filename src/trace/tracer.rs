@@ -23,6 +23,7 @@
 #![cfg_attr(raytree_no_hooks, allow(unused_variables, unused_imports))]
 
 use std::ops::ControlFlow;
+use std::sync::Arc;
 
 use glam::DVec3;
 
@@ -34,9 +35,10 @@ use crate::shading::material::Material;
 use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
+use crate::trace::recent::RecentBlockers;
 use crate::trace::recorder::{
-    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart, Recorder,
-    ShadowEvent, ShadowOutcome, SumEvent,
+    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart,
+    RecentTry, Recorder, ShadowEvent, ShadowOutcome, SumEvent,
 };
 
 /// A shadow ray ends at `t = 1 - SHADOW_EPSILON` of the way to its light, so a
@@ -44,12 +46,16 @@ use crate::trace::recorder::{
 /// tuning to the scene's size.
 pub const SHADOW_EPSILON: f64 = 1e-9;
 
+/// Where a shadow ray ends: `t = 1` is the light.
+const SHADOW_T_MAX: f64 = 1.0 - SHADOW_EPSILON;
+
 /// Traces rays through one scene.
 #[derive(Clone, Debug)]
 pub struct Tracer<'s> {
     scene: &'s Scene,
     eye_media: Media,
-    accel: Accelerator,
+    accel: Arc<Accelerator>,
+    recent: RecentBlockers,
 }
 
 impl<'s> Tracer<'s> {
@@ -59,7 +65,22 @@ impl<'s> Tracer<'s> {
         Self {
             scene,
             eye_media: scene.media_at(eye),
-            accel: Accelerator::new(scene),
+            accel: Arc::new(Accelerator::new(scene)),
+            recent: RecentBlockers::new(),
+        }
+    }
+
+    /// A tracer for `scene`, which has this tracer's objects and accelerator
+    /// setting but other render settings, sharing this one's accelerator
+    /// instead of building it again (a sweep over settings builds it once).
+    pub fn with_settings<'t>(&self, scene: &'t Scene) -> Tracer<'t> {
+        debug_assert!(scene.objects.len() == self.scene.objects.len());
+        debug_assert!(scene.settings.accel == self.scene.settings.accel);
+        Tracer {
+            scene,
+            eye_media: self.eye_media,
+            accel: Arc::clone(&self.accel),
+            recent: RecentBlockers::new(),
         }
     }
 
@@ -84,6 +105,12 @@ impl<'s> Tracer<'s> {
             t_max: f64::INFINITY,
         };
         self.raytrace(&start, &self.eye_media, rec)
+    }
+
+    /// Forgets the blockers this thread remembered ("try the recent hit
+    /// first"), so the next pixel's test counts are its own.
+    pub fn forget_recent(&self) {
+        self.recent.forget();
     }
 
     /// The lecture's `raytrace(ray)`, one line of its pseudo-code (in the module
@@ -270,55 +297,85 @@ impl<'s> Tracer<'s> {
     /// first opaque object found before the light, dimmed by transparent ones.
     fn shadow_ray(&self, light: usize, hit: &HitEvent, surface: &Surface) -> ShadowEvent {
         let position = self.scene.lights[light].position;
-        let t_max = 1.0 - SHADOW_EPSILON;
+        let mut event = ShadowEvent {
+            light,
+            ray: Ray::new(surface.point, position - surface.point),
+            t_max: SHADOW_T_MAX,
+            outcome: ShadowOutcome::FacesAway,
+            tested: TestCounts::default(),
+            recent: None,
+        };
         if hit.shading_normal.dot(position - surface.point) <= 0.0 {
-            let ray = Ray::new(surface.point, position - surface.point);
-            return ShadowEvent {
-                light,
-                ray,
-                t_max,
-                outcome: ShadowOutcome::FacesAway,
-                tested: TestCounts::default(),
-            };
+            return event;
         }
         let origin = surface.ray_origin(self.scene.settings.offset, position - surface.point);
-        let ray = Ray::new(origin, position - origin);
+        event.ray = Ray::new(origin, position - origin);
+        // Try the recent hit first: the object that last blocked this light
+        // (on this thread; see `crate::trace::recent`).
+        let recent = self.recent.get(light).map(|object| {
+            (
+                object,
+                self.shadow_test(object, &event.ray, &mut event.tested),
+            )
+        });
+        event.recent = recent.map(|(object, t)| RecentTry {
+            object,
+            blocks: t.is_some(),
+        });
+        event.outcome = match recent {
+            Some((object, Some(t))) => ShadowOutcome::Blocked { object, t },
+            _ => {
+                let skip = recent.map(|(object, _)| object);
+                let outcome = self.first_blocker(&event.ray, skip, &mut event.tested);
+                if let ShadowOutcome::Blocked { object, .. } = outcome {
+                    self.recent.set(light, object);
+                }
+                outcome
+            }
+        };
+        event
+    }
+
+    /// Where a shadow ray meets object `i` before its light, if it does.
+    #[inline]
+    fn shadow_test(&self, i: usize, ray: &Ray, tested: &mut TestCounts) -> Option<f64> {
         let methods = self.scene.settings.intersection_methods();
+        self.scene.objects[i]
+            .roots_within(ray, methods, SHADOW_T_MAX, Search::Any, tested)
+            .first_in(0.0, SHADOW_T_MAX)
+    }
+
+    /// The first opaque object a shadow ray meets before its light (the search
+    /// stops there), or else the light it keeps through the transparent ones.
+    /// Object `skip` was tested already.
+    #[inline(always)]
+    fn first_blocker(
+        &self,
+        ray: &Ray,
+        skip: Option<usize>,
+        tested: &mut TestCounts,
+    ) -> ShadowOutcome {
         let mut transmitted = 1.0;
         let mut blocked = None;
-        let (mut outer, mut inner) = (TestCounts::default(), TestCounts::default());
-        // Any opaque hit before the light ends the search: the hierarchy stops there.
+        let mut inner = TestCounts::default();
         let _ = self
             .accel
-            .visit(&ray, 0.0, &mut t_max.clone(), &mut outer, |i, _| {
-                let roots = self.scene.objects[i].roots_within(
-                    &ray,
-                    methods,
-                    t_max,
-                    Search::Any,
-                    &mut inner,
-                );
-                if let Some(t) = roots.first_in(0.0, t_max) {
+            .visit(ray, 0.0, &mut SHADOW_T_MAX.clone(), tested, |i, _| {
+                if Some(i) == skip {
+                    return ControlFlow::Continue(());
+                }
+                if let Some(t) = self.shadow_test(i, ray, &mut inner) {
                     let k = self.scene.material_of(i).transparent;
                     if k == 0.0 {
-                        blocked = Some((i, t));
+                        blocked = Some(ShadowOutcome::Blocked { object: i, t });
                         return ControlFlow::Break(());
                     }
                     transmitted *= k;
                 }
                 ControlFlow::Continue(())
             });
-        outer.add(inner);
-        ShadowEvent {
-            light,
-            ray,
-            t_max,
-            outcome: match blocked {
-                Some((object, t)) => ShadowOutcome::Blocked { object, t },
-                None => ShadowOutcome::Reaches { transmitted },
-            },
-            tested: outer,
-        }
+        tested.add(inner);
+        blocked.unwrap_or(ShadowOutcome::Reaches { transmitted })
     }
 
     /// Traces the reflected or refracted child at a hit, unless there is none:

@@ -144,6 +144,21 @@ pub struct ShadowRecord {
     /// The boxes and primitives it was tested against (it stops at the first
     /// opaque blocker).
     pub tested: TestCounts,
+    /// The object tried before any other: the last one that blocked a shadow
+    /// ray toward this light (the lecture's "try the recent hit first").
+    pub recent: Option<RecentRecord>,
+}
+
+/// The last blocker of a light's shadow rays, tried first by the next one.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RecentRecord {
+    /// Index of the object.
+    pub object: usize,
+    /// Its name.
+    pub name: String,
+    /// Whether it blocks this shadow ray too: then it was the only test.
+    pub blocks: bool,
 }
 
 /// What a shadow ray found.

@@ -21,7 +21,7 @@ use crate::tree::arithmetic::{
 };
 use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
+    BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree, RecentRecord,
     ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
 
@@ -339,6 +339,11 @@ impl Recorder for TreeRecorder<'_> {
             },
         };
         let name = self.scene.lights[s.light].name.clone();
+        let recent = s.recent.map(|r| RecentRecord {
+            object: r.object,
+            name: self.scene.objects[r.object].name.clone(),
+            blocks: r.blocks,
+        });
         self.top().shadow_rays.push(ShadowRecord {
             light: s.light,
             name,
@@ -347,6 +352,7 @@ impl Recorder for TreeRecorder<'_> {
             t_max: s.t_max,
             outcome,
             tested: s.tested,
+            recent,
         });
     }
 

@@ -277,7 +277,18 @@ pub fn shadow(s: &ShadowRecord) -> String {
             num(*t)
         ),
     };
-    format!("shadow ray to light '{}': {what}", s.name)
+    let recent = match &s.recent {
+        Some(r) if r.blocks => format!(
+            " (tried '{}' first, the last blocker of this light: the only test)",
+            r.name
+        ),
+        Some(r) => format!(
+            " (tried '{}' first, the last blocker of this light: not in the way now)",
+            r.name
+        ),
+        None => String::new(),
+    };
+    format!("shadow ray to light '{}': {what}{recent}", s.name)
 }
 
 /// The local color: the ambient term, then each light's diffuse and specular

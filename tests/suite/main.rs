@@ -20,6 +20,7 @@ mod inspector_tmux;
 mod povray;
 mod ray_tree;
 mod readme;
+mod recent;
 mod recursion;
 mod render;
 mod scenes;

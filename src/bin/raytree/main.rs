@@ -38,7 +38,7 @@ enum Command {
     Diagram(diagram::Args),
     /// Explore a scene in the terminal: pick a pixel, walk its ray tree step by step.
     Inspect(inspect::Args),
-    /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures).
+    /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures), rendered at half the scene's width and height unless --width/--height are given.
     Chart(chart::Args),
     /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
     Strip(strip::Args),

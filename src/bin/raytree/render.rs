@@ -69,7 +69,7 @@ pub fn run(args: &Args) -> Result<()> {
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
         eprintln!(
-            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.2} s on {threads} threads",
+            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.3} s on {threads} threads",
             path.display(),
             s.width,
             s.height,
