@@ -13,6 +13,7 @@ mod golden_traces;
 mod guide;
 mod inspector;
 mod inspector_tmux;
+mod media;
 mod povray;
 mod ray_tree;
 mod readme;
