@@ -16,15 +16,14 @@ pub struct Args {
     /// Start at this pixel (image coordinates) [default: the image's center].
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
-    /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "Overrides"])]
+    /// Open a saved trace (raytree trace --json) instead. Its scene is the SCENE given after it, or else the file the trace names, found beside the trace or from the current folder; a scene that changed since is left out (the trace is shown without its drawing).
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["pixel", "Overrides"])]
     trace: Option<PathBuf>,
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    if !std::io::stdout().is_terminal() {
-        bail!("raytree inspect needs a terminal (standard output is not one)");
-    }
+    // Everything is read and checked before the terminal is touched, so a
+    // rejection is one line on a terminal left as it was.
     let app = match &args.trace {
         None => {
             let (scene, source) = args.scene.load()?;
@@ -41,15 +40,16 @@ pub fn run(args: &Args) -> Result<()> {
             App::new(scene, source, args.pixel, true)
         }
         Some(path) => {
-            let trace = document::read(path)?;
-            let found = document::find_scene(&trace);
-            let changed = matches!(found, Some((_, false)));
-            let mut app = App::from_trace(trace, found.map(|(scene, _)| scene), true);
-            if changed {
-                app.message = format!("{} changed since the trace was saved", app.source.file);
+            let opened = document::open(path, args.scene.scene.as_deref())?;
+            let mut app = App::from_trace(opened.trace, opened.scene, true);
+            if let Some(note) = opened.note {
+                app.message = note;
             }
             app
         }
     };
+    if !std::io::stdout().is_terminal() {
+        bail!("raytree inspect needs a terminal (standard output is not one)");
+    }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
 }

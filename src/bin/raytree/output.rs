@@ -74,3 +74,9 @@ pub fn progress_bar(quiet: bool, template: &str) -> ProgressBar {
     );
     bar
 }
+
+/// A line on standard error; one that cannot be written (a closed or full
+/// stream) is dropped rather than ending the program in a panic.
+pub fn note(line: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{line}");
+}
