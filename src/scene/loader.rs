@@ -263,7 +263,7 @@ impl Builder<'_> {
             if let Some(first) = seen.insert(name, i) {
                 return Err(self.invalid(
                     format_args!("{list}[{i}].name"),
-                    format_args!("'{name}' is already the name of {list}[{first}] (names must differ; one left out is its kind and place, e.g. sphere3)"),
+                    format_args!("'{name}' is already the name of {list}[{first}] (names must differ; one left out is its kind and place, e.g. sphere3 or light0)"),
                 ));
             }
         }

@@ -302,7 +302,7 @@ fn bad_command_line_settings() {
     );
     assert_eq!(
         fails("cli-threads", None, &[scene, "--threads", "0"]),
-        "error: --threads: must be at least 1"
+        "error: --threads: must be 1 to 256, got 0"
     );
 }
 
@@ -341,44 +341,6 @@ fn usage_errors_exit_2_and_help_explains_every_flag() {
     ] {
         assert!(help.contains(flag), "--help lacks {flag}:\n{help}");
     }
-    std::fs::remove_dir_all(&dir).unwrap();
-}
-
-#[test]
-fn interrupting_a_render_leaves_no_file() {
-    let dir = workdir("interrupt");
-    let child = Command::new(env!("CARGO_BIN_EXE_raytree"))
-        .args([
-            "render", "--width", "4000", "--height", "3000", "--spp", "64", "-o", "big.png",
-        ])
-        .current_dir(&dir)
-        .stderr(std::process::Stdio::piped())
-        .spawn()
-        .unwrap();
-    // Wait until the temporary file exists, i.e. the render has started.
-    for _ in 0..500 {
-        if std::fs::read_dir(&dir).unwrap().next().is_some() {
-            break;
-        }
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    let kill = Command::new("kill")
-        .args(["-INT", &child.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(kill.success());
-    let out = child.wait_with_output().unwrap();
-    assert_eq!(
-        out.status.code(),
-        Some(130),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    let left: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name())
-        .collect();
-    assert!(left.is_empty(), "left behind: {left:?}");
     std::fs::remove_dir_all(&dir).unwrap();
 }
 

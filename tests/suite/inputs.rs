@@ -118,7 +118,7 @@ fn the_strict_format_has_no_holes() {
         (
             "duplicate-key",
             r#"{"objects": [{"sphere": {"radius": 1, "radius": 2}}]}"#,
-            "objects[0].sphere.radius: duplicate field `radius`",
+            "objects[0].sphere: duplicate field `radius`",
         ),
         (
             "duplicate-object",

@@ -8,6 +8,7 @@ mod diagram;
 mod diff;
 mod generate;
 mod inspect;
+mod memory;
 mod output;
 mod render;
 mod trace;
@@ -48,7 +49,7 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return usage_error(&e),
     };
-    output::remove_pending_on_interrupt();
+    output::clean_up_on_signals();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),
         Command::Trace(args) => trace::run(&args),
