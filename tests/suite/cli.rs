@@ -30,38 +30,18 @@ pub fn fails(name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
     fails_in("render", name, scene_text, extra)
 }
 
-/// As [`fails`], for any subcommand.
+/// As [`fails`], for any subcommand: the contract of [`crate::common::refused`].
 pub fn fails_in(command: &str, name: &str, scene_text: Option<&str>, extra: &[&str]) -> String {
-    let dir = workdir(name);
     let mut args = vec![command];
-    if let Some(text) = scene_text {
-        std::fs::write(dir.join("bad.json"), text).unwrap();
+    let files: Vec<(&str, &[u8])> = scene_text
+        .map(|t| ("bad.json", t.as_bytes()))
+        .into_iter()
+        .collect();
+    if scene_text.is_some() {
         args.push("bad.json");
     }
     args.extend_from_slice(extra);
-    let out = raytree(&args, &dir);
-    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
-    assert_eq!(
-        out.status.code(),
-        Some(1),
-        "{name}: exit code; stderr: {stderr}"
-    );
-    assert!(!stderr.contains("panicked"), "{name}: panicked: {stderr}");
-    let lines: Vec<&str> = stderr.lines().collect();
-    assert_eq!(
-        lines.len(),
-        1,
-        "{name}: stderr must be one line: {stderr:?}"
-    );
-    assert!(lines[0].starts_with("error: "), "{name}: {stderr}");
-    let left: Vec<_> = std::fs::read_dir(&dir)
-        .unwrap()
-        .map(|e| e.unwrap().file_name().into_string().unwrap())
-        .filter(|f| f != "bad.json")
-        .collect();
-    assert!(left.is_empty(), "{name}: files left behind: {left:?}");
-    std::fs::remove_dir_all(&dir).unwrap();
-    lines[0].to_owned()
+    crate::common::refused(name, &files, &args)
 }
 
 const GOOD_OBJECTS: &str = r#""objects": [{"sphere": {"radius": 1}}]"#;

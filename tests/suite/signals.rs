@@ -6,6 +6,8 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
+use crate::inspector_tmux::tmux;
+
 const SIGNALS: [(&str, i32); 3] = [("INT", 2), ("TERM", 15), ("HUP", 1)];
 
 fn kill(signal: &str, pid: u32) {
@@ -62,11 +64,6 @@ fn each_signal_during_a_render_leaves_no_file() {
             names_in(dir.path())
         );
     }
-}
-
-fn tmux(args: &[&str]) -> String {
-    let out = Command::new("tmux").args(args).output().expect("tmux runs");
-    String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
 /// Runs the inspector in a tmux pane, sends it `signal` once it has drawn, and
