@@ -9,6 +9,7 @@ mod chart;
 mod cli;
 mod common;
 mod diagram;
+mod fuzz;
 mod golden_traces;
 mod guide;
 mod inputs;
