@@ -8,6 +8,7 @@ use anyhow::{Context, Result, bail};
 use image::ImageEncoder;
 
 use crate::io::image::{Image, to_rgb8};
+use crate::io::input::{MAX_INPUT_BYTES, read_bytes};
 
 /// The formats raytree writes, chosen by the output file's extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -59,15 +60,20 @@ pub fn encode(image: &Image, format: Format) -> Result<Vec<u8>> {
     Ok(out)
 }
 
-/// Reads a PNG or PPM as 8-bit RGB.
+/// Reads a PNG or PPM (a regular file of at most [`MAX_INPUT_BYTES`]) as
+/// 8-bit RGB.
 pub fn read_rgb8(path: &Path) -> Result<image::RgbImage> {
-    let reader = image::ImageReader::open(path)
-        .with_context(|| format!("cannot read {}", path.display()))?
+    let bytes = read_bytes(path, MAX_INPUT_BYTES)
+        .map_err(|reason| anyhow::anyhow!("cannot read {}: {reason}", path.display()))?;
+    let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
         .with_guessed_format()
         .with_context(|| format!("cannot read {}", path.display()))?;
-    let img = reader
-        .decode()
-        .with_context(|| format!("{}: not an image raytree can read", path.display()))?;
+    let img = reader.decode().map_err(|e| {
+        anyhow::anyhow!(
+            "{}: not an image raytree can read (a PNG or PPM): {e}",
+            path.display()
+        )
+    })?;
     Ok(img.to_rgb8())
 }
 
@@ -87,5 +93,28 @@ mod tests {
         assert_eq!(&bytes[..11], b"P6\n2 2\n255\n");
         assert_eq!(&bytes[11..14], &[255, 0, 0]);
         assert_eq!(&bytes[20..23], &[255, 255, 255]);
+    }
+
+    #[test]
+    fn ppm_and_png_read_back() {
+        let image = Image {
+            width: 3,
+            height: 2,
+            pixels: vec![
+                DVec3::X,
+                DVec3::Y,
+                DVec3::Z,
+                DVec3::ZERO,
+                DVec3::ONE,
+                DVec3::X,
+            ],
+        };
+        let dir = tempfile::tempdir().unwrap();
+        for (name, format) in [("a.ppm", Format::Ppm), ("a.png", Format::Png)] {
+            let path = dir.path().join(name);
+            std::fs::write(&path, encode(&image, format).unwrap()).unwrap();
+            let back = read_rgb8(&path).unwrap();
+            assert_eq!(back.as_raw(), &to_rgb8(&image), "{name}");
+        }
     }
 }

@@ -1,7 +1,8 @@
-//! Images in and out: the linear-RGB image and its one conversion to 8-bit
-//! sRGB, image files, output files written atomically, and the difference
-//! between two images.
+//! Files in and out: input files read within limits, the linear-RGB image and
+//! its one conversion to 8-bit sRGB, image files, output files written
+//! atomically, and the difference between two images.
 
+pub mod input; // regular files only, size checked before reading
 pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
 pub mod image_file; // PNG and PPM
 pub mod output; // files written atomically

@@ -1,32 +1,44 @@
 //! The scene file's shape as serde reads it: every field optional where the
-//! format has a default, unknown fields refused. [`crate::scene::loader`] turns
-//! it into a checked [`crate::scene::Scene`]; `scenes/README.md` documents it.
+//! format has a default, unknown fields refused, every struct a JSON object and
+//! every name given once ([`crate::scene::strict`]). [`crate::scene::loader`]
+//! turns it into a checked [`crate::scene::Scene`]; `scenes/README.md`
+//! documents it.
 
 use std::collections::BTreeMap;
 
 use glam::DVec3;
-use serde::Deserialize;
+use serde::{Deserialize, Deserializer};
 
 use crate::scene::overrides::Overrides;
+use crate::scene::strict;
+
+/// A whole scene file, which must be a JSON object.
+pub(super) struct Root(pub(super) SceneFile);
+
+impl<'de> Deserialize<'de> for Root {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        strict::object(d).map(Root)
+    }
+}
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(super) struct SceneFile {
     #[serde(default)]
     pub(super) description: Option<String>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "strict::object")]
     pub(super) camera: CameraFile,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "strict::object")]
     pub(super) render: Overrides,
     #[serde(default)]
     pub(super) background: Option<DVec3>,
     #[serde(default)]
     pub(super) ambient_light: Option<DVec3>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "strict::named_objects")]
     pub(super) materials: BTreeMap<String, MaterialFile>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "strict::objects")]
     pub(super) lights: Vec<LightFile>,
-    #[serde(default)]
+    #[serde(default, deserialize_with = "strict::objects")]
     pub(super) objects: Vec<ObjectFile>,
 }
 
@@ -49,6 +61,7 @@ pub(super) struct CameraFile {
 #[serde(deny_unknown_fields)]
 pub(super) struct MaterialFile {
     pub(super) color: Option<DVec3>,
+    #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) checker: Option<CheckerFile>,
     pub(super) ambient: Option<f64>,
     pub(super) diffuse: Option<f64>,
@@ -78,11 +91,15 @@ pub(super) struct LightFile {
 #[serde(deny_unknown_fields)]
 pub(super) struct ObjectFile {
     pub(super) name: Option<String>,
+    #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) sphere: Option<SphereFile>,
+    #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) plane: Option<PlaneFile>,
-    #[serde(rename = "box")]
+    #[serde(default, rename = "box", deserialize_with = "strict::some_object")]
     pub(super) aligned_box: Option<BoxFile>,
+    #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) triangle: Option<TriangleFile>,
+    #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) mesh: Option<MeshFile>,
     pub(super) material: Option<String>,
     #[serde(default)]
@@ -131,5 +148,13 @@ pub(super) enum TransformStep {
     RotateX(f64),
     RotateY(f64),
     RotateZ(f64),
-    Rotate { axis: DVec3, degrees: f64 },
+    #[serde(deserialize_with = "strict::object")]
+    Rotate(RotateFile),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct RotateFile {
+    pub(super) axis: DVec3,
+    pub(super) degrees: f64,
 }

@@ -224,6 +224,25 @@ pub fn icosphere(levels: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
     (positions, faces)
 }
 
+/// About how many bytes making `count` spheres takes at its peak: each sphere's
+/// entry (48 bytes) and its line of the scene text (about 100 bytes), the text
+/// counted twice for the copy a growing string makes. An estimate to refuse
+/// sizes the machine cannot hold before starting, not a measurement.
+pub fn memory_for_spheres(count: u64) -> u64 {
+    count.saturating_mul(48 + 2 * 100) + (1 << 20)
+}
+
+/// About how many bytes making an icosphere of `levels` subdivisions takes at
+/// its peak, per `4^levels` (a twentieth of the triangles): the vertices (10
+/// of 24 bytes), the faces of the last two levels (25 of 12 bytes), the table
+/// of edge midpoints (7.5 entries of about 32 bytes with the table's slack) and
+/// the OBJ text (10 `v` and 10 `vn` lines of about 60 bytes, 20 `f` lines of
+/// about 55), the text counted twice for the copy a growing string makes.
+pub fn memory_for_icosphere(levels: u32) -> u64 {
+    let per_unit = 10 * 24 + 25 * 12 + 240 + 2 * (20 * 60 + 20 * 55);
+    (per_unit << (2 * levels.min(30))) + (1 << 20)
+}
+
 /// The number of subdivision levels whose triangle count `20·4^levels` is nearest `n`.
 pub fn icosphere_levels(n: u64) -> u32 {
     (0..12)
@@ -290,6 +309,18 @@ mod tests {
             }
         }
         assert_eq!(icosphere_levels(20_000), 5);
+        // The estimate covers the text with room for its growth, and the arrays.
+        for levels in [3, 5] {
+            let (p, f) = icosphere(levels);
+            let arrays = (p.len() * 24 + f.len() * 12 * 5 / 4) as u64;
+            let text = icosphere_obj(levels).len() as u64;
+            assert!(
+                memory_for_icosphere(levels) >= arrays + 2 * text,
+                "{levels}"
+            );
+        }
+        let text = random_spheres(1000, 1).len() as u64;
+        assert!(memory_for_spheres(1000) >= 2 * text + 48 * 1000);
         assert_eq!(icosphere_levels(1), 0);
     }
 

@@ -2,30 +2,40 @@
 //! field in `scenes/README.md`; this module reads it into a [`Scene`].
 //!
 //! Strict: an unknown field is an error, so a typo never silently falls back to a
-//! default. Errors say where: `file:line:column: field.path: what was expected`
-//! while parsing, `file: field.path: what is wrong` when a value parses but makes
-//! no sense (a negative radius, a singular transform).
+//! default; every struct is a JSON object and every name is given once
+//! ([`crate::scene::strict`]); numbers lie in the ranges of
+//! [`crate::scene::limits`], which keep every computed number finite. Errors say
+//! where: `file:line:column: field.path: what was expected` while parsing,
+//! `file: field.path: what is wrong` when a value parses but makes no sense (a
+//! negative radius, a singular transform).
 
+use std::cell::RefCell;
+use std::collections::HashMap;
 use std::fmt::Display;
-use std::path::Path;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
 use crate::geometry::cuboid::Cuboid;
+use crate::geometry::mesh::Mesh;
 use crate::geometry::object::{Object, Shape};
 use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::Triangle;
+use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
-use crate::scene::camera::CameraSpec;
+use crate::scene::camera_file;
 use crate::scene::format::{
-    BoxFile, CameraFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, SceneFile,
-    SphereFile, TransformStep, TriangleFile,
+    BoxFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile, SphereFile,
+    TransformStep, TriangleFile,
 };
 use crate::scene::light::PointLight;
+use crate::scene::limits;
 use crate::scene::overrides::Overrides;
 use crate::scene::settings::RenderSettings;
+use crate::scene::strict;
 use crate::shading::material::{Material, Pattern};
 
 /// The classic Whitted scene, built into the binary.
@@ -81,15 +91,11 @@ pub fn load(path: &Path) -> Result<Scene, SceneError> {
     parse(&read(path)?, &path.display().to_string())
 }
 
-/// Reads a scene file's text.
+/// Reads a scene file's text: a regular file of at most
+/// [`MAX_INPUT_BYTES`], checked before reading.
 pub fn read(path: &Path) -> Result<String, SceneError> {
-    std::fs::read_to_string(path).map_err(|e| SceneError::Read {
-        reason: match e.kind() {
-            std::io::ErrorKind::NotFound => "no such file".to_owned(),
-            std::io::ErrorKind::InvalidData => "not UTF-8 text".to_owned(),
-            std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
-            _ => e.to_string(),
-        },
+    input::read_text(path, MAX_INPUT_BYTES).map_err(|reason| SceneError::Read {
+        reason,
         file: path.display().to_string(),
     })
 }
@@ -112,19 +118,27 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         } else {
             format!("{path}: {message}")
         };
+        // serde quotes an unknown key as written: a newline or an escape in it
+        // would break the one-line message or reach the terminal.
+        let message = strict::printable(&message);
         SceneError::Syntax {
             file: file.to_owned(),
             line: e.line(),
-            column: e.column(),
+            column: e.column().max(1),
             message,
         }
     };
     let de = &mut serde_json::Deserializer::from_str(text);
-    let raw: SceneFile = serde_path_to_error::deserialize(&mut *de)
+    let Root(raw) = serde_path_to_error::deserialize(&mut *de)
         .map_err(|e| syntax(e.path().to_string(), e.into_inner()))?;
     de.end().map_err(|e| syntax(String::new(), e))?;
     let dir = Path::new(file).parent().unwrap_or(Path::new(""));
-    Builder { file, dir }.scene(raw)
+    let builder = Builder {
+        file,
+        dir,
+        meshes: RefCell::default(),
+    };
+    builder.scene(raw)
 }
 
 /// The material objects get when they name none.
@@ -134,23 +148,40 @@ struct Builder<'a> {
     file: &'a str,
     /// Where the scene file is: mesh files are found relative to it.
     dir: &'a Path,
+    /// Each OBJ file read so far, by its canonical path and whether it is
+    /// smooth: a file many objects use is read and parsed once.
+    meshes: RefCell<HashMap<(PathBuf, bool), Arc<Mesh>>>,
 }
 
 impl Builder<'_> {
     fn invalid(&self, field: impl Display, message: impl Display) -> SceneError {
         SceneError::Invalid {
             file: self.file.to_owned(),
-            field: field.to_string(),
-            message: message.to_string(),
+            field: strict::printable(&field.to_string()),
+            message: strict::printable(&message.to_string()),
         }
+    }
+
+    /// `value` checked by `check`, or an error naming `field`.
+    fn check<T, U>(
+        &self,
+        field: impl Display,
+        value: T,
+        check: impl FnOnce(T) -> Result<U, String>,
+    ) -> Result<U, SceneError> {
+        check(value).map_err(|message| self.invalid(field, message))
     }
 
     fn scene(&self, raw: SceneFile) -> Result<Scene, SceneError> {
         let _ = raw.description;
         let settings = self.settings(&raw.render)?;
-        let camera = self.camera(&raw.camera)?;
+        let camera =
+            camera_file::spec(&raw.camera).map_err(|(field, msg)| self.invalid(field, msg))?;
         let background = self.color("background", raw.background.unwrap_or(DVec3::ZERO))?;
         let ambient_light = self.color("ambient_light", raw.ambient_light.unwrap_or(DVec3::ONE))?;
+        for name in raw.materials.keys() {
+            self.check(format_args!("materials.{name}"), name.as_str(), name_ok)?;
+        }
         let mut materials = raw
             .materials
             .iter()
@@ -186,7 +217,18 @@ impl Builder<'_> {
             };
             objects.push(self.object(i, o, material)?);
         }
+        self.unique("lights", lights.iter().map(|l| l.name.as_str()))?;
+        self.unique("objects", objects.iter().map(|o| o.name.as_str()))?;
+        let mut mesh_files: Vec<PathBuf> = self
+            .meshes
+            .borrow()
+            .keys()
+            .map(|(p, _)| p.clone())
+            .collect();
+        mesh_files.sort();
+        mesh_files.dedup();
         Ok(Scene {
+            mesh_files,
             camera,
             settings,
             background,
@@ -204,105 +246,28 @@ impl Builder<'_> {
         Ok(s)
     }
 
-    fn camera(&self, c: &CameraFile) -> Result<CameraSpec, SceneError> {
-        let eye = c.eye.unwrap_or(DVec3::new(0.0, 0.0, 5.0));
-        let frame_given = c.u.is_some()
-            || c.v.is_some()
-            || c.n.is_some()
-            || c.half_width.is_some()
-            || c.half_height.is_some()
-            || c.distance.is_some();
-        if !frame_given {
-            return self.look_at_camera(eye, c);
-        }
-        if c.look_at.is_some() || c.up.is_some() || c.fov.is_some() {
-            return Err(self.invalid(
-                "camera",
-                "give either look_at/up/fov or u/v/n/half_width/half_height/distance, not both",
-            ));
-        }
-        self.frame_camera(eye, c)
-    }
-
-    /// A camera given by eye, look-at point, up and field of view.
-    fn look_at_camera(&self, eye: DVec3, c: &CameraFile) -> Result<CameraSpec, SceneError> {
-        let look_at = c.look_at.unwrap_or(DVec3::ZERO);
-        let up = c.up.unwrap_or(DVec3::Y);
-        let fov = c.fov.unwrap_or(60.0);
-        if (look_at - eye).length() == 0.0 {
-            return Err(self.invalid("camera.look_at", "must differ from camera.eye"));
-        }
-        if up.cross(look_at - eye).length() <= 1e-9 * up.length() * (look_at - eye).length() {
-            return Err(self.invalid(
-                "camera.up",
-                "must not be zero or parallel to the view direction",
-            ));
-        }
-        if !(fov > 0.0 && fov < 180.0) {
-            return Err(self.invalid(
-                "camera.fov",
-                format_args!("must be between 0 and 180 degrees, got {fov}"),
-            ));
-        }
-        Ok(CameraSpec::LookAt {
-            eye,
-            look_at,
-            up,
-            fov_degrees: fov,
-        })
-    }
-
-    /// A camera given by the lecture's own parameters: u, v, n, W, H and N.
-    fn frame_camera(&self, eye: DVec3, c: &CameraFile) -> Result<CameraSpec, SceneError> {
-        let missing = "missing (an explicit camera needs u, v, n, half_width and half_height)";
-        let need = |v: Option<DVec3>, name: &str| {
-            v.ok_or_else(|| self.invalid(format_args!("camera.{name}"), missing))
-        };
-        let (u, v, n) = (need(c.u, "u")?, need(c.v, "v")?, need(c.n, "n")?);
-        let mut unit = [DVec3::ZERO; 3];
-        for (k, (name, vec)) in [("u", u), ("v", v), ("n", n)].into_iter().enumerate() {
-            unit[k] = vec
-                .try_normalize()
-                .ok_or_else(|| self.invalid(format_args!("camera.{name}"), "must not be zero"))?;
-        }
-        let [u, v, n] = unit;
-        if u.dot(v).abs() > 1e-6 || u.dot(n).abs() > 1e-6 || v.dot(n).abs() > 1e-6 {
-            return Err(self.invalid("camera", "u, v and n must be mutually perpendicular"));
-        }
-        let positive =
-            |x: Option<f64>, name: &str, default: Option<f64>| -> Result<f64, SceneError> {
-                let x = x
-                    .or(default)
-                    .ok_or_else(|| self.invalid(format_args!("camera.{name}"), missing))?;
-                if x > 0.0 {
-                    Ok(x)
-                } else {
-                    Err(self.invalid(
-                        format_args!("camera.{name}"),
-                        format_args!("must be > 0, got {x}"),
-                    ))
-                }
-            };
-        Ok(CameraSpec::Frame {
-            eye,
-            u,
-            v,
-            n,
-            half_width: positive(c.half_width, "half_width", None)?,
-            half_height: positive(c.half_height, "half_height", None)?,
-            distance: positive(c.distance, "distance", Some(1.0))?,
-        })
-    }
-
     fn color(&self, field: impl Display, c: DVec3) -> Result<DVec3, SceneError> {
-        if c.is_finite() && c.min_element() >= 0.0 {
-            Ok(c)
-        } else {
-            Err(self.invalid(
-                field,
-                format_args!("a color's components must be finite and ≥ 0, got {c}"),
-            ))
+        self.check(field, c, limits::color)
+    }
+
+    /// Names must differ within `list` (`objects` or `lights`); one left out
+    /// is called by its kind and place (`sphere3`, `light0`), which counts too.
+    fn unique<'n>(
+        &self,
+        list: &str,
+        names: impl Iterator<Item = &'n str>,
+    ) -> Result<(), SceneError> {
+        let mut seen = HashMap::new();
+        for (i, name) in names.enumerate() {
+            self.check(format_args!("{list}[{i}].name"), name, name_ok)?;
+            if let Some(first) = seen.insert(name, i) {
+                return Err(self.invalid(
+                    format_args!("{list}[{i}].name"),
+                    format_args!("'{name}' is already the name of {list}[{first}] (names must differ; one left out is its kind and place, e.g. sphere3 or light0)"),
+                ));
+            }
         }
+        Ok(())
     }
 
     fn material(&self, name: &str, m: &MaterialFile) -> Result<Material, SceneError> {
@@ -316,12 +281,8 @@ impl Builder<'_> {
             }
             (Some(c), None) => Pattern::Solid(self.color(at("color"), *c)?),
             (None, Some(ch)) => {
-                let size = ch.size.unwrap_or(1.0);
-                if !size.is_finite() || size <= 0.0 {
-                    return Err(
-                        self.invalid(at("checker.size"), format_args!("must be > 0, got {size}"))
-                    );
-                }
+                let size =
+                    self.check(at("checker.size"), ch.size.unwrap_or(1.0), limits::length)?;
                 Pattern::Checker {
                     colors: [
                         self.color(at("checker.colors[0]"), ch.colors[0])?,
@@ -341,22 +302,28 @@ impl Builder<'_> {
                     Err(self.invalid(at(f), format_args!("must be from 0 to {max}, got {v}")))
                 }
             };
-        let ior = m.ior.unwrap_or(1.0);
-        if !(ior > 0.0 && ior.is_finite()) {
+        let (low, high) = limits::IOR;
+        let ior = self.check(at("ior"), m.ior.unwrap_or(1.0), |x| {
+            limits::within(x, low, high).map_err(|e| format!("a refractive index {e}"))
+        })?;
+        let reflective = coefficient(m.reflective, "reflective", 0.0, 1.0)?;
+        let transparent = coefficient(m.transparent, "transparent", 0.0, 1.0)?;
+        if reflective + transparent > 1.0 {
             return Err(self.invalid(
-                at("ior"),
-                format_args!("a refractive index must be > 0, got {ior}"),
+                format_args!("materials.{name}"),
+                format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {reflective} + {transparent}"),
             ));
         }
+        let max = limits::MAX_COEFFICIENT;
         Ok(Material {
             name: name.to_owned(),
             pattern,
-            ambient: coefficient(m.ambient, "ambient", 0.1, 1e6)?,
-            diffuse: coefficient(m.diffuse, "diffuse", 0.7, 1e6)?,
-            specular: coefficient(m.specular, "specular", 0.0, 1e6)?,
-            shininess: coefficient(m.shininess, "shininess", 50.0, 1e6)?,
-            reflective: coefficient(m.reflective, "reflective", 0.0, 1.0)?,
-            transparent: coefficient(m.transparent, "transparent", 0.0, 1.0)?,
+            ambient: coefficient(m.ambient, "ambient", 0.1, max)?,
+            diffuse: coefficient(m.diffuse, "diffuse", 0.7, max)?,
+            specular: coefficient(m.specular, "specular", 0.0, max)?,
+            shininess: coefficient(m.shininess, "shininess", 50.0, max)?,
+            reflective,
+            transparent,
             ior,
         })
     }
@@ -367,9 +334,14 @@ impl Builder<'_> {
             format_args!("lights[{i}].color"),
             l.color.unwrap_or(DVec3::ONE),
         )?;
+        let position = self.check(
+            format_args!("lights[{i}].position"),
+            l.position,
+            limits::point,
+        )?;
         Ok(PointLight {
             name,
-            position: l.position,
+            position,
             color,
         })
     }
@@ -405,40 +377,32 @@ impl Builder<'_> {
     }
 
     fn sphere(&self, i: usize, s: &SphereFile) -> Result<Shape, SceneError> {
-        let radius = s.radius.unwrap_or(1.0);
-        if !radius.is_finite() || radius <= 0.0 {
-            return Err(self.invalid(
-                format_args!("objects[{i}].sphere.radius"),
-                format_args!("must be > 0, got {radius}"),
-            ));
-        }
-        Ok(Shape::Sphere(Sphere {
-            center: s.center.unwrap_or(DVec3::ZERO),
-            radius,
-        }))
+        let at = |f: &str| format!("objects[{i}].sphere.{f}");
+        let radius = self.check(at("radius"), s.radius.unwrap_or(1.0), limits::length)?;
+        let center = self.check(at("center"), s.center.unwrap_or(DVec3::ZERO), limits::point)?;
+        Ok(Shape::Sphere(Sphere { center, radius }))
     }
 
     fn plane(&self, i: usize, p: &PlaneFile) -> Result<Shape, SceneError> {
-        let normal = p
-            .normal
-            .unwrap_or(DVec3::Y)
-            .try_normalize()
-            .ok_or_else(|| {
-                self.invalid(
-                    format_args!("objects[{i}].plane.normal"),
-                    "must not be zero",
-                )
-            })?;
-        Ok(Shape::Plane(Plane {
-            point: p.point.unwrap_or(DVec3::ZERO),
-            normal,
-        }))
+        let at = |f: &str| format!("objects[{i}].plane.{f}");
+        let normal = self.check(
+            at("normal"),
+            p.normal.unwrap_or(DVec3::Y),
+            limits::direction,
+        )?;
+        let point = self.check(at("point"), p.point.unwrap_or(DVec3::ZERO), limits::point)?;
+        Ok(Shape::Plane(Plane { point, normal }))
     }
 
     fn cuboid(&self, i: usize, b: &BoxFile) -> Result<Shape, SceneError> {
-        let min = b.min.unwrap_or(DVec3::splat(-1.0));
-        let max = b.max.unwrap_or(DVec3::ONE);
-        if !(min.is_finite() && max.is_finite() && min.cmplt(max).all()) {
+        let at = |f: &str| format!("objects[{i}].box.{f}");
+        let min = self.check(
+            at("min"),
+            b.min.unwrap_or(DVec3::splat(-1.0)),
+            limits::point,
+        )?;
+        let max = self.check(at("max"), b.max.unwrap_or(DVec3::ONE), limits::point)?;
+        if !min.cmplt(max).all() {
             return Err(self.invalid(
                 format_args!("objects[{i}].box"),
                 format_args!("min must be below max on every axis, got min {min} and max {max}"),
@@ -448,28 +412,40 @@ impl Builder<'_> {
     }
 
     fn triangle(&self, i: usize, t: &TriangleFile) -> Result<Shape, SceneError> {
+        let at = format!("objects[{i}].triangle.vertices");
+        for (k, &v) in t.vertices.iter().enumerate() {
+            self.check(format_args!("{at}[{k}]"), v, limits::point)?;
+        }
         let [a, b, c] = t.vertices;
         let tri = Triangle { a, b, c };
-        if !(a.is_finite() && b.is_finite() && c.is_finite()) || tri.normal() == DVec3::ZERO {
-            return Err(self.invalid(
-                format_args!("objects[{i}].triangle.vertices"),
-                "must be three finite points not on one line",
-            ));
+        if tri.normal() == DVec3::ZERO {
+            return Err(self.invalid(at, "must be three points not on one line"));
         }
         Ok(Shape::Triangle(tri))
     }
 
-    /// A mesh from its OBJ file, found relative to the scene file.
+    /// A mesh from its OBJ file, found relative to the scene file; read once
+    /// however many objects use it.
     fn mesh(&self, i: usize, m: &MeshFile) -> Result<Shape, SceneError> {
-        let path = self.dir.join(&m.file);
-        let mesh = crate::scene::obj::load(&path, m.smooth.unwrap_or(true)).map_err(|error| {
-            SceneError::Mesh {
-                file: self.file.to_owned(),
-                field: format!("objects[{i}].mesh.file"),
-                error,
-            }
+        self.check(format_args!("objects[{i}].mesh.file"), &m.file, |f| {
+            name_ok(f)
         })?;
-        Ok(Shape::Mesh(std::sync::Arc::new(mesh)))
+        let path = self.dir.join(&m.file);
+        let key = (
+            std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone()),
+            m.smooth.unwrap_or(true),
+        );
+        if let Some(mesh) = self.meshes.borrow().get(&key) {
+            return Ok(Shape::Mesh(Arc::clone(mesh)));
+        }
+        let mesh = crate::scene::obj::load(&path, key.1).map_err(|error| SceneError::Mesh {
+            file: self.file.to_owned(),
+            field: format!("objects[{i}].mesh.file"),
+            error,
+        })?;
+        let mesh = Arc::new(mesh);
+        self.meshes.borrow_mut().insert(key, Arc::clone(&mesh));
+        Ok(Shape::Mesh(mesh))
     }
 
     /// Object `i`'s transform steps as one invertible transform; `None` without steps.
@@ -487,11 +463,15 @@ impl Builder<'_> {
             .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
                 self.step(i, k, step).map(|s| s * m)
             })?;
+        let at = format!("objects[{i}].transform");
         let transform = Transform::new(m).ok_or_else(|| {
             self.invalid(
-                format_args!("objects[{i}].transform"),
+                &at,
                 "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted",
             )
+        })?;
+        self.check(&at, &transform, |t| {
+            limits::transform(&t.to_world, &t.to_object)
         })?;
         Ok(Some(Box::new(transform)))
     }
@@ -499,21 +479,39 @@ impl Builder<'_> {
     /// One transform step's matrix; steps apply in the order written, so the
     /// whole transform is `M = M_last ⋯ M_first`.
     fn step(&self, i: usize, k: usize, step: &TransformStep) -> Result<DAffine3, SceneError> {
-        Ok(match *step {
-            TransformStep::Translate(t) => DAffine3::from_translation(t),
-            TransformStep::Scale(s) => DAffine3::from_scale(s),
-            TransformStep::RotateX(d) => DAffine3::from_rotation_x(d.to_radians()),
-            TransformStep::RotateY(d) => DAffine3::from_rotation_y(d.to_radians()),
-            TransformStep::RotateZ(d) => DAffine3::from_rotation_z(d.to_radians()),
-            TransformStep::Rotate { axis, degrees } => {
-                let axis = axis.try_normalize().ok_or_else(|| {
-                    self.invalid(
-                        format_args!("objects[{i}].transform[{k}].rotate.axis"),
-                        "must not be zero",
-                    )
-                })?;
-                DAffine3::from_axis_angle(axis, degrees.to_radians())
+        let at = |f: &str| format!("objects[{i}].transform[{k}].{f}");
+        let angle = |f: &str, d: f64| {
+            let max = limits::MAX_COORDINATE;
+            self.check(at(f), d, |d| limits::within(d, -max, max))
+                .map(f64::to_radians)
+        };
+        Ok(match step {
+            TransformStep::Translate(t) => {
+                DAffine3::from_translation(self.check(at("translate"), *t, limits::point)?)
+            }
+            TransformStep::Scale(s) => {
+                DAffine3::from_scale(self.check(at("scale"), *s, limits::scale)?)
+            }
+            TransformStep::RotateX(d) => DAffine3::from_rotation_x(angle("rotate_x", *d)?),
+            TransformStep::RotateY(d) => DAffine3::from_rotation_y(angle("rotate_y", *d)?),
+            TransformStep::RotateZ(d) => DAffine3::from_rotation_z(angle("rotate_z", *d)?),
+            TransformStep::Rotate(r) => {
+                let axis = self.check(at("rotate.axis"), r.axis, limits::direction)?;
+                DAffine3::from_axis_angle(axis, angle("rotate.degrees", r.degrees)?)
             }
         })
+    }
+}
+
+/// A name shown in traces, errors and the terminal: no control characters,
+/// which a terminal would obey (`\u{1b}[2J` clears the screen).
+fn name_ok(name: &str) -> Result<(), String> {
+    match name.chars().find(|c| c.is_control()) {
+        Some(c) => Err(format!(
+            "'{}' holds a control character ({}); names must be printable",
+            name.escape_debug(),
+            c.escape_unicode()
+        )),
+        None => Ok(()),
     }
 }

@@ -6,6 +6,9 @@ pub mod light; // point lights
 pub mod settings; // image size, sampling, recursion limits, methods
 pub mod overrides; // the settings a scene file or the command line changes
 pub mod format; // the scene file's shape, as serde reads it
+pub mod strict; // JSON objects only, each name once
+pub mod limits; // the ranges that keep every computed number finite
+pub mod camera_file; // the camera block, checked (right-handed frames only)
 pub mod loader; // the scene file, checked, into a Scene
 pub mod obj; // OBJ meshes
 pub mod source; // which scene file, by name and hash
@@ -38,6 +41,8 @@ pub struct Scene {
     pub lights: Vec<PointLight>,
     /// The objects.
     pub objects: Vec<Object>,
+    /// The OBJ files the meshes were read from: inputs no output may replace.
+    pub mesh_files: Vec<std::path::PathBuf>,
 }
 
 impl Scene {

@@ -10,6 +10,8 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::geometry::mesh::Mesh;
+use crate::io::input::{self, MAX_INPUT_BYTES};
+use crate::scene::limits::MAX_COORDINATE;
 
 /// Why an OBJ file could not be used.
 #[derive(Debug, thiserror::Error)]
@@ -23,17 +25,15 @@ pub struct ObjError {
     pub message: String,
 }
 
-/// Reads the OBJ file at `path`; `smooth` keeps its vertex normals, if any.
+/// Reads the OBJ file at `path` (a regular file of at most
+/// [`MAX_INPUT_BYTES`], checked before reading); `smooth` keeps its vertex
+/// normals, if any.
 pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
     let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| ObjError {
+    let bytes = input::read_bytes(path, MAX_INPUT_BYTES).map_err(|message| ObjError {
         file: file.clone(),
         line: None,
-        message: match e.kind() {
-            std::io::ErrorKind::NotFound => "no such file".to_owned(),
-            std::io::ErrorKind::IsADirectory => "it is a directory".to_owned(),
-            _ => e.to_string(),
-        },
+        message,
     })?;
     parse(&bytes, &file, smooth)
 }
@@ -50,10 +50,10 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
         return Err(error(Some(line), "not UTF-8 text".to_owned()));
     }
     let models = read_models(bytes).map_err(|(line, message)| error(line, message))?;
-    if let Some(line) = first_non_finite(bytes) {
+    if let Some(line) = first_out_of_range(bytes) {
         return Err(error(
             Some(line),
-            "a coordinate is not a finite number".to_owned(),
+            format!("a coordinate is not a finite number within ±{MAX_COORDINATE:e}"),
         ));
     }
     let mesh = join_models(&models, smooth);
@@ -165,13 +165,15 @@ fn statements(bytes: &[u8]) -> impl Iterator<Item = (usize, &str, Vec<&str>)> {
     })
 }
 
-/// The first `v` or `vn` line with a coordinate that is NaN or infinite.
-fn first_non_finite(bytes: &[u8]) -> Option<usize> {
+/// The first `v` or `vn` line with a coordinate that is NaN, infinite or
+/// beyond the scene's coordinate limit.
+fn first_out_of_range(bytes: &[u8]) -> Option<usize> {
     statements(bytes).find_map(|(line, key, fields)| {
         let bad = matches!(key, "v" | "vn")
-            && fields
-                .iter()
-                .any(|f| f.parse::<f64>().is_ok_and(|x| !x.is_finite()));
+            && fields.iter().any(|f| {
+                f.parse::<f64>()
+                    .is_ok_and(|x| x.is_nan() || x.abs() > MAX_COORDINATE)
+            });
         bad.then_some(line)
     })
 }
@@ -230,7 +232,7 @@ mod tests {
             ),
             (
                 "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n",
-                "bad.obj:2: a coordinate is not a finite number",
+                "bad.obj:2: a coordinate is not a finite number within ±1e9",
             ),
             ("v 0 0 0\n", "bad.obj: has no faces (no `f` lines)"),
         ];

@@ -306,9 +306,9 @@ mod tests {
             "--vary max_depth=0: render.max_depth: must be 1 to 1000, got 0"
         );
         assert!(
-            with("materials.glass.ior", -1.0)
-                .unwrap_err()
-                .contains("materials.glass.ior: a refractive index must be > 0")
+            with("materials.glass.ior", -1.0).unwrap_err().contains(
+                "materials.glass.ior: a refractive index must be from 0.01 to 100, got -1"
+            )
         );
         assert!(
             with("materials.glass.iior", 1.0)

@@ -96,15 +96,14 @@ impl<'s> Tracer<'s> {
 
     /// Traces a ray from the eye: depth 1, weight 1, in the media around the eye.
     pub fn trace_primary<R: Recorder>(&self, ray: Ray, rec: &mut R) -> DVec3 {
-        let start = RayStart {
-            kind: RayKind::Primary,
-            depth: 1,
-            ray,
-            weight: 1.0,
-            t_min: 0.0,
-            t_max: f64::INFINITY,
-        };
-        self.raytrace(&start, &self.eye_media, rec)
+        self.raytrace(&primary(ray), &self.eye_media, rec)
+    }
+
+    /// Traces a ray given by hand as a primary ray (depth 1, weight 1), in the
+    /// media around its own origin: a ray started inside glass is in glass.
+    pub fn trace_given<R: Recorder>(&self, ray: Ray, rec: &mut R) -> DVec3 {
+        let media = self.scene.media_at(ray.origin);
+        self.raytrace(&primary(ray), &media, rec)
     }
 
     /// Forgets the blockers this thread remembered ("try the recent hit
@@ -227,13 +226,17 @@ impl<'s> Tracer<'s> {
         let methods = self.scene.settings.intersection_methods();
         let surface = self.scene.objects[object].surface(ray, t, face, methods);
         let entering = ray.dir.dot(surface.normal) < 0.0;
+        // The media rule: n₁ is the innermost medium the ray travels in, n₂ the
+        // innermost on the far side; so leaving one of two overlapping objects
+        // while inside the other changes nothing. A ray leaving an object its
+        // stack lacks (nested deeper than the stack holds) was inside it all the same.
         let ior_of = |m: Option<usize>| m.map_or(1.0, |o| self.scene.material_of(o).ior);
-        let inside = self.scene.material_of(object).ior;
-        let (n1, n2) = if entering {
-            (ior_of(media.innermost()), inside)
+        let n1 = if entering || media.as_slice().contains(&(object as u32)) {
+            ior_of(media.innermost())
         } else {
-            (inside, ior_of(media.left(object).innermost()))
+            self.scene.material_of(object).ior
         };
+        let n2 = ior_of(media.crossed(object, entering).innermost());
         // Which side was hit is the geometric normal's business; lighting uses the
         // shading normal (interpolated on smooth meshes), turned the same way.
         let shading_normal = if entering {
@@ -426,5 +429,17 @@ impl<'s> Tracer<'s> {
             t_max: f64::INFINITY,
         };
         self.raytrace(&child, &media, rec)
+    }
+}
+
+/// A primary ray's start: depth 1, weight 1, unbounded.
+fn primary(ray: Ray) -> RayStart {
+    RayStart {
+        kind: RayKind::Primary,
+        depth: 1,
+        ray,
+        weight: 1.0,
+        t_min: 0.0,
+        t_max: f64::INFINITY,
     }
 }

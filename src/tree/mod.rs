@@ -6,3 +6,4 @@ pub mod arithmetic; // the lecture's quantities of each step, worked out while r
 pub mod record; // recording a pixel or a ray
 pub mod steps; // the tree read in the order the algorithm ran
 pub mod document; // the trace document: JSON, versioned, read back checked
+pub mod trace_check; // a trace read from a file holds together, and fits its scene

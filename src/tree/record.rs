@@ -100,7 +100,8 @@ pub fn pixel(
     })
 }
 
-/// Traces one ray as a primary ray (depth 1, weight 1, from the media around the eye).
+/// Traces one ray as a primary ray (depth 1, weight 1), starting in the media
+/// around its origin (inside a glass ball, in glass).
 pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument, TraceError> {
     if !(ray.origin.is_finite() && ray.dir.is_finite())
         || ray.dir.length_squared() == 0.0
@@ -109,7 +110,7 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
         return Err(TraceError::BadRay);
     }
     let mut rec = TreeRecorder::new(scene, TUnit::Direction);
-    let color = Tracer::new(scene).trace_primary(ray, &mut rec);
+    let color = Tracer::new(scene).trace_given(ray, &mut rec);
     let tree = rec.trees.pop().unwrap_or_default();
     let samples = vec![Sample {
         index: 0,

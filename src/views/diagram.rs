@@ -89,9 +89,20 @@ pub fn draw_with_labels(
         options.width as f32 - 2.0 * margin,
     );
     let top = (f64::from(scale.text + 1.0) * (1.3 * lines.len() as f64 + 0.9)) as f32 + 8.0;
+    // The frame Figure::new makes: the page less the caption and margins.
+    let w = options.width as f32 - 2.0 * margin;
+    let h = options.height as f32 - top - margin;
+    if w < 40.0 || h < 40.0 {
+        return Err(format!(
+            "a {}×{} figure leaves {:.0}×{:.0} pixels to draw in under its caption; the drawing needs at least 40×40 (try 400x300 or more)",
+            options.width,
+            options.height,
+            w.max(0.0),
+            h.max(0.0)
+        ));
+    }
     let mut fig = Figure::new(options.width, options.height, top, margin)
-        .filter(|f| f.frame().width() >= 40.0 && f.frame().height() >= 40.0)
-        .ok_or("the figure must be at least 64×64 pixels")?;
+        .ok_or("the figure cannot be allocated")?;
     fig.fit(lay.window.0, lay.window.1, 0.0);
     draw_objects(&mut fig, scene, &lay, &scale);
     draw_eye_and_image_plane(&mut fig, &lay, &scale);

@@ -69,3 +69,63 @@ impl Log {
 pub fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
     (a - b).abs().max_element() <= tol
 }
+
+/// Runs the `raytree` binary with `args` in a fresh folder holding `files`
+/// (name, contents) and checks the failure contract: exit code `code` (1, or 2
+/// for a malformed command line), one line on stderr starting `error: `, no
+/// panic, no file added and every file as it was. Returns the line.
+pub fn refused_with(code: i32, name: &str, files: &[(&str, &[u8])], args: &[&str]) -> String {
+    let dir = std::env::temp_dir().join(format!("raytree-refused-{name}-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    for (file, bytes) in files {
+        std::fs::write(dir.join(file), bytes).unwrap();
+    }
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(&dir)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("the binary runs");
+    let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+    assert_eq!(
+        out.status.code(),
+        Some(code),
+        "{name}: exit code; stderr: {stderr}"
+    );
+    assert!(!stderr.contains("panicked"), "{name}: panicked: {stderr}");
+    let lines: Vec<&str> = stderr.lines().collect();
+    assert_eq!(
+        lines.len(),
+        1,
+        "{name}: stderr must be one line: {stderr:?}"
+    );
+    assert!(lines[0].starts_with("error: "), "{name}: {stderr}");
+    assert!(
+        !lines[0].contains('\u{1b}'),
+        "{name}: a raw escape reached the terminal"
+    );
+    let mut left: Vec<String> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    left.sort();
+    let mut given: Vec<String> = files.iter().map(|(f, _)| f.to_string()).collect();
+    given.sort();
+    given.dedup();
+    assert_eq!(left, given, "{name}: files added or removed");
+    for (file, bytes) in files {
+        assert_eq!(
+            &std::fs::read(dir.join(file)).unwrap(),
+            bytes,
+            "{name}: {file} changed"
+        );
+    }
+    std::fs::remove_dir_all(&dir).unwrap();
+    lines[0].to_owned()
+}
+
+/// [`refused_with`] exit code 1: a bad input, not a malformed command line.
+pub fn refused(name: &str, files: &[(&str, &[u8])], args: &[&str]) -> String {
+    refused_with(1, name, files, args)
+}

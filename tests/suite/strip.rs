@@ -93,7 +93,10 @@ fn bad_variations_are_one_line_errors() {
         None,
         &["--vary", "materials.glass.ior=1.5,-1"],
     );
-    assert!(e.contains("a refractive index must be > 0, got -1"), "{e}");
+    assert!(
+        e.contains("a refractive index must be from 0.01 to 100, got -1"),
+        "{e}"
+    );
     let e = fails_in("strip", "strip-width", None, &["--vary", "width=100,200"]);
     assert!(e.contains("share one size"), "{e}");
     let dir = std::env::temp_dir();

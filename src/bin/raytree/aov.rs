@@ -19,7 +19,7 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
         format!("{}-{label}.png", args.scene.stem())
     });
     output::require_png(&path, "a per-pixel quantity")?;
-    let pending = output::create(&path)?;
+    let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let (pool, threads) = thread_pool(args.threads)?;
     let progress = output::progress_bar(
         args.quiet,

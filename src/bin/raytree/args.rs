@@ -33,6 +33,16 @@ impl SceneArgs {
         Ok((scene, source))
     }
 
+    /// The files the scene was read from (the scene file and its OBJ files):
+    /// no output may replace one of them.
+    pub fn inputs(&self, scene: &Scene) -> Vec<PathBuf> {
+        self.scene
+            .iter()
+            .cloned()
+            .chain(scene.mesh_files.iter().cloned())
+            .collect()
+    }
+
     /// The scene's file stem, or "whitted" for the built-in scene: the start of
     /// default output names.
     pub fn stem(&self) -> String {
@@ -50,7 +60,7 @@ pub struct TargetArgs {
     /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pub pixel: Option<(u32, u32)>,
-    /// Trace one ray instead of a pixel: its origin and direction in world coordinates.
+    /// Trace one ray instead of a pixel: its origin and direction in world coordinates. It starts in the media around its origin: from inside a glass ball, in glass.
     #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
     pub ray: Option<Ray>,
     /// With several samples per pixel, keep only sample K (1 is the first; row by row from the top-left).

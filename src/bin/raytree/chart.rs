@@ -2,7 +2,8 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
+use raytree::io::output::same_file;
 use raytree::trace::sweep;
 use raytree::views::chart;
 
@@ -39,8 +40,17 @@ pub fn run(args: &Args) -> Result<()> {
     }
     let path = output::name_or(&args.output, || format!("{}-chart.png", args.scene.stem()));
     output::require_png(&path, "a chart")?;
-    let png = output::create(&path)?;
-    let csv = args.csv.as_deref().map(output::create).transpose()?;
+    let inputs = args.scene.inputs(&scene);
+    if let Some(csv) = args.csv.as_deref().filter(|c| same_file(c, &path)) {
+        bail!(
+            "cannot write {}: the CSV figures and the chart need two files",
+            csv.display()
+        );
+    }
+    let png = output::create(&path, &inputs)?;
+    let csv = (args.csv.as_deref())
+        .map(|p| output::create(p, &inputs))
+        .transpose()?;
     let progress = output::progress_bar(
         false,
         "{spinner} charting [{bar:40}] {pos}/{len} settings, {elapsed}",
@@ -58,12 +68,12 @@ pub fn run(args: &Args) -> Result<()> {
     if let Some(file) = csv {
         file.commit(chart::csv(&points).as_bytes())?;
     }
-    eprintln!(
+    output::note(&format!(
         "wrote {}{}",
         path.display(),
         args.csv
             .as_ref()
             .map_or(String::new(), |c| format!(" and {}", c.display()))
-    );
+    ));
     Ok(())
 }

@@ -97,7 +97,7 @@ pub fn run(args: &Args) -> Result<()> {
         None => format!("{}-diagram-ray.png", args.scene.stem()),
     });
     output::require_png(&path, "a diagram")?;
-    let pending = output::create(&path)?;
+    let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let trace = args.target.record(&scene, source)?;
     let view = match args.view {
         ViewArg::Auto => View::Auto,

@@ -62,7 +62,7 @@ pub fn run(args: &Args) -> Result<()> {
         format!("{}-forward.png", args.scene.stem())
     });
     output::require_png(&path, "a forward trace")?;
-    let pending = output::create(&path)?;
+    let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let (pool, _) = thread_pool(args.threads)?;
     let progress = output::progress_bar(
         args.quiet,

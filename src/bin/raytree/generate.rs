@@ -1,11 +1,12 @@
 //! `raytree generate`: scene files made by program, for scaling runs.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result};
+use anyhow::{Context, Result, bail};
+use raytree::io::input::bytes_in_words;
 use raytree::scene::generate;
 
-use crate::output;
+use crate::{memory, output};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -69,32 +70,75 @@ fn parse_grid(s: &str) -> Result<[u32; 3], String> {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    let (path, text) = match &args.what {
-        Generated::Spheres {
-            count,
-            seed,
+    let (path, need, what) = match &args.what {
+        Generated::Spheres { count, output, .. } => (
             output,
-        } => (output, generate::random_spheres(*count as usize, *seed)),
-        Generated::Grid { size, seed, output } => (output, generate::sphere_grid(*size, *seed)),
+            generate::memory_for_spheres(*count),
+            format!("{count} spheres"),
+        ),
+        Generated::Grid { size, output, .. } => {
+            let count = size.iter().map(|&n| u64::from(n)).product();
+            (
+                output,
+                generate::memory_for_spheres(count),
+                format!("{count} spheres"),
+            )
+        }
         Generated::Icosphere { triangles, output } => {
             let levels = generate::icosphere_levels(*triangles);
-            let obj = output.with_extension("obj");
-            let name = obj
-                .file_name()
-                .context("the output needs a file name")?
-                .to_string_lossy()
-                .into_owned();
-            let mesh = generate::icosphere_obj(levels);
-            output::create(&obj)?.commit(mesh.as_bytes())?;
-            eprintln!(
-                "wrote {} ({} triangles)",
-                obj.display(),
-                20u64 << (2 * levels)
-            );
-            (output, generate::icosphere_scene(&name, 20 << (2 * levels)))
+            (
+                output,
+                generate::memory_for_icosphere(levels),
+                format!("{} triangles", 20u64 << (2 * levels)),
+            )
         }
     };
-    output::create(path)?.commit(text.as_bytes())?;
-    eprintln!("wrote {}", path.display());
+    if let Some(available) = memory::available().filter(|&a| need > a) {
+        bail!(
+            "making {what} needs about {} of memory, more than the {} this machine has available",
+            bytes_in_words(need),
+            bytes_in_words(available)
+        );
+    }
+    match &args.what {
+        Generated::Spheres { count, seed, .. } => {
+            let text = generate::random_spheres(*count as usize, *seed);
+            output::create(path, &[])?.commit(text.as_bytes())?;
+        }
+        Generated::Grid { size, seed, .. } => {
+            let text = generate::sphere_grid(*size, *seed);
+            output::create(path, &[])?.commit(text.as_bytes())?;
+        }
+        Generated::Icosphere { triangles, .. } => icosphere(*triangles, path)?,
+    }
+    output::note(&format!("wrote {}", path.display()));
     Ok(())
+}
+
+/// The icosphere's OBJ file beside its scene, both opened before either is
+/// written, and never one file for both.
+fn icosphere(triangles: u64, path: &Path) -> Result<()> {
+    let levels = generate::icosphere_levels(triangles);
+    let obj = path.with_extension("obj");
+    if raytree::io::output::same_file(&obj, path) {
+        bail!(
+            "cannot write {}: the mesh goes beside the scene with .obj, so the scene needs another name (e.g. .json)",
+            path.display()
+        );
+    }
+    let name = obj
+        .file_name()
+        .context("the output needs a file name")?
+        .to_string_lossy()
+        .into_owned();
+    let mesh_file = output::create(&obj, &[])?;
+    let scene_file = output::create(path, std::slice::from_ref(&obj))?;
+    mesh_file.commit(generate::icosphere_obj(levels).as_bytes())?;
+    output::note(&format!(
+        "wrote {} ({} triangles)",
+        obj.display(),
+        20u64 << (2 * levels)
+    ));
+    let text = generate::icosphere_scene(&name, 20 << (2 * levels));
+    scene_file.commit(text.as_bytes())
 }

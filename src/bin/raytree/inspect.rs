@@ -15,11 +15,11 @@ use crate::args::{SceneArgs, parse_pixel};
 pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
-    /// Start at this pixel (image coordinates) [default: the image's center].
+    /// Start at this pixel (image coordinates) [default: a pixel worth a look: the deepest ray tree nearest the center].
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pixel: Option<(u32, u32)>,
-    /// Open a saved trace (raytree trace --json) instead, with its scene if that file is found.
-    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["scene", "pixel", "Overrides"])]
+    /// Open a saved trace (raytree trace --json) instead. Its scene is the SCENE given after it, or else the file the trace names, found beside the trace or from the current folder; a scene that changed since is left out (the trace is shown without its drawing).
+    #[arg(long, value_name = "FILE.json", conflicts_with_all = ["pixel", "Overrides"])]
     trace: Option<PathBuf>,
     /// Follow a guided step-through (a lesson's TOML script: its scene, its pixel and its stops; n and p move between stops).
     #[arg(long, value_name = "FILE.toml", conflicts_with_all = ["scene", "pixel", "trace", "Overrides"])]
@@ -42,9 +42,8 @@ enum ColorMode {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    if !std::io::stdout().is_terminal() {
-        bail!("raytree inspect needs a terminal (standard output is not one)");
-    }
+    // Everything is read and checked before the terminal is touched, so a
+    // rejection is one line on a terminal left as it was.
     let mut app = match (&args.trace, &args.script) {
         (None, Some(path)) => {
             let script = guide::load(path).map_err(anyhow::Error::msg)?;
@@ -73,12 +72,10 @@ pub fn run(args: &Args) -> Result<()> {
             App::new(scene, source, args.pixel, true)
         }
         (Some(path), _) => {
-            let trace = document::read(path)?;
-            let found = document::find_scene(&trace);
-            let changed = matches!(found, Some((_, false)));
-            let mut app = App::from_trace(trace, found.map(|(scene, _)| scene), true);
-            if changed {
-                app.message = format!("{} changed since the trace was saved", app.source.file);
+            let opened = document::open(path, args.scene.scene.as_deref())?;
+            let mut app = App::from_trace(opened.trace, opened.scene, true);
+            if let Some(note) = opened.note {
+                app.message = note;
             }
             app.loaded_from = Some(path.display().to_string());
             app
@@ -91,6 +88,9 @@ pub fn run(args: &Args) -> Result<()> {
     };
     if let (Some(note), true) = (&app.color_note, app.message.is_empty()) {
         app.message = note.clone();
+    }
+    if !std::io::stdout().is_terminal() {
+        bail!("raytree inspect needs a terminal (standard output is not one)");
     }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
 }

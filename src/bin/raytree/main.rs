@@ -11,6 +11,7 @@ mod forward;
 mod generate;
 mod inspect;
 mod lesson;
+mod memory;
 mod output;
 mod render;
 mod strip;
@@ -18,7 +19,8 @@ mod trace;
 
 use std::process::ExitCode;
 
-use clap::{Parser, Subcommand};
+use clap::{CommandFactory, Parser, Subcommand};
+use raytree::scene::strict::printable;
 
 /// A Whitted-style ray tracer that shows its work.
 #[derive(Parser)]
@@ -53,8 +55,11 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = Cli::parse();
-    output::remove_pending_on_interrupt();
+    let cli = match Cli::try_parse() {
+        Ok(cli) => cli,
+        Err(e) => return usage_error(&e),
+    };
+    output::clean_up_on_signals();
     let result = match cli.command {
         Command::Render(args) => render::run(&args),
         Command::Trace(args) => trace::run(&args),
@@ -70,8 +75,42 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            output::note(&format!("error: {}", printable(&format!("{e:#}"))));
             ExitCode::FAILURE
         }
     }
+}
+
+/// A malformed command line: clap's message as one line, with where to look,
+/// and exit code 2. Help and the version print as clap prints them.
+fn usage_error(e: &clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    if matches!(
+        e.kind(),
+        ErrorKind::DisplayHelp
+            | ErrorKind::DisplayVersion
+            | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
+    ) {
+        let _ = e.print();
+        return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
+    }
+    let text = e.render().to_string();
+    let first = text.lines().next().unwrap_or_default();
+    let first = first.strip_prefix("error: ").unwrap_or(first);
+    // The subcommands named first on the command line, e.g. `raytree generate grid`.
+    let mut command = vec!["raytree".to_owned()];
+    let mut level = Cli::command();
+    for arg in std::env::args().skip(1) {
+        let Some(sub) = level.find_subcommand(&arg).cloned() else {
+            break;
+        };
+        command.push(arg);
+        level = sub;
+    }
+    let command = command.join(" ");
+    output::note(&format!(
+        "error: {} (see {command} --help)",
+        printable(first)
+    ));
+    ExitCode::from(2)
 }

@@ -1,40 +1,61 @@
 //! Output files and streams: every file a command writes is a pending file
-//! registered here until it is committed, so an interrupt can remove it; default
-//! output names; standard output that tolerates a closed pipe; progress bars.
+//! (`raytree::io::output`) until it is committed, never one of the command's
+//! inputs; SIGINT, SIGTERM and SIGHUP remove every pending file and give the
+//! terminal back; default output names; standard output that tolerates a
+//! closed pipe; progress bars.
 
 use std::io::Write;
 use std::path::{Path, PathBuf};
-use std::sync::Mutex;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raytree::io::image_file::{self, Format};
-use raytree::io::output::PendingFile;
+use raytree::io::output::{self, PendingFile};
 
-/// Temporary output files not yet renamed into place: removed if the user
-/// interrupts, since a signal skips the destructors that would remove them.
-static PENDING: Mutex<Vec<PathBuf>> = Mutex::new(Vec::new());
-
-/// Opens `path` for writing as a pending file, registered for removal on interrupt.
-pub fn create(path: &Path) -> Result<PendingFile> {
-    let file = PendingFile::create(path)?;
-    PENDING
-        .lock()
-        .unwrap_or_else(|e| e.into_inner())
-        .push(file.temp_path().to_owned());
-    Ok(file)
+/// Opens `path` for writing as a pending file (removed on a signal), refusing
+/// it when it is one of `inputs`, the files the command reads.
+pub fn create(path: &Path, inputs: &[PathBuf]) -> Result<PendingFile> {
+    if let Some(input) = inputs.iter().find(|i| output::same_file(path, i)) {
+        bail!(
+            "cannot write {}: it is {}, which this command reads (choose another output name)",
+            path.display(),
+            if input.as_path() == path {
+                "an input".to_owned()
+            } else {
+                format!("the same file as the input {}", input.display())
+            }
+        );
+    }
+    PendingFile::create(path)
 }
 
-/// On Ctrl-C: give the terminal back, remove every pending file, exit 130.
-pub fn remove_pending_on_interrupt() {
-    let _ = ctrlc::set_handler(|| {
-        raytree::inspector::restore();
-        for path in PENDING.lock().unwrap_or_else(|e| e.into_inner()).drain(..) {
-            let _ = std::fs::remove_file(path);
+/// On SIGINT, SIGTERM or SIGHUP: give the terminal back, remove every pending
+/// file, say so in one line and exit with 128 + the signal's number (130 for
+/// Ctrl-C), as shells do.
+pub fn clean_up_on_signals() {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+        return;
+    };
+    std::thread::spawn(move || {
+        if let Some(signal) = signals.forever().next() {
+            raytree::inspector::restore();
+            output::remove_pending();
+            let what = match signal {
+                SIGINT => "interrupted",
+                SIGTERM => "terminated (SIGTERM)",
+                _ => "hung up (SIGHUP)",
+            };
+            note(&format!("\n{what}: no output written"));
+            std::process::exit(128 + signal);
         }
-        eprintln!("\ninterrupted: no output written");
-        std::process::exit(130);
     });
+}
+
+/// A line on standard error; one that cannot be written (a closed or full
+/// stream) is dropped rather than ending the program in a panic.
+pub fn note(line: &str) {
+    let _ = writeln!(std::io::stderr().lock(), "{line}");
 }
 
 /// `given`, or `default` (a name in the current folder).
@@ -50,12 +71,15 @@ pub fn require_png(path: &Path, what: &str) -> Result<()> {
     Ok(())
 }
 
-/// Writes to standard output; a closed pipe (`| head`) is not an error.
+/// Writes to standard output; a closed pipe (`| head`) is not an error, a full
+/// disk is.
 pub fn write_stdout(bytes: &[u8]) -> Result<()> {
-    match std::io::stdout().lock().write_all(bytes) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => {
-            Err(e).context("cannot write to standard output")
-        }
+    let mut out = std::io::stdout().lock();
+    match out.write_all(bytes).and_then(|()| out.flush()) {
+        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(anyhow::anyhow!(
+            "cannot write to standard output: {}",
+            output::io_reason(&e)
+        )),
         _ => Ok(()),
     }
 }

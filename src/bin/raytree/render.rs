@@ -10,6 +10,10 @@ use raytree::trace::render;
 use crate::args::SceneArgs;
 use crate::output;
 
+/// Most worker threads: more only costs time on any machine of today (each
+/// thread's start-up and memory) and thousands stall it.
+const MAX_THREADS: usize = 256;
+
 #[derive(clap::Args)]
 pub struct Args {
     #[command(flatten)]
@@ -17,7 +21,7 @@ pub struct Args {
     /// Output image (.png or .ppm) [default: the scene's name with .png, in the current folder].
     #[arg(short, long, value_name = "OUT")]
     pub output: Option<PathBuf>,
-    /// Worker threads [default: one per core].
+    /// Worker threads, 1 to 256 [default: one per core].
     #[arg(long, value_name = "N")]
     pub threads: Option<usize>,
     /// Print nothing but errors.
@@ -44,7 +48,9 @@ pub fn run(args: &Args) -> Result<()> {
     let (scene, _) = args.scene.load()?;
     let path = output::name_or(&args.output, || format!("{}.png", args.scene.stem()));
     let format = image_file::format_of(&path)?;
-    let pending = output::create(&path)?;
+    let pending = output::create(&path, &args.scene.inputs(&scene))?;
+    // The clock starts before the threads do: their start-up is part of the time.
+    let started = Instant::now();
     let (pool, threads) = thread_pool(args.threads)?;
     let progress = output::progress_bar(
         args.quiet,
@@ -52,7 +58,6 @@ pub fn run(args: &Args) -> Result<()> {
     );
     let s = &scene.settings;
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
-    let started = Instant::now();
     let (image, rays) = if args.stats {
         let (image, rays) = pool
             .install(|| render::render_counting(&scene, &progress))
@@ -68,17 +73,17 @@ pub fn run(args: &Args) -> Result<()> {
     progress.finish_and_clear();
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
-        eprintln!(
+        output::note(&format!(
             "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.3} s on {threads} threads",
             path.display(),
             s.width,
             s.height,
             s.spp,
             s.max_depth
-        );
+        ));
     }
     if let Some(r) = rays {
-        eprintln!(
+        output::note(&format!(
             "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {:.1} M rays/s",
             r.total(),
             r.primary,
@@ -86,15 +91,18 @@ pub fn run(args: &Args) -> Result<()> {
             r.reflected,
             r.refracted,
             r.total() as f64 / seconds / 1e6
-        );
+        ));
     }
     Ok(())
 }
 
-/// A pool of `threads` workers (one per core by default), and how many.
+/// A pool of `threads` workers (one per core by default, at most
+/// [`MAX_THREADS`]), and how many.
 pub fn thread_pool(threads: Option<usize>) -> Result<(rayon::ThreadPool, usize)> {
     let threads = match threads {
-        Some(0) => bail!("--threads: must be at least 1"),
+        Some(n) if !(1..=MAX_THREADS).contains(&n) => {
+            bail!("--threads: must be 1 to {MAX_THREADS}, got {n}")
+        }
         Some(n) => n,
         None => std::thread::available_parallelism().map_or(1, |n| n.get()),
     };

@@ -79,7 +79,7 @@ pub fn run(args: &Args) -> Result<()> {
         format!("{}-strip-{field}.png", args.scene.stem())
     });
     output::require_png(&out, "a strip")?;
-    let pending = output::create(&out)?;
+    let pending = output::create(&out, &args.scene.inputs(&base))?;
     let (pool, _) = thread_pool(args.threads)?;
     let progress = output::progress_bar(
         args.quiet,

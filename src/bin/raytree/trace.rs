@@ -32,10 +32,13 @@ pub fn run(args: &Args) -> Result<()> {
             p.extension()
                 .is_some_and(|e| e.eq_ignore_ascii_case("json"))
         });
-    let pending = args.output.as_deref().map(output::create).transpose()?;
+    let inputs = args.scene.inputs(&scene);
+    let pending = (args.output.as_deref())
+        .map(|p| output::create(p, &inputs))
+        .transpose()?;
     let trace = args.target.record(&scene, source)?;
     let text = if json {
-        trace.to_json()
+        trace.to_checked_json().map_err(anyhow::Error::msg)?
     } else {
         text::format(&trace, args.steps)
     };

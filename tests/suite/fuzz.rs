@@ -1,0 +1,586 @@
+//! Structure-aware mutation fuzzing of the three readers of outside files: the
+//! scene loader, the OBJ reader and the trace reader (issue 12). Each case
+//! takes a valid seed (a shipped or generated scene, a small OBJ, a real trace)
+//! and applies a few mutations chosen from random bytes through `arbitrary`: a
+//! value swapped for an edge case (huge, tiny, negative, NaN-like text, a
+//! control character), a key dropped, duplicated or unknown, an object written
+//! as an array, an index pushed past the end, a line repeated or cut. Every
+//! case must end in `Ok` or one-line `Err`, with no panic, within a few
+//! seconds, and leave no file behind; an accepted scene must render and trace
+//! finite numbers, and an accepted trace must read through the views.
+//!
+//! `cargo test --release fuzz` runs a fixed few thousand cases in seconds.
+//! `RAYTREE_FUZZ_SECONDS=600 cargo test --release fuzz_for_a_while -- --ignored --nocapture`
+//! runs fresh cases for that long and prints how many of each were tried.
+
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::path::{Path, PathBuf};
+use std::sync::mpsc;
+use std::time::{Duration, Instant};
+
+use arbitrary::Unstructured;
+use raytree::scene::source::SceneSource;
+use raytree::scene::{generate, loader, obj};
+use raytree::tree::document;
+use serde_json::{Value, json};
+
+/// Longest a case may take before it counts as a hang.
+const HANG: Duration = Duration::from_secs(5);
+
+/// The three readers.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Target {
+    Scene,
+    Obj,
+    Trace,
+}
+
+const TARGETS: [Target; 3] = [Target::Scene, Target::Obj, Target::Trace];
+
+/// A folder holding what scenes refer to: `m.obj` and `n.obj`.
+fn folder() -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(dir.path().join("m.obj"), OBJ_SEEDS[0]).unwrap();
+    std::fs::write(dir.path().join("n.obj"), generate::icosphere_obj(1)).unwrap();
+    dir
+}
+
+const OBJ_SEEDS: [&str; 3] = [
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2//1 3//1 4//1\n",
+    "# tetrahedron\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nf 1/1 3/1 2/1\nf 1 2 4\nf -1 -2 -3\nf 2 3 4\n",
+    "o a\nv -1 -1 0\nv 1 -1 0\nv 0 1 0\nf 1 2 3\no b\nv 0 0 1\nv 1 0 1\nv 0 1 1\nf 4 5 6\n",
+];
+
+fn scene_seeds() -> Vec<Value> {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut seeds: Vec<Value> = ["whitted.json", "nested.json", "ellipsoids.json"]
+        .iter()
+        .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
+        .collect();
+    seeds.push(serde_json::from_str(&generate::random_spheres(12, 1)).unwrap());
+    seeds.push(serde_json::from_str(&generate::icosphere_scene("n.obj", 80)).unwrap());
+    seeds.push(json!({
+        "camera": {"eye": [0, 0, 5], "u": [1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 0.75},
+        "render": {"width": 8, "height": 6, "spp": 4, "weights": "fresnel", "offset": "epsilon=0.001"},
+        "materials": {"m": {"checker": {"colors": [[1, 0, 0], [0, 0, 1]], "size": 0.5}}},
+        "lights": [{"name": "l", "position": [1, 2, 3]}],
+        "objects": [
+            {"mesh": {"file": "m.obj", "smooth": false}, "material": "m"},
+            {"box": {"min": [-1, -1, -1], "max": [0, 0, 0]}, "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 30}}, {"rotate_x": 10}, {"scale": [1, 2, 3]}]},
+            {"triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}
+        ]
+    }));
+    seeds
+}
+
+fn trace_seeds() -> Vec<Value> {
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json"))
+            .unwrap();
+    let mut scene = loader::parse(&text, "s.json").unwrap();
+    scene.settings.width = 64;
+    scene.settings.height = 48;
+    let source = SceneSource::new("s.json", &text);
+    let pixel = raytree::tree::record::pixel(&scene, source.clone(), 42, 20, None).unwrap();
+    scene.settings.spp = 4;
+    let four = raytree::tree::record::pixel(&scene, source.clone(), 40, 30, None).unwrap();
+    let ray = raytree::math::ray::Ray::new(glam::DVec3::new(0.9, 1.0, 1.2), glam::DVec3::X);
+    let given = raytree::tree::record::ray(&scene, source, ray).unwrap();
+    [pixel, four, given]
+        .iter()
+        .map(|t| serde_json::to_value(t).unwrap())
+        .collect()
+}
+
+/// Values that test the edges of every range.
+fn edge_value(u: &mut Unstructured, doc: &Value) -> arbitrary::Result<Value> {
+    Ok(match u.int_in_range(0..=13)? {
+        0 => Value::Null,
+        1 => json!(u.arbitrary::<bool>()?),
+        2 => json!(*u.choose(&[
+            0.0, -0.0, -1.0, 0.5, 1.0, 2.0, 3.0, 9.0, 1024.0, 1025.0, 1000.0, 1001.0, 32768.0
+        ])?),
+        3 => json!(*u.choose(&[
+            1e308, -1e308, 5e-324, 1e-300, 1e9, 2e9, -1e9, 1e-9, 1e-10, 1e6, 1e7, 1e12, 1e13
+        ])?),
+        4 => json!(*u.choose(&[u64::MAX, u64::from(u32::MAX), 4_294_967_296, 1 << 53])?),
+        5 => json!(*u.choose(&[i64::MIN, -1, -2_147_483_649])?),
+        6 => json!(
+            u.arbitrary::<f64>()
+                .ok()
+                .filter(|x| x.is_finite())
+                .unwrap_or(0.0)
+        ),
+        7 => json!([
+            u.arbitrary::<i8>()?,
+            u.arbitrary::<i8>()?,
+            u.arbitrary::<i8>()?
+        ]),
+        8 => json!([]),
+        9 => json!({}),
+        10 => json!(*u.choose(&[
+            "",
+            "sphere",
+            "glass",
+            "default",
+            "fresnel",
+            "epsilon=-1",
+            "adaptive=nan",
+            "x\u{1b}[2J",
+            "a\nb",
+            "\u{7f}",
+            "é",
+            "m.obj",
+            "n.obj",
+            "/dev/zero",
+            "..",
+            "none.obj"
+        ])?),
+        11 => json!(u.arbitrary::<String>()?),
+        12 => any_node(u, doc)?.clone(),
+        _ => json!(u.int_in_range(0..=20)?),
+    })
+}
+
+/// A node of `doc` at random (the root included).
+fn any_node<'v>(u: &mut Unstructured, doc: &'v Value) -> arbitrary::Result<&'v Value> {
+    let mut at = doc;
+    while u.ratio(3, 4)? {
+        at = match at {
+            Value::Array(a) if !a.is_empty() => u.choose(a)?,
+            Value::Object(m) if !m.is_empty() => {
+                let keys: Vec<&String> = m.keys().collect();
+                &m[*u.choose(&keys)?]
+            }
+            _ => break,
+        };
+    }
+    Ok(at)
+}
+
+/// One structural mutation somewhere in `doc`.
+fn mutate_json(u: &mut Unstructured, doc: &mut Value) -> arbitrary::Result<()> {
+    let replacement = edge_value(u, doc)?;
+    // Walk down to a node, noting its JSON pointer, then take it mutably.
+    let mut pointer = String::new();
+    let mut here: &Value = doc;
+    while u.ratio(4, 5)? {
+        here = match here {
+            Value::Array(a) if !a.is_empty() => {
+                let i = u.choose_index(a.len())?;
+                pointer.push_str(&format!("/{i}"));
+                &a[i]
+            }
+            Value::Object(m) if !m.is_empty() => {
+                let keys: Vec<&String> = m.keys().collect();
+                let k = *u.choose(&keys)?;
+                pointer.push_str(&format!("/{}", k.replace('~', "~0").replace('/', "~1")));
+                &m[k]
+            }
+            _ => break,
+        };
+    }
+    let Some(at) = doc.pointer_mut(&pointer) else {
+        return Ok(());
+    };
+    match (u.int_in_range(0..=7)?, &mut *at) {
+        (0, Value::Object(m)) if !m.is_empty() => {
+            let keys: Vec<String> = m.keys().cloned().collect();
+            m.remove(u.choose(&keys)?);
+        }
+        (1, Value::Object(m)) => {
+            let key = u.choose(&[
+                "name",
+                "radius",
+                "unknown",
+                "sphere",
+                "plane",
+                "mesh",
+                "transform",
+                "ior",
+            ])?;
+            m.insert((*key).to_owned(), replacement);
+        }
+        (2, Value::Object(m)) => *at = Value::Array(m.values().cloned().collect()),
+        (3, Value::Array(a)) if !a.is_empty() => {
+            let i = u.choose_index(a.len())?;
+            if u.arbitrary()? {
+                a.remove(i);
+            } else {
+                let copy = a[i].clone();
+                a.push(copy);
+            }
+        }
+        (4, Value::Number(n)) => {
+            let x = n.as_f64().unwrap_or(0.0);
+            let f = *u.choose(&[-1.0, 0.0, 2.0, 1e10, 1e-10, 1.000_000_1])?;
+            *at = json!(if f == 0.0 { x + 1.0 } else { x * f });
+        }
+        (5, Value::Number(n)) => {
+            let x = n.as_u64().unwrap_or(0);
+            *at = json!(x + u.int_in_range(1..=3)?);
+        }
+        _ => *at = replacement,
+    }
+    Ok(())
+}
+
+/// Text-level damage JSON values cannot express: a key written twice, a cut,
+/// a stray byte.
+fn damage_text(u: &mut Unstructured, text: &mut String) -> arbitrary::Result<()> {
+    match u.int_in_range(0..=9)? {
+        0 => {
+            if let Some(i) = text.find('{') {
+                let key =
+                    u.choose(&["\"name\": \"x\", ", "\"radius\": 1, ", "\"objects\": [], "])?;
+                if text[i + 1..].trim_start().starts_with('"') {
+                    text.insert_str(i + 1, key);
+                }
+            }
+        }
+        1 => {
+            let cut = u.choose_index(text.len().max(1))?;
+            let cut = (0..=cut)
+                .rev()
+                .find(|&c| text.is_char_boundary(c))
+                .unwrap_or(0);
+            text.truncate(cut);
+        }
+        2 => {
+            let at = u.choose_index(text.len().max(1))?;
+            let at = (0..=at)
+                .rev()
+                .find(|&c| text.is_char_boundary(c))
+                .unwrap_or(0);
+            let c = *u.choose(&['{', '}', '[', ']', ',', ':', '"', '\\', '\u{1b}', '\0'])?;
+            text.insert(at, c);
+        }
+        _ => {}
+    }
+    Ok(())
+}
+
+/// An OBJ seed with a few line-level mutations.
+fn mutate_obj(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    for _ in 0..u.int_in_range(1..=4)? {
+        if lines.is_empty() {
+            lines.push("f 1 2 3".to_owned());
+        }
+        let i = u.choose_index(lines.len())?;
+        match u.int_in_range(0..=7)? {
+            0 => {
+                lines.remove(i);
+            }
+            1 => lines.insert(i, lines[i].clone()),
+            2 => {
+                let mut words: Vec<String> = lines[i].split(' ').map(str::to_owned).collect();
+                let w = u.choose_index(words.len())?;
+                words[w] = (*u.choose(&[
+                    "0",
+                    "-1",
+                    "-9",
+                    "99",
+                    "1e308",
+                    "nan",
+                    "inf",
+                    "-inf",
+                    "2e9",
+                    "1/",
+                    "//",
+                    "1//9",
+                    "x",
+                    "",
+                    "4294967296",
+                    "-2147483649",
+                ])?)
+                .to_owned();
+                lines[i] = words.join(" ");
+            }
+            3 => {
+                lines[i] = (*u.choose(&[
+                    "f 1",
+                    "f 1 2",
+                    "f 1 1 1",
+                    "v 1",
+                    "vn 0 0 0",
+                    "vt",
+                    "l 1 2",
+                    "p 1",
+                    "mtllib x.mtl",
+                    "usemtl red",
+                    "o",
+                    "g",
+                    "s off",
+                ])?)
+                .to_owned()
+            }
+            4 => {
+                let j = u.choose_index(lines.len())?;
+                lines.swap(i, j);
+            }
+            5 => lines[i] = u.arbitrary::<String>()?,
+            6 => lines.truncate(i),
+            _ => lines[i].push_str(" 1e-300"),
+        }
+    }
+    let mut bytes = lines.join("\n").into_bytes();
+    if u.ratio(1, 20)? {
+        let at = u.choose_index(bytes.len().max(1))?.min(bytes.len());
+        bytes.insert(at, 0xff);
+    }
+    Ok(bytes)
+}
+
+/// The seeds, made once.
+struct Seeds {
+    scenes: Vec<Value>,
+    traces: Vec<Value>,
+}
+
+/// One case: `data` chooses a seed and its mutations, the reader runs on the result.
+fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<(), String> {
+    let mut u = Unstructured::new(data);
+    match target {
+        Target::Obj => {
+            let seed = *u.choose(&OBJ_SEEDS).unwrap_or(&OBJ_SEEDS[0]);
+            let bytes = mutate_obj(&mut u, seed).unwrap_or_default();
+            if let Err(e) = obj::parse(&bytes, "m.obj", true) {
+                one_line(&e.to_string())?;
+            }
+        }
+        Target::Scene => {
+            let text = mutated(&mut u, &seeds.scenes);
+            let file = dir.join("fuzz.json").display().to_string();
+            match loader::parse(&text, &file) {
+                Ok(scene) => scene_works(scene, &text)?,
+                Err(e) => one_line(&e.to_string())?,
+            }
+        }
+        Target::Trace => {
+            let text = mutated(&mut u, &seeds.traces);
+            match document::parse(&text) {
+                Ok(trace) => trace_works(&trace)?,
+                Err(e) => one_line(&e)?,
+            }
+        }
+    }
+    Ok(())
+}
+
+/// A seed with 1 to 4 mutations, as text, maybe damaged.
+fn mutated(u: &mut Unstructured, seeds: &[Value]) -> String {
+    let mut doc = u.choose(seeds).cloned().unwrap_or(Value::Null);
+    let n = u.int_in_range(1..=4).unwrap_or(1);
+    for _ in 0..n {
+        let _ = mutate_json(u, &mut doc);
+    }
+    let mut text = serde_json::to_string_pretty(&doc).unwrap();
+    let _ = damage_text(u, &mut text);
+    text
+}
+
+fn one_line(message: &str) -> Result<(), String> {
+    match message.contains('\n') || message.is_empty() {
+        true => Err(format!("not one line: {message:?}")),
+        false => Ok(()),
+    }
+}
+
+/// An accepted scene, made small, renders finite pixels and traces a pixel
+/// that writes and reads back exactly.
+fn scene_works(mut scene: raytree::scene::Scene, text: &str) -> Result<(), String> {
+    let s = &mut scene.settings;
+    (s.width, s.height, s.spp) = (s.width.min(4), s.height.min(3), s.spp.min(4));
+    s.max_depth = s.max_depth.min(6);
+    if let raytree::methods::Antialiasing::Adaptive { levels, .. } = &mut s.aa {
+        *levels = (*levels).min(1);
+    }
+    if scene.objects.len() > 64 {
+        return Ok(());
+    }
+    let image = raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden())
+        .map_err(|e| e.to_string())?;
+    if let Some(p) = image.pixels.iter().find(|p| !p.is_finite()) {
+        return Err(format!("a pixel is {p}"));
+    }
+    let source = SceneSource::new("fuzz.json", text);
+    // The pixel at (1, 1), or the last one of a smaller image.
+    let (x, y) = (
+        scene.settings.width.min(2) - 1,
+        scene.settings.height.min(2) - 1,
+    );
+    let trace =
+        raytree::tree::record::pixel(&scene, source, x, y, None).map_err(|e| e.to_string())?;
+    trace.to_checked_json().map(|_| ())
+}
+
+/// An accepted trace reads through the text view and its steps.
+fn trace_works(trace: &raytree::tree::document::TraceDocument) -> Result<(), String> {
+    for k in 0..trace.samples.len() {
+        let _ = trace.steps(k);
+    }
+    let text = raytree::views::text::format(trace, true);
+    if text.contains('\u{1b}') {
+        return Err("an escape reached the text trace".to_owned());
+    }
+    Ok(())
+}
+
+/// Runs `cases` cases of `target`, each from `case_bytes(i)`, in a worker
+/// thread watched for hangs; a failing case is saved under `target/fuzz/`.
+fn campaign(target: Target, seeds: Seeds, cases: u64, seed: u64, until: Option<Instant>) -> u64 {
+    let dir = folder();
+    let before = listing(dir.path());
+    let (tx, rx) = mpsc::channel::<(u64, Vec<u8>, Result<(), String>)>();
+    let work_dir = dir.path().to_owned();
+    let worker = std::thread::spawn(move || {
+        let mut rng = fastrand::Rng::with_seed(seed);
+        for i in 0..cases {
+            if until.is_some_and(|t| Instant::now() > t) {
+                break;
+            }
+            let len = rng.usize(16..=512);
+            let data: Vec<u8> = std::iter::repeat_with(|| rng.u8(..)).take(len).collect();
+            let outcome = catch_unwind(AssertUnwindSafe(|| {
+                run_case(target, &seeds, &work_dir, &data)
+            }))
+            .unwrap_or_else(|p| {
+                Err(format!(
+                    "panicked: {}",
+                    p.downcast_ref::<String>()
+                        .cloned()
+                        .or_else(|| p.downcast_ref::<&str>().map(|s| (*s).to_owned()))
+                        .unwrap_or_default()
+                ))
+            });
+            if tx.send((i, data, outcome)).is_err() {
+                break;
+            }
+        }
+    });
+    let mut done = 0;
+    loop {
+        match rx.recv_timeout(HANG) {
+            Ok((i, data, outcome)) => {
+                done += 1;
+                if let Err(e) = outcome {
+                    let saved = save(target, &data);
+                    panic!(
+                        "{target:?} case {i} (seed {seed}): {e}; its bytes are in {}",
+                        saved.display()
+                    );
+                }
+            }
+            Err(mpsc::RecvTimeoutError::Disconnected) => break,
+            Err(mpsc::RecvTimeoutError::Timeout) => {
+                panic!("{target:?}: case {done} (seed {seed}) ran over {HANG:?}: a hang");
+            }
+        }
+    }
+    worker.join().unwrap();
+    assert_eq!(listing(dir.path()), before, "{target:?}: files left behind");
+    done
+}
+
+fn listing(dir: &Path) -> Vec<String> {
+    let mut names: Vec<String> = std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect();
+    names.sort();
+    names
+}
+
+fn save(target: Target, data: &[u8]) -> PathBuf {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/fuzz");
+    let _ = std::fs::create_dir_all(&dir);
+    let path = dir.join(format!("{target:?}-{:016x}.bin", fastrand::u64(..)));
+    let _ = std::fs::write(&path, data);
+    path
+}
+
+fn seeds() -> Seeds {
+    Seeds {
+        scenes: scene_seeds(),
+        traces: trace_seeds(),
+    }
+}
+
+#[test]
+fn fuzz_the_scene_loader() {
+    assert_eq!(campaign(Target::Scene, seeds(), 1500, 1, None), 1500);
+}
+
+#[test]
+fn fuzz_the_obj_reader() {
+    assert_eq!(campaign(Target::Obj, seeds(), 4000, 2, None), 4000);
+}
+
+#[test]
+fn fuzz_the_trace_reader() {
+    assert_eq!(campaign(Target::Trace, seeds(), 1500, 3, None), 1500);
+}
+
+/// The long run: `RAYTREE_FUZZ_SECONDS` (default 600) split between the three
+/// readers, fresh seeds each run; prints the cases tried.
+#[test]
+#[ignore = "runs for minutes: RAYTREE_FUZZ_SECONDS=600 cargo test --release fuzz_for_a_while -- --ignored --nocapture"]
+fn fuzz_for_a_while() {
+    let seconds: u64 = std::env::var("RAYTREE_FUZZ_SECONDS")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(600);
+    let start = fastrand::u64(..);
+    let mut total = 0;
+    for (k, target) in TARGETS.into_iter().enumerate() {
+        let until = Instant::now() + Duration::from_secs(seconds / 3);
+        let tried = campaign(
+            target,
+            seeds(),
+            u64::MAX,
+            start.wrapping_add(k as u64),
+            Some(until),
+        );
+        println!(
+            "{target:?}: {tried} cases in {} s, no panic, no hang, no file left (seed {})",
+            seconds / 3,
+            start.wrapping_add(k as u64)
+        );
+        total += tried;
+    }
+    println!("all: {total} cases");
+}
+
+#[test]
+fn mutations_reach_the_interesting_places() {
+    // The mutator is not idle: most cases of each reader are rejected, some
+    // accepted, so both paths are exercised.
+    let seeds = seeds();
+    let dir = folder();
+    for target in TARGETS {
+        let mut rng = fastrand::Rng::with_seed(9);
+        let (mut ok, mut err) = (0, 0);
+        for _ in 0..300 {
+            let data: Vec<u8> = std::iter::repeat_with(|| rng.u8(..)).take(256).collect();
+            let mut u = Unstructured::new(&data);
+            let accepted = match target {
+                Target::Obj => {
+                    let bytes = mutate_obj(&mut u, OBJ_SEEDS[1]).unwrap_or_default();
+                    obj::parse(&bytes, "m.obj", true).is_ok()
+                }
+                Target::Scene => loader::parse(
+                    &mutated(&mut u, &seeds.scenes),
+                    &dir.path().join("f.json").display().to_string(),
+                )
+                .is_ok(),
+                Target::Trace => document::parse(&mutated(&mut u, &seeds.traces)).is_ok(),
+            };
+            if accepted { ok += 1 } else { err += 1 }
+        }
+        assert!(
+            ok >= 5 && err >= 100,
+            "{target:?}: {ok} accepted, {err} rejected"
+        );
+    }
+}

@@ -1,0 +1,130 @@
+//! The media rule at every boundary (issue 12): a ray is in the innermost
+//! (last entered) of the transparent objects it is inside, so `n₁` is that
+//! medium's index and `n₂` the innermost's on the far side, for overlapping
+//! objects as for nested ones; and a ray given by hand starts in the media
+//! around its own origin.
+
+use glam::DVec3;
+use raytree::math::ray::Ray;
+use raytree::scene::source::SceneSource;
+use raytree::trace::recorder::{Branch, RayKind};
+use raytree::tree::record;
+
+use crate::common::scene;
+
+/// Spheres A (n = 1.2), B (1.5) and C (1.8) of radius 1 at x = 0, 1.2 and 2.4:
+/// each overlaps the next, none holds another. Clear glass: only refracted rays.
+fn three_overlapping(weights: &str) -> raytree::scene::Scene {
+    scene(&format!(
+        r#"{{
+        "render": {{"weights": "{weights}", "max_depth": 20, "cutoff": 0}},
+        "materials": {{
+            "a": {{"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.2}},
+            "b": {{"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5}},
+            "c": {{"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.8}}
+        }},
+        "objects": [
+            {{"name": "A", "sphere": {{"center": [0, 0, 0], "radius": 1}}, "material": "a"}},
+            {{"name": "B", "sphere": {{"center": [1.2, 0, 0], "radius": 1}}, "material": "b"}},
+            {{"name": "C", "sphere": {{"center": [2.4, 0, 0], "radius": 1}}, "material": "c"}}
+        ]
+    }}"#
+    ))
+}
+
+#[test]
+fn overlapping_objects_follow_the_media_rule_at_every_crossing() {
+    // An oblique ray along the row: in A, in B, out of A (inside B), in C,
+    // out of B (inside C), out of C.
+    let ray = Ray::new(DVec3::new(-3.0, -0.3, 0.0), DVec3::new(1.0, 0.05, 0.0));
+    let expected = [
+        (0, true, 1.0, 1.2),
+        (1, true, 1.2, 1.5),
+        (0, false, 1.5, 1.5),
+        (2, true, 1.5, 1.8),
+        (1, false, 1.8, 1.8),
+        (2, false, 1.8, 1.0),
+    ];
+    for weights in ["constant", "fresnel"] {
+        let scene = three_overlapping(weights);
+        let text = format!("{weights}.json");
+        let trace = record::ray(&scene, SceneSource::new(&text, ""), ray).unwrap();
+        // The chain of refracted rays from the primary one: the crossings in order.
+        let nodes = &trace.samples[0].tree.nodes;
+        let mut chain = vec![&nodes[0]];
+        while let Some(next) = chain
+            .last()
+            .unwrap()
+            .refracted
+            .as_ref()
+            .and_then(|b| b.node)
+        {
+            chain.push(&nodes[next]);
+        }
+        let crossings: Vec<(usize, bool, f64, f64)> = chain
+            .iter()
+            .filter_map(|n| n.hit.as_ref())
+            .map(|h| (h.object, h.entering, h.n1, h.n2))
+            .collect();
+        assert_eq!(crossings, expected, "{weights}");
+        for (k, &(_, _, n1, n2)) in expected.iter().enumerate() {
+            let (before, after) = (
+                chain[k].direction.normalize(),
+                chain[k + 1].direction.normalize(),
+            );
+            if n1 == n2 {
+                // Between equal indices the ray goes straight (to rounding: a
+                // few ULPs of a unit vector), and reflects nothing, under
+                // Fresnel's weights too.
+                assert!(
+                    (after - before).length() < 1e-14,
+                    "{weights} crossing {k}: {before} → {after}"
+                );
+                let reflected = chain[k].reflected.as_ref().unwrap();
+                assert_eq!(
+                    (reflected.coefficient, reflected.outcome),
+                    (0.0, Branch::NoCoefficient),
+                    "{weights} {k}"
+                );
+            } else {
+                assert!(
+                    (after - before).length() > 1e-4,
+                    "{weights} crossing {k} should bend"
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn a_ray_given_by_hand_starts_in_the_media_around_its_origin() {
+    // Water (1.33) inside glass (1.5); the ray starts at the center, in water.
+    let text = r#"{
+        "materials": {
+            "glass": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5},
+            "water": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.33}
+        },
+        "objects": [
+            {"name": "glass", "sphere": {"radius": 2}, "material": "glass"},
+            {"name": "water", "sphere": {"radius": 1}, "material": "water"}
+        ]
+    }"#;
+    let scene = scene(text);
+    let ray = Ray::new(DVec3::new(0.0, 0.0, 0.0), DVec3::new(1.0, 0.2, 0.0));
+    let trace = record::ray(&scene, SceneSource::new("test.json", text), ray).unwrap();
+    let hits: Vec<(String, f64, f64)> = trace.samples[0]
+        .tree
+        .nodes
+        .iter()
+        .filter(|n| n.kind != RayKind::Reflected)
+        .filter_map(|n| n.hit.as_ref())
+        .map(|h| (h.name.clone(), h.n1, h.n2))
+        .collect();
+    assert_eq!(
+        hits,
+        [
+            ("water".to_owned(), 1.33, 1.5),
+            ("glass".to_owned(), 1.5, 1.0)
+        ]
+    );
+}

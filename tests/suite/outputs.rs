@@ -1,0 +1,234 @@
+//! What raytree writes never destroys what it reads, and its bounds and small
+//! promises hold (issue 12): outputs that are inputs and read-only outputs are
+//! refused, `--threads` and the generators are bounded, `diff` reads PPM and
+//! survives a closed pipe or a full disk, and every message is one line.
+
+use crate::common::{refused, refused_with};
+
+const SCENE: &[u8] =
+    br#"{"render": {"width": 8, "height": 6}, "objects": [{"mesh": {"file": "m.obj"}}]}"#;
+const MESH: &[u8] = b"v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+
+#[test]
+fn an_output_that_is_an_input_is_refused() {
+    let files: [(&str, &[u8]); 2] = [("s.json", SCENE), ("m.obj", MESH)];
+    let e = refused(
+        "trace-over-scene",
+        &files,
+        &["trace", "s.json", "--pixel", "1,1", "-o", "s.json"],
+    );
+    assert_eq!(
+        e,
+        "error: cannot write s.json: it is an input, which this command reads (choose another output name)"
+    );
+    let e = refused(
+        "trace-over-mesh",
+        &files,
+        &["trace", "s.json", "--pixel", "1,1", "-o", "./m.obj"],
+    );
+    assert!(
+        e.starts_with("error: cannot write ./m.obj: it is the same file as the input"),
+        "{e}"
+    );
+    let e = refused(
+        "chart-csv-over-png",
+        &files,
+        &["chart", "s.json", "-o", "c.png", "--csv", "c.png"],
+    );
+    assert_eq!(
+        e,
+        "error: cannot write c.png: the CSV figures and the chart need two files"
+    );
+    let e = refused(
+        "icosphere-over-its-mesh",
+        &[],
+        &["generate", "icosphere", "--triangles", "20", "-o", "x.obj"],
+    );
+    assert!(
+        e.starts_with("error: cannot write x.obj: the mesh goes beside the scene"),
+        "{e}"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_read_only_output_is_refused_not_replaced() {
+    use std::os::unix::fs::PermissionsExt;
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("ro.png");
+    std::fs::write(&out, b"keep").unwrap();
+    std::fs::set_permissions(&out, std::fs::Permissions::from_mode(0o444)).unwrap();
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["render", "--width", "8", "--height", "6", "-o"])
+        .arg(&out)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr
+            .trim_end()
+            .ends_with("ro.png: it is read-only (make it writable, or choose another name)"),
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read(&out).unwrap(), b"keep");
+    assert_eq!(
+        std::fs::metadata(&out).unwrap().permissions().mode() & 0o777,
+        0o444
+    );
+    assert_eq!(
+        std::fs::read_dir(dir.path()).unwrap().count(),
+        1,
+        "no temporary file left"
+    );
+}
+
+#[test]
+fn threads_and_generators_are_bounded() {
+    let e = refused("threads-huge", &[], &["render", "--threads", "10000"]);
+    assert_eq!(e, "error: --threads: must be 1 to 256, got 10000");
+    let e = refused("threads-zero", &[], &["render", "--threads", "0"]);
+    assert_eq!(e, "error: --threads: must be 1 to 256, got 0");
+    // The generator estimates first; a 2 GB address-space limit is what it may take.
+    let dir = tempfile::tempdir().unwrap();
+    let run = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -v 2000000 && exec {} generate icosphere --triangles 100000000 -o big.json",
+            env!("CARGO_BIN_EXE_raytree")
+        ))
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&run.stderr);
+    assert_eq!(run.status.code(), Some(1), "{stderr}");
+    assert!(
+        stderr.starts_with(
+            "error: making 83886080 triangles needs about 22.6 GB of memory, more than the "
+        ) && stderr.lines().count() == 1,
+        "{stderr}"
+    );
+    assert_eq!(std::fs::read_dir(dir.path()).unwrap().count(), 0);
+}
+
+#[test]
+fn diff_reads_ppm_and_survives_closed_and_full_outputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let raytree = env!("CARGO_BIN_EXE_raytree");
+    for out in ["a.ppm", "b.png"] {
+        let made = std::process::Command::new(raytree)
+            .args(["render", "--width", "8", "--height", "6", "-q", "-o", out])
+            .current_dir(dir.path())
+            .status()
+            .unwrap();
+        assert!(made.success());
+    }
+    let same = std::process::Command::new(raytree)
+        .args(["diff", "a.ppm", "b.png"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    assert!(
+        same.status.success(),
+        "{}",
+        String::from_utf8_lossy(&same.stderr)
+    );
+    assert!(
+        String::from_utf8_lossy(&same.stdout)
+            .starts_with("mean absolute difference 0.000/255, largest 0/255")
+    );
+    // Standard output closed before raytree writes: quiet, exit 0.
+    let mut child = std::process::Command::new(raytree)
+        .args(["diff", "a.ppm", "b.png"])
+        .current_dir(dir.path())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stdout.take());
+    let closed = child.wait_with_output().unwrap();
+    assert_eq!(
+        closed.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&closed.stderr)
+    );
+    assert!(closed.stderr.is_empty());
+    // A full disk: one line, exit 1.
+    let full = std::process::Command::new(raytree)
+        .args(["diff", "a.ppm", "b.png"])
+        .current_dir(dir.path())
+        .stdout(std::fs::File::create("/dev/full").unwrap())
+        .output()
+        .unwrap();
+    assert_eq!(full.status.code(), Some(1));
+    assert_eq!(
+        String::from_utf8_lossy(&full.stderr),
+        "error: cannot write to standard output: No space left on device\n"
+    );
+}
+
+#[test]
+fn small_promises_hold() {
+    let e = refused(
+        "diagram-small",
+        &[],
+        &["diagram", "--pixel", "1,1", "--size", "64x64"],
+    );
+    assert!(
+        e.starts_with("error: a 64×64 figure leaves ")
+            && e.ends_with("the drawing needs at least 40×40 (try 400x300 or more)"),
+        "{e}"
+    );
+    let e = refused_with(
+        2,
+        "diagram-depth-0",
+        &[],
+        &["diagram", "--pixel", "1,1", "--depth", "0"],
+    );
+    assert!(
+        e.contains("'--depth <D>'") && e.ends_with("(see raytree diagram --help)"),
+        "{e}"
+    );
+    let e = refused_with(2, "usage-one-line", &[], &["render", "--bogus"]);
+    assert_eq!(
+        e,
+        "error: unexpected argument '--bogus' found (see raytree render --help)"
+    );
+    let e = refused_with(
+        2,
+        "usage-generate",
+        &[],
+        &["generate", "grid", "--size", "0x0x0"],
+    );
+    assert!(e.ends_with("(see raytree generate grid --help)"), "{e}");
+    // --help in the user's words: no rustdoc links or paths.
+    let commands: &[&[&str]] = &[
+        &[],
+        &["render"],
+        &["trace"],
+        &["diagram"],
+        &["inspect"],
+        &["chart"],
+        &["diff"],
+        &["generate"],
+        &["generate", "spheres"],
+        &["generate", "grid"],
+        &["generate", "icosphere"],
+    ];
+    for command in commands {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(*command)
+            .arg("--help")
+            .output()
+            .unwrap();
+        assert!(out.status.success());
+        let help = String::from_utf8(out.stdout).unwrap();
+        for rustdoc in ["[`", "`]", "crate::", "Self::"] {
+            assert!(
+                !help.contains(rustdoc),
+                "{command:?} --help holds {rustdoc}:\n{help}"
+            );
+        }
+    }
+}

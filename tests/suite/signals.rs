@@ -1,0 +1,142 @@
+//! SIGINT, SIGTERM and SIGHUP end raytree cleanly (issue 12): a writing command
+//! leaves no pending file and exits 128 + the signal's number; the inspector
+//! gives the terminal back (main screen, cooked mode) before it exits.
+
+use std::path::Path;
+use std::process::{Command, Stdio};
+use std::time::{Duration, Instant};
+
+use crate::inspector_tmux::tmux;
+
+const SIGNALS: [(&str, i32); 3] = [("INT", 2), ("TERM", 15), ("HUP", 1)];
+
+fn kill(signal: &str, pid: u32) {
+    let sent = Command::new("kill")
+        .args([format!("-{signal}"), pid.to_string()])
+        .status()
+        .unwrap();
+    assert!(sent.success(), "kill -{signal} {pid}");
+}
+
+fn names_in(dir: &Path) -> Vec<String> {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().into_string().unwrap())
+        .collect()
+}
+
+#[test]
+fn each_signal_during_a_render_leaves_no_file() {
+    for (signal, number) in SIGNALS {
+        let dir = tempfile::tempdir().unwrap();
+        let child = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args([
+                "render", "--width", "4000", "--height", "3000", "--spp", "64", "-o", "big.png",
+            ])
+            .current_dir(dir.path())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        // The temporary file exists once the render has started.
+        let started = Instant::now();
+        while names_in(dir.path()).is_empty() && started.elapsed() < Duration::from_secs(10) {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        assert!(
+            !names_in(dir.path()).is_empty(),
+            "SIG{signal}: the render never started"
+        );
+        kill(signal, child.id());
+        let out = child.wait_with_output().unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(
+            out.status.code(),
+            Some(128 + number),
+            "SIG{signal}: {stderr}"
+        );
+        assert!(
+            stderr.trim_end().ends_with(": no output written"),
+            "SIG{signal}: {stderr}"
+        );
+        assert!(
+            names_in(dir.path()).is_empty(),
+            "SIG{signal}: left behind {:?}",
+            names_in(dir.path())
+        );
+    }
+}
+
+/// Runs the inspector in a tmux pane, sends it `signal` once it has drawn, and
+/// returns its exit status and the terminal's settings after it ended.
+fn inspector_after(signal: &str) -> (String, String, String) {
+    let dir = tempfile::tempdir().unwrap();
+    let d = dir.path().display();
+    let session = format!("raytree-signal-{signal}-{}", std::process::id());
+    // `exec` makes the shell's pid raytree's; the pane's shell then reports.
+    let command = format!(
+        "sh -c 'echo $$ > {d}/pid; exec {} inspect --width 64 --height 48'; echo $? > {d}/exit; stty -a > {d}/stty; sleep 30",
+        env!("CARGO_BIN_EXE_raytree")
+    );
+    let made = Command::new("tmux")
+        .args([
+            "new-session",
+            "-d",
+            "-s",
+            &session,
+            "-x",
+            "100",
+            "-y",
+            "30",
+            &command,
+        ])
+        .status()
+        .unwrap();
+    assert!(made.success());
+    let wait = |ok: &dyn Fn() -> bool| {
+        let started = Instant::now();
+        while !ok() && started.elapsed() < Duration::from_secs(20) {
+            std::thread::sleep(Duration::from_millis(50));
+        }
+    };
+    wait(&|| tmux(&["capture-pane", "-t", &session, "-p"]).contains("ray tree"));
+    let pid: u32 = std::fs::read_to_string(dir.path().join("pid"))
+        .unwrap()
+        .trim()
+        .parse()
+        .unwrap();
+    kill(signal, pid);
+    wait(&|| dir.path().join("stty").exists());
+    std::thread::sleep(Duration::from_millis(100));
+    let screen = tmux(&["capture-pane", "-t", &session, "-p"]);
+    let _ = Command::new("tmux")
+        .args(["kill-session", "-t", &session])
+        .status();
+    let read = |f: &str| std::fs::read_to_string(dir.path().join(f)).unwrap_or_default();
+    (read("exit"), read("stty"), screen)
+}
+
+#[test]
+fn each_signal_gives_the_inspector_s_terminal_back() {
+    if Command::new("tmux").arg("-V").output().is_err() {
+        println!("skipped: tmux is not installed (.ci/run installs it)");
+        return;
+    }
+    for (signal, number) in SIGNALS {
+        let (exit, stty, screen) = inspector_after(signal);
+        assert_eq!(
+            exit.trim(),
+            (128 + number).to_string(),
+            "SIG{signal}:\n{screen}"
+        );
+        // Cooked mode again: line editing and echo on.
+        let words: Vec<&str> = stty.split_whitespace().collect();
+        assert!(
+            words.contains(&"icanon") && words.contains(&"echo"),
+            "SIG{signal}: {stty}"
+        );
+        assert!(
+            !screen.contains("ray tree"),
+            "SIG{signal}: still on the inspector's screen:\n{screen}"
+        );
+    }
+}

@@ -1,0 +1,196 @@
+//! Saved traces read back safely (issue 12): every way a trace file can be
+//! broken is one line and exit 1 before the terminal is touched; a scene that
+//! changed since tracing is left out with a note; the scene is found beside the
+//! trace first, then from the working folder, or given after it.
+
+use std::path::Path;
+
+use raytree::scene::source::SceneSource;
+use raytree::tree::document::{self, TraceDocument};
+use raytree::tree::record;
+use serde_json::{Value, json};
+
+use crate::common::refused;
+
+fn whitted_text() -> String {
+    std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json"))
+        .unwrap()
+}
+
+/// The glass pixel's trace of the Whitted scene saved as `s.json` (11 rays).
+fn good_trace() -> TraceDocument {
+    let text = whitted_text();
+    let scene = raytree::scene::loader::parse(&text, "s.json").unwrap();
+    record::pixel(&scene, SceneSource::new("s.json", &text), 416, 209, None).unwrap()
+}
+
+/// The trace with `change` made to its JSON.
+fn broken(change: impl FnOnce(&mut Value)) -> Vec<u8> {
+    let mut v = serde_json::to_value(good_trace()).unwrap();
+    change(&mut v);
+    serde_json::to_vec(&v).unwrap()
+}
+
+fn node(v: &mut Value, i: usize) -> &mut Value {
+    &mut v["samples"][0]["tree"]["nodes"][i]
+}
+
+#[test]
+fn every_broken_trace_is_one_line_and_exit_1() {
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        (
+            "no-samples",
+            broken(|v| v["samples"] = json!([])),
+            "samples: empty",
+        ),
+        (
+            "no-nodes",
+            broken(|v| v["samples"][0]["tree"]["nodes"] = json!([])),
+            "samples[0].tree.nodes: empty",
+        ),
+        (
+            "child-past-the-end",
+            broken(|v| node(v, 0)["reflected"]["node"] = json!(999)),
+            "samples[0].tree.nodes[0].reflected.node: 999 is not a node (the tree has 11)",
+        ),
+        (
+            "object-index",
+            broken(|v| node(v, 0)["hit"]["object"] = json!(99)),
+            "samples[0].tree.nodes[0].hit.object: object 99 does not exist (the trace lists 4)",
+        ),
+        (
+            "light-index",
+            broken(|v| node(v, 0)["shadow_rays"][1]["light"] = json!(7)),
+            "samples[0].tree.nodes[0].shadow_rays[1].light: light 7 does not exist",
+        ),
+        (
+            "parent-loop",
+            broken(|v| {
+                node(v, 1)["parent"] = json!(2);
+                node(v, 2)["parent"] = json!(1);
+            }),
+            "must come after node 0, name it as its parent",
+        ),
+        (
+            "child-loop",
+            broken(|v| node(v, 3)["reflected"]["node"] = json!(2)),
+            "samples[0].tree.nodes[3].reflected.node: node 2 must come after node 3",
+        ),
+        (
+            "orphan",
+            broken(|v| node(v, 0)["reflected"]["node"] = Value::Null),
+            "samples[0].tree.nodes[1]: no node spawns it",
+        ),
+        (
+            "renamed-object",
+            broken(|v| v["objects"][2]["name"] = json!("bowl")),
+            "is 'bowl', not 'glass'",
+        ),
+        (
+            "escape-in-a-name",
+            broken(|v| v["lights"][0]["name"] = json!("key\u{1b}[2J")),
+            "lights[0].name: 'key\\u{1b}[2J' holds a control character",
+        ),
+        (
+            "pixel-outside",
+            broken(|v| v["pixel"] = json!({"x": 640, "y": 0})),
+            "pixel: 640,0 is outside the 640×480 image",
+        ),
+        (
+            "bad-settings",
+            broken(|v| v["settings"]["max_depth"] = json!(0)),
+            "settings.max_depth: must be 1 to 1000",
+        ),
+        (
+            "null-number",
+            broken(|v| v["color"][0] = Value::Null),
+            "not a raytree trace: invalid type: null, expected f64",
+        ),
+        ("array", b"[]".to_vec(), "not a raytree trace"),
+        (
+            "old-version",
+            broken(|v| v["version"] = json!(1)),
+            "a raytree-trace version 1 document; this raytree reads raytree-trace version",
+        ),
+    ];
+    let scene = whitted_text();
+    for (name, text, expected) in &cases {
+        let files: [(&str, &[u8]); 2] = [("t.json", text), ("s.json", scene.as_bytes())];
+        let e = refused(name, &files, &["inspect", "--trace", "t.json"]);
+        assert!(
+            e.starts_with("error: t.json") && e.contains(expected),
+            "{name}: {e}"
+        );
+    }
+}
+
+#[test]
+fn unreadable_trace_files_are_refused_at_once() {
+    let e = refused("trace-dev-zero", &[], &["inspect", "--trace", "/dev/zero"]);
+    assert!(e.contains("/dev/zero: not a regular file"), "{e}");
+    let e = refused("trace-missing", &[], &["inspect", "--trace", "none.json"]);
+    assert_eq!(e, "error: cannot read none.json: no such file");
+}
+
+#[test]
+fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let text = good_trace().to_json();
+    std::fs::create_dir(dir.path().join("saved")).unwrap();
+    let trace = dir.path().join("saved/t.json");
+    std::fs::write(&trace, &text).unwrap();
+    // Not found anywhere: the trace alone, saying so.
+    let opened = document::open(&trace, None).unwrap();
+    assert!(opened.scene.is_none());
+    assert_eq!(
+        opened.note.as_deref(),
+        Some("scene s.json not found: showing the saved trace only")
+    );
+    // Beside the trace.
+    std::fs::write(dir.path().join("saved/s.json"), whitted_text()).unwrap();
+    let opened = document::open(&trace, None).unwrap();
+    assert!(
+        opened.scene.is_some() && opened.note.is_none(),
+        "{:?}",
+        opened.note
+    );
+    // Changed since (objects deleted): the trace alone, never indexing past the end.
+    let edited = whitted_text().replacen("\"name\": \"cavity\"", "\"name\": \"hole\"", 1);
+    std::fs::write(dir.path().join("saved/s.json"), &edited).unwrap();
+    let opened = document::open(&trace, None).unwrap();
+    assert!(opened.scene.is_none());
+    assert!(
+        opened
+            .note
+            .unwrap()
+            .contains("changed since the trace was saved")
+    );
+    // Given explicitly: used when its objects and lights fit, refused when not.
+    let fits = dir.path().join("fits.json");
+    std::fs::write(&fits, whitted_text().replace("\"fov\"", " \"fov\"")).unwrap();
+    let opened = document::open(&trace, Some(&fits)).unwrap();
+    assert!(opened.scene.is_some());
+    assert!(
+        opened
+            .note
+            .unwrap()
+            .contains("is not the scene the trace was made from")
+    );
+    let e = document::open(&trace, Some(&dir.path().join("saved/s.json"))).unwrap_err();
+    assert!(
+        e.to_string()
+            .contains("object 3 is 'cavity' (sphere of 'air') in the trace, 'hole'"),
+        "{e}"
+    );
+    // Given on the command line: one line when it does not fit.
+    let files: [(&str, &[u8]); 2] = [("t.json", text.as_bytes()), ("s.json", b"{}")];
+    let e = refused(
+        "explicit-misfit",
+        &files,
+        &["inspect", "--trace", "t.json", "s.json"],
+    );
+    assert!(
+        e.starts_with("error: t.json does not fit the scene s.json: the trace names 4 objects and 2 lights, the scene has 0 and 0"),
+        "{e}"
+    );
+}
