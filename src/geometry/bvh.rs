@@ -19,6 +19,7 @@
 
 use std::ops::ControlFlow;
 
+use glam::DVec3;
 use wide::f32x4;
 
 use crate::geometry::bvh_build;
@@ -79,6 +80,21 @@ pub(crate) struct Node {
 }
 
 impl Node {
+    /// The box of lane `lane`, as stored (rounded outward).
+    fn lane(&self, lane: usize) -> Bounds {
+        let corner = |c: usize| {
+            DVec3::new(
+                f64::from(self.bounds[c][0].to_array()[lane]),
+                f64::from(self.bounds[c][1].to_array()[lane]),
+                f64::from(self.bounds[c][2].to_array()[lane]),
+            )
+        };
+        Bounds {
+            min: corner(0),
+            max: corner(1),
+        }
+    }
+
     /// A node with no children yet: every lane an empty box.
     pub(crate) fn empty() -> Node {
         Node {
@@ -155,6 +171,23 @@ impl Bvh {
         t_min: f64,
         t_max: &mut f64,
         tested: &mut TestCounts,
+        visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    }
+
+    /// [`Bvh::traverse`], also calling `seen(bounds, met)` for every box tested
+    /// (as stored, rounded outward) and whether the ray met it: what a recorded
+    /// ray keeps so a diagram can draw the boxes it visited. With a `seen` that
+    /// does nothing, this is `traverse` exactly.
+    #[inline]
+    pub fn traverse_seeing(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        mut seen: impl FnMut(Bounds, bool),
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         if self.nodes.is_empty() {
@@ -177,6 +210,9 @@ impl Bvh {
                 let node = &self.nodes[at.0 as usize];
                 tested.boxes += u32::from(node.len);
                 let (mask, enter) = ray.hits(node, t_min, reach);
+                for lane in 0..usize::from(node.len) {
+                    seen(node.lane(lane), mask & (1 << lane) != 0);
+                }
                 let mut near = [(0.0f32, Child(0)); WIDTH];
                 let mut n = 0;
                 for (lane, entry) in enter.iter().enumerate() {

@@ -71,6 +71,21 @@ impl Accelerator {
         t_min: f64,
         t_max: &mut f64,
         tested: &mut TestCounts,
+        visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.visit_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    }
+
+    /// [`Accelerator::visit`], also calling `seen(bounds, met)` for every box
+    /// of the hierarchy tested (see [`Bvh::traverse_seeing`]).
+    #[inline]
+    pub fn visit_seeing(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        seen: impl FnMut(Bounds, bool),
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         for &i in &self.always {
@@ -78,7 +93,7 @@ impl Accelerator {
         }
         match &self.bvh {
             None => ControlFlow::Continue(()),
-            Some(bvh) => bvh.traverse(&RayBox::new(ray), t_min, t_max, tested, visit),
+            Some(bvh) => bvh.traverse_seeing(&RayBox::new(ray), t_min, t_max, tested, seen, visit),
         }
     }
 }

@@ -194,6 +194,15 @@ pub struct SumEvent {
     pub color: DVec3,
 }
 
+/// A box of the scene's hierarchy that a ray was tested against.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct BoxVisit {
+    /// The box, as the hierarchy stores it (rounded outward).
+    pub bounds: crate::math::bounds::Bounds,
+    /// The ray met it within its interval, so its children were visited.
+    pub met: bool,
+}
+
 /// Receives the tracer's events. Every method defaults to doing nothing.
 pub trait Recorder {
     /// Whether this recorder wants the events that cost work to prepare
@@ -207,6 +216,9 @@ pub trait Recorder {
     /// The search for the closest hit is over; it tested this many boxes and
     /// primitives (every object without a hierarchy).
     fn tested(&mut self, _tested: &TestCounts) {}
+    /// The boxes of the scene's hierarchy the search tested, in order, and
+    /// whether the ray met each (none without a hierarchy).
+    fn boxes_visited(&mut self, _boxes: &[BoxVisit]) {}
     /// The closest hit was found.
     fn hit(&mut self, _hit: &HitEvent) {}
     /// Nothing was hit: the ray returns the background.

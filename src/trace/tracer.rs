@@ -37,7 +37,7 @@ use crate::shading::phong;
 use crate::trace::accelerator::Accelerator;
 use crate::trace::recent::RecentBlockers;
 use crate::trace::recorder::{
-    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart,
+    BoxVisit, Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart,
     RecentTry, Recorder, ShadowEvent, ShadowOutcome, SumEvent,
 };
 
@@ -188,9 +188,20 @@ impl<'s> Tracer<'s> {
         let mut t_closest = t_max;
         // The hierarchy counts its boxes, the objects their own tests (a mesh's boxes too).
         let (mut outer, mut inner) = (TestCounts::default(), TestCounts::default());
-        let _ = self
-            .accel
-            .visit(ray, t_min, &mut t_closest, &mut outer, |i, t_closest| {
+        // The hierarchy's boxes, kept only when recording (a diagram draws them).
+        let mut boxes = Vec::new();
+        let seen = |bounds, met| {
+            if R::ENABLED {
+                boxes.push(BoxVisit { bounds, met });
+            }
+        };
+        let _ = self.accel.visit_seeing(
+            ray,
+            t_min,
+            &mut t_closest,
+            &mut outer,
+            seen,
+            |i, t_closest| {
                 let roots = self.scene.objects[i].roots_within(
                     ray,
                     methods,
@@ -206,10 +217,12 @@ impl<'s> Tracer<'s> {
                     *t_closest = t;
                 }
                 ControlFlow::Continue(())
-            });
+            },
+        );
         if R::ENABLED {
             outer.add(inner);
             crate::record!(rec.tested(&outer));
+            crate::record!(rec.boxes_visited(&boxes));
         }
         closest.map(|(i, face)| (i, t_closest, face))
     }

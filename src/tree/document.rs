@@ -21,7 +21,7 @@ use crate::tree::trace_check;
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 5;
+pub const VERSION: u32 = 6;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -52,6 +52,10 @@ pub struct RayNode {
     /// How many bounding boxes and primitives the search for the closest hit
     /// tested: what the hierarchy saved against testing every object.
     pub tested: TestCounts,
+    /// The boxes of the scene's hierarchy the search tested, in order (empty
+    /// without a hierarchy; left out of the JSON then).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub boxes: Vec<BoxRecord>,
     /// The closest hit; `None` when the ray missed everything.
     pub hit: Option<HitRecord>,
     /// One per light, in the scene's order.
@@ -64,6 +68,18 @@ pub struct RayNode {
     pub refracted: Option<BranchRecord>,
     /// `color = local + k_rfl·reflected + k_rfa·refracted` with its numbers.
     pub sum: SumRecord,
+}
+
+/// A box of the scene's hierarchy a ray was tested against.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct BoxRecord {
+    /// The smallest corner, as the hierarchy stores it (rounded outward to f32).
+    pub min: DVec3,
+    /// The largest corner.
+    pub max: DVec3,
+    /// The ray met the box within its interval, so the box's children were visited.
+    pub met: bool,
 }
 
 /// The test of one object.

@@ -12,8 +12,8 @@ use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::pixel::pixel_color_at;
 use crate::trace::recorder::{
-    BranchEvent, HitEvent, LightEvent, LocalEvent, RayKind, RayStart, Recorder, ShadowEvent,
-    ShadowOutcome, SumEvent,
+    BoxVisit, BranchEvent, HitEvent, LightEvent, LocalEvent, RayKind, RayStart, Recorder,
+    ShadowEvent, ShadowOutcome, SumEvent,
 };
 use crate::trace::tracer::Tracer;
 use crate::tree::arithmetic::{
@@ -21,8 +21,8 @@ use crate::tree::arithmetic::{
 };
 use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree, RecentRecord,
-    ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
+    BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
+    RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
 
 /// Why a trace could not be made.
@@ -237,6 +237,7 @@ impl Recorder for TreeRecorder<'_> {
             t_max: start.t_max.is_finite().then_some(start.t_max),
             tests: Vec::new(),
             tested: TestCounts::default(),
+            boxes: Vec::new(),
             hit: None,
             shadow_rays: Vec::new(),
             local: None,
@@ -275,6 +276,17 @@ impl Recorder for TreeRecorder<'_> {
 
     fn tested(&mut self, tested: &TestCounts) {
         self.top().tested = *tested;
+    }
+
+    fn boxes_visited(&mut self, boxes: &[BoxVisit]) {
+        self.top().boxes = boxes
+            .iter()
+            .map(|b| BoxRecord {
+                min: b.bounds.min,
+                max: b.bounds.max,
+                met: b.met,
+            })
+            .collect();
     }
 
     fn hit(&mut self, hit: &HitEvent) {

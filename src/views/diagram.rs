@@ -12,6 +12,7 @@ use crate::scene::Scene;
 use crate::shading::material::Pattern;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::RayKind;
+use crate::views::boxes;
 use crate::views::clip::{clip_line, clip_segment};
 use crate::views::diagram_labels::{blocked, draw_label, label_requests, lines_px};
 use crate::views::diagram_layout::{Layout, NORMAL, Options, Stroke, layout, ray_pen};
@@ -105,6 +106,7 @@ pub fn draw_with_labels(
         .ok_or("the figure cannot be allocated")?;
     fig.fit(lay.window.0, lay.window.1, 0.0);
     draw_objects(&mut fig, scene, &lay, &scale);
+    draw_boxes(&mut fig, &lay, &scale);
     draw_eye_and_image_plane(&mut fig, &lay, &scale);
     for &p in &lay.lights {
         if in_frame(&fig, p) {
@@ -174,6 +176,27 @@ fn caption(trace: &TraceDocument, lay: &Layout, options: &Options) -> String {
         trace.scene.file
     )
 }
+
+/// The hierarchy's boxes the rays were tested against, under the rays: the
+/// ones a ray entered solid, the ones it missed (whole subtrees never opened)
+/// dotted and fainter.
+fn draw_boxes(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+    for b in lay.boxes.iter().filter(|b| !b.met) {
+        fig.polygon(&b.outline, None, Some(scale.pen(MISSED_BOX)));
+    }
+    for b in lay.boxes.iter().filter(|b| b.met) {
+        fig.polygon(
+            &b.outline,
+            Some((palette::BOX, 18)),
+            Some(scale.pen(MET_BOX)),
+        );
+    }
+}
+
+/// A box a ray entered.
+const MET_BOX: Pen = Pen::solid(palette::BOX, 1.2);
+/// A box tested and missed.
+const MISSED_BOX: Pen = Pen::pattern(palette::BOX, 0.9, &[2.0, 3.0]);
 
 pub(super) fn in_frame(fig: &Figure, p: DVec2) -> bool {
     let (lo, hi) = fig.visible();
@@ -449,6 +472,17 @@ fn draw_legend(fig: &mut Figure, lay: &Layout, scale: &Scale) -> (PxRect, Vec<St
     }
     if !lay.hits.is_empty() {
         legend.push((scale.pen(NORMAL), "surface normal n"));
+    }
+    let (tested, met) = boxes::counts(&lay.boxes);
+    let (met_text, missed_text) = (
+        format!("box the ray entered ({met})"),
+        format!("box tested, missed ({})", tested - met),
+    );
+    if met > 0 {
+        legend.push((scale.pen(MET_BOX), &met_text));
+    }
+    if tested > met {
+        legend.push((scale.pen(MISSED_BOX), &missed_text));
     }
     let size = scale.text - 2.0;
     let boxes = fig.legend_boxes(&legend, size);

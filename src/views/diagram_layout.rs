@@ -10,6 +10,8 @@ use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{RayKind, RayNode, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
+use crate::views::boxes::{self, BoxMark};
+use crate::views::diagram_frame;
 use crate::views::marks::{self, Marks};
 use crate::views::pen::{Pen, palette};
 use crate::views::projection::{Outline, Projection, View};
@@ -65,6 +67,8 @@ pub struct Options {
     pub steps: bool,
     /// Show the algorithm only up to this step (0-based), as a step-through does.
     pub until_step: Option<usize>,
+    /// Draw the hierarchy's boxes the drawn rays were tested against.
+    pub boxes: bool,
 }
 
 impl Default for Options {
@@ -82,6 +86,7 @@ impl Default for Options {
             ticks: false,
             steps: false,
             until_step: None,
+            boxes: false,
         }
     }
 }
@@ -202,6 +207,8 @@ pub struct Layout {
     /// For a ray that hit nothing: the objects it passed nearest, each with its
     /// gap and the closest approach drawn (from the ray, to the object).
     pub near_misses: Vec<(usize, f64, DVec2, DVec2)>,
+    /// With `boxes`: the hierarchy's boxes the drawn rays were tested against.
+    pub boxes: Vec<BoxMark>,
 }
 
 /// Projects sample `options.sample` of `trace` (and `scene`) for drawing.
@@ -217,11 +224,15 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
     let far = reach(scene, &proj);
     let mut segments = Vec::new();
     let mut hits = Vec::new();
+    let mut boxes = Vec::new();
     for (i, node) in sample.tree.nodes.iter().enumerate() {
         if !shown.ray(i, node) {
             continue;
         }
         segments.push(ray_segment(scene, &proj, i, node, far));
+        if options.boxes {
+            boxes.extend(boxes::project(i, &node.boxes, &proj));
+        }
         if let Some(h) = node.hit.as_ref().filter(|_| shown.hit(i)) {
             hits.push(HitMark {
                 node: i,
@@ -288,8 +299,11 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
         marks,
         window: (DVec2::ZERO, DVec2::ZERO),
         near_misses,
+        boxes,
     };
-    lay.window = options.window.unwrap_or_else(|| frame(&lay, options.fit));
+    lay.window = options
+        .window
+        .unwrap_or_else(|| diagram_frame::frame(&lay, options.fit));
     Ok(lay)
 }
 
@@ -468,81 +482,6 @@ fn merge(sorted: Vec<[f64; 2]>) -> Vec<[f64; 2]> {
         }
     }
     out
-}
-
-/// The window to frame, per `fit`, with a margin; never degenerate.
-fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {
-    let bounded = |i: usize| lay.objects[i].silhouette.bounds();
-    let corners = |b: Option<(DVec2, DVec2)>| b.into_iter().flat_map(|(a, c)| [a, c]);
-    let mut core: Vec<DVec2> = Vec::new();
-    let mut near: Vec<DVec2> = Vec::new();
-    match fit {
-        Fit::Scene => {
-            core.extend((0..lay.objects.len()).flat_map(|i| corners(bounded(i))));
-            core.extend(lay.lights.iter().copied());
-            core.push(lay.eye);
-        }
-        Fit::Tree => {
-            core.push(lay.eye);
-            core.extend(lay.image_plane.iter().flat_map(|&(a, b, _)| [a, b]));
-            for s in lay.segments.iter().filter(|s| !s.leaves) {
-                core.extend([s.from, s.to]);
-            }
-        }
-        Fit::Hits => {
-            // The first two levels of hits and the objects they are on make the
-            // core; deeper hits and blockers join when near it.
-            for h in &lay.hits {
-                if h.depth <= 2 {
-                    core.push(h.at);
-                    core.extend(corners(bounded(h.object)));
-                } else {
-                    near.push(h.at);
-                }
-            }
-            // A shadow's blocker at the first hits belongs to the story too.
-            for b in &lay.marks.blocked {
-                if b.depth <= 2 {
-                    core.push(b.at);
-                } else {
-                    near.push(b.at);
-                }
-            }
-        }
-    }
-    for &(i, _, on_ray, _) in &lay.near_misses {
-        core.extend(corners(bounded(i)));
-        core.push(on_ray);
-    }
-    if core.is_empty() {
-        core.push(lay.eye);
-        for s in lay.segments.iter().filter(|s| !s.leaves) {
-            core.extend([s.from, s.to]);
-        }
-    }
-    let bounds = |ps: &[DVec2]| {
-        (
-            ps.iter()
-                .fold(DVec2::splat(f64::INFINITY), |a, &p| a.min(p)),
-            ps.iter()
-                .fold(DVec2::splat(f64::NEG_INFINITY), |a, &p| a.max(p)),
-        )
-    };
-    let (core_lo, core_hi) = bounds(&core);
-    let reach = (core_hi - core_lo).max_element() * 0.5;
-    core.extend(
-        near.into_iter()
-            .filter(|p| p.cmpge(core_lo - reach).all() && p.cmple(core_hi + reach).all()),
-    );
-    let (lo, hi) = bounds(&core);
-    // A lone hit (a floor point in the open) still gets room: a tenth of the eye's distance.
-    let center = (lo + hi) / 2.0;
-    let room = (hi - lo)
-        .max_element()
-        .max(0.1 * (lay.eye - center).length())
-        .max(1e-6);
-    let half = ((hi - lo) / 2.0).max(DVec2::splat(room / 2.0)) * 1.12;
-    (center - half, center + half)
 }
 
 /// The image plane where the diagram plane through the pixel cuts it, clipped to

@@ -147,7 +147,9 @@ pub fn marks(
             continue;
         }
         let at = proj.point(h.point);
-        shadow_marks(node, i, proj, &mut m);
+        if options.shadows {
+            shadow_marks(node, i, proj, &mut m);
+        }
         let flat = in_plane(h.incoming) && in_plane(h.shading_normal);
         let child_dir = |branch: &Option<crate::tree::ray_tree::BranchRecord>| {
             branch

@@ -11,7 +11,9 @@ pub mod legend; // a figure's legend box
 pub mod clip; // 2D clipping to a frame
 pub mod projection; // the scene projected onto a drawing plane
 pub mod section; // what the drawing plane cuts, and what a ray only passes
+pub mod boxes; // the hierarchy's boxes a ray was tested against, projected
 pub mod diagram_layout; // a ray diagram's rays, hits and objects, projected
+pub mod diagram_frame; // what a ray diagram frames
 pub mod marks; // the angles, indices and badges a slide puts on a diagram
 pub mod labels; // labels placed so that none collides
 pub mod diagram_labels; // what a ray diagram labels, and drawing the labels

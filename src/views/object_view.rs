@@ -37,7 +37,7 @@ pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<F
     let scale = Scale::of(options.width, options.height);
     let size = scale.text + 1.0;
     let caption = format!(
-        "left: the world, where the ray S + t·c meets '{}' at t_h = {}; right: its own space, where it is a sphere of radius {} and the inverse-transformed ray S' + t·c' = M⁻¹S + t·M⁻¹c meets it at the same t_h",
+        "left: the world, where the ray S + t·c meets '{}' at tₕ = {}; right: its own space, where it is a sphere of radius {} and the inverse-transformed ray S' + t·c' = M⁻¹S + t·M⁻¹c meets it at the same tₕ",
         hit.name,
         num(hit.t),
         num(sphere.radius)
@@ -139,32 +139,30 @@ fn own_space(
         at: fig.to_px(p),
         clearance: r * k,
     };
+    let label = |text: String, target: Target, optional: bool| Label {
+        text,
+        size: sz,
+        color: palette::INK,
+        target,
+        boxed: false,
+        optional,
+    };
     let mut labels = vec![
-        Label {
-            text: if near_s {
-                format!("S' = M⁻¹S = {}", vec3(s))
-            } else {
-                format!("from S' = M⁻¹S = {}, along c' = M⁻¹c", vec3(s))
-            },
-            size: sz,
-            color: palette::INK,
-            target: point(&fig, start, 6.0),
-            boxed: false,
-            optional: false,
-        },
-        Label {
-            text: format!(
-                "t_h = {}: P' = S' + t_h·c' = {}",
-                num(t_h),
-                vec3(s + t_h * c)
-            ),
-            size: sz,
-            color: palette::INK,
-            target: point(&fig, hit, 6.0),
-            boxed: false,
-            optional: false,
-        },
+        label(
+            format!("S' = M⁻¹S = {}", vec3(s)) + if near_s { "" } else { " (off the frame)" },
+            point(&fig, start, 6.0),
+            false,
+        ),
+        label(
+            format!("tₕ = {}: P' = S' + tₕ·c' = {}", num(t_h), vec3(s + t_h * c)),
+            point(&fig, hit, 6.0),
+            false,
+        ),
     ];
+    let mut dots = vec![PxRect::around(fig.to_px(hit), 6.0 * k)];
+    if near_s {
+        dots.push(PxRect::around(fig.to_px(start), 6.0 * k));
+    }
     for r in test.roots.iter().filter(|r| r.fate != Fate::Chosen) {
         let p = at(s + r.t * c);
         fig.dot(
@@ -174,21 +172,24 @@ fn own_space(
             Some(palette::INK),
         );
         labels.push(Label {
-            text: format!("t = {}", num(r.t)),
             size: sz - 1.0,
-            color: palette::INK,
-            target: point(&fig, p, 5.0),
-            boxed: false,
-            optional: true,
+            ..label(format!("t = {}", num(r.t)), point(&fig, p, 5.0), true)
         });
+        dots.push(PxRect::around(fig.to_px(p), 5.0 * k));
     }
     let f = fig.frame();
     let frame = PxRect {
         min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
         max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
     };
-    let line = [fig.to_px(start), fig.to_px(at(s + far_root * c))];
-    for p in labels::place(labels, &[], &[line, line], frame) {
+    // Labels keep off the ray (most) and the sphere's outline, and off the dots.
+    let mut lines = vec![([fig.to_px(start), fig.to_px(at(s + far_root * c))], 4)];
+    let rim = |k: u32| {
+        let a = std::f64::consts::TAU * f64::from(k) / 48.0;
+        fig.to_px(DVec2::new(a.cos(), a.sin()) * radius)
+    };
+    lines.extend((0..48).map(|k| ([rim(k), rim(k + 1)], 2)));
+    for p in labels::place_weighted(labels, &dots, &lines, frame) {
         if let Some([a, b]) = p.leader {
             fig.line_px(a, b, Pen::solid([120, 120, 120], 0.9));
         }
@@ -204,7 +205,10 @@ fn own_space(
     let title = fig.to_px(DVec2::new(vlo.x, vhi.y)) + DVec2::new(4.0, -f64::from(sz) * 0.6);
     fig.text_px(
         title,
-        "object space: the untransformed sphere",
+        &format!(
+            "object space: the untransformed sphere; c' = M⁻¹c = {}",
+            vec3(c)
+        ),
         sz,
         palette::INK,
         Anchor::Left,

@@ -21,6 +21,8 @@ pub mod palette {
     pub const SHADOW_BLOCKED: Rgb = [100, 100, 100];
     /// Surface normals.
     pub const NORMAL: Rgb = [204, 121, 167];
+    /// Bounding boxes of the hierarchy (Okabe–Ito sky blue).
+    pub const BOX: Rgb = [86, 180, 233];
     /// Object outlines.
     pub const OBJECT: Rgb = [60, 60, 60];
     /// Object fill.
@@ -155,6 +157,7 @@ mod tests {
             ("shadow", SHADOW_REACHES),
             ("blocked shadow", SHADOW_BLOCKED),
             ("normal", NORMAL),
+            ("box", BOX),
         ];
         let identity = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
         for (vision, m) in [

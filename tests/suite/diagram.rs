@@ -183,7 +183,18 @@ fn golden_figures() {
         let (_, trace) = traced("whitted.json", 416, 209);
         raytree::views::camera_view::draw(&trace, 1200, 800).unwrap()
     };
-    let cases: [(&str, Drawer); 4] = [
+    let boxes = || {
+        let (scene, trace) = traced("spheres.json", 300, 200);
+        let options = Options {
+            view: View::Top,
+            depth: Some(1),
+            shadows: false,
+            boxes: true,
+            ..Options::default()
+        };
+        raytree::views::diagram::draw(&trace, &scene, &options).unwrap()
+    };
+    let cases: [(&str, Drawer); 5] = [
         ("whitted-mirror", Box::new(plain(264, 200, small))),
         ("whitted-glass", Box::new(plain(416, 209, three_levels))),
         (
@@ -191,6 +202,7 @@ fn golden_figures() {
             Box::new(plain(168, 296, Options::default())),
         ),
         ("whitted-camera", Box::new(camera)),
+        ("spheres-boxes", Box::new(boxes)),
     ];
     for (name, figure) in cases {
         let path = format!("{}/tests/diagrams/{name}.png", env!("CARGO_MANIFEST_DIR"));

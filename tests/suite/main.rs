@@ -8,6 +8,7 @@ mod arithmetic;
 mod book;
 mod architecture;
 mod chart;
+mod boxes;
 mod cli;
 mod common;
 mod diagram;

@@ -50,6 +50,9 @@ pub struct Args {
     /// Number the rays and hits as `raytree trace --steps` numbers their steps.
     #[arg(long)]
     steps: bool,
+    /// Also draw the bounding boxes of the scene's hierarchy that the drawn rays were tested against (those entered solid, those missed dotted), with counts; scenes without a hierarchy have none.
+    #[arg(long)]
+    boxes: bool,
 }
 
 /// The views the command line offers: the scene's projections, and the camera's.
@@ -119,6 +122,7 @@ pub fn run(args: &Args) -> Result<()> {
         ticks: args.ticks,
         steps: args.steps,
         until_step: None,
+        boxes: args.boxes,
     };
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),

@@ -1,0 +1,171 @@
+//! The hierarchy's boxes a ray was tested against, as the ray tree records
+//! them and `raytree diagram --boxes` draws them: every box counted is
+//! recorded, a box marked met is one the ray meets, a box marked missed is one
+//! it meets nowhere before its hit, and the boxes entered lead down to the
+//! object hit.
+
+use glam::DVec3;
+use raytree::scene::source::SceneSource;
+use raytree::tree::document::TraceDocument;
+use raytree::tree::ray_tree::BoxRecord;
+use raytree::views::diagram::draw_with_labels;
+use raytree::views::diagram_layout::Options;
+use raytree::views::projection::View;
+
+fn spheres() -> raytree::scene::Scene {
+    raytree::scene::loader::load(std::path::Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenes/spheres.json"
+    )))
+    .unwrap()
+}
+
+fn traced(scene: &raytree::scene::Scene, x: u32, y: u32) -> TraceDocument {
+    raytree::tree::record::pixel(
+        scene,
+        SceneSource::new("scenes/spheres.json", ""),
+        x,
+        y,
+        None,
+    )
+    .unwrap()
+}
+
+/// Where the ray `o + t·d` enters and leaves the box, exactly as the slab
+/// method says (f64, no widening), or `None` when it misses it for t > 0.
+fn slabs(o: DVec3, d: DVec3, b: &BoxRecord) -> Option<(f64, f64)> {
+    let (mut enter, mut leave) = (0.0f64, f64::INFINITY);
+    for a in 0..3 {
+        let (t0, t1) = ((b.min[a] - o[a]) / d[a], (b.max[a] - o[a]) / d[a]);
+        enter = enter.max(t0.min(t1));
+        leave = leave.min(t0.max(t1));
+    }
+    (enter <= leave).then_some((enter, leave))
+}
+
+#[test]
+fn every_box_counted_is_recorded_and_its_fate_is_what_the_slabs_say() {
+    let scene = spheres();
+    let mut checked = 0;
+    for (x, y) in [(300, 200), (330, 210), (250, 300), (400, 260), (120, 380)] {
+        let trace = traced(&scene, x, y);
+        for node in &trace.samples[0].tree.nodes {
+            // spheres.json has no meshes: every box tested is the scene's.
+            assert_eq!(node.boxes.len(), node.tested.boxes as usize, "({x}, {y})");
+            let t_hit = node.hit.as_ref().map_or(f64::INFINITY, |h| h.t);
+            for b in &node.boxes {
+                let met = slabs(node.origin, node.direction, b);
+                if b.met {
+                    // The stored box is rounded outward and the test widened by
+                    // its rounding, so a met box may be missed by the exact ray
+                    // only by a hair: grow it by 1e-5 of its size to check.
+                    let grow = (b.max - b.min).max_element() * 1e-5;
+                    let wider = BoxRecord {
+                        min: b.min - grow,
+                        max: b.max + grow,
+                        met: true,
+                    };
+                    assert!(
+                        slabs(node.origin, node.direction, &wider).is_some(),
+                        "({x}, {y}): a box marked met that the ray misses: {b:?}"
+                    );
+                } else if let Some((enter, _)) = met {
+                    // Missed: the ray meets it only beyond its hit (the search's
+                    // interval had shrunk past it) or not within (t_min, ∞).
+                    assert!(
+                        enter >= t_hit * (1.0 - 1e-9) || enter < node.t_min,
+                        "({x}, {y}): a box marked missed that the ray enters at t = {enter}, before its hit at {t_hit}"
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "only {checked} boxes checked");
+}
+
+#[test]
+fn the_boxes_entered_lead_down_to_the_object_hit() {
+    let scene = spheres();
+    let trace = traced(&scene, 300, 200);
+    let node = &trace.samples[0].tree.nodes[0];
+    let hit = node.hit.as_ref().expect("pixel 300,200 hits a sphere");
+    let bounds = scene.objects[hit.object].bounds().unwrap();
+    let holding: Vec<&BoxRecord> = node
+        .boxes
+        .iter()
+        .filter(|b| b.met && b.min.cmple(bounds.min).all() && b.max.cmpge(bounds.max).all())
+        .collect();
+    // From the root's child down to the leaf: several nested boxes hold it.
+    assert!(
+        holding.len() >= 3,
+        "{} boxes hold the object hit",
+        holding.len()
+    );
+    for pair in holding.windows(2) {
+        assert!(
+            pair[0].min.cmple(pair[1].min).all() && pair[0].max.cmpge(pair[1].max).all(),
+            "each box entered holds the next one down"
+        );
+    }
+}
+
+#[test]
+fn the_diagram_counts_the_boxes_in_its_legend_and_draws_them_only_when_asked() {
+    let scene = spheres();
+    let trace = traced(&scene, 300, 200);
+    let node = &trace.samples[0].tree.nodes[0];
+    let met = node.boxes.iter().filter(|b| b.met).count();
+    let options = Options {
+        view: View::Top,
+        depth: Some(1),
+        shadows: false,
+        boxes: true,
+        ..Options::default()
+    };
+    let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
+    let entries = &drawn.legend_entries;
+    assert!(
+        entries.contains(&format!("box the ray entered ({met})")),
+        "{entries:?}"
+    );
+    assert!(
+        entries.contains(&format!("box tested, missed ({})", node.boxes.len() - met)),
+        "{entries:?}"
+    );
+    let plain = draw_with_labels(
+        &trace,
+        &scene,
+        &Options {
+            boxes: false,
+            ..options
+        },
+    )
+    .unwrap();
+    assert!(!plain.legend_entries.iter().any(|e| e.contains("box")));
+    // Without shadow rays, no mark of them either.
+    assert!(
+        !entries
+            .iter()
+            .any(|e| e.contains("shadow") || e.contains("light behind"))
+    );
+}
+
+#[test]
+fn scenes_without_a_hierarchy_record_no_boxes() {
+    let scene = raytree::scene::loader::whitted();
+    let trace =
+        raytree::tree::record::pixel(&scene, SceneSource::new("", ""), 416, 209, None).unwrap();
+    assert!(
+        trace.samples[0]
+            .tree
+            .nodes
+            .iter()
+            .all(|n| n.boxes.is_empty())
+    );
+    let json = serde_json::to_string(&trace).unwrap();
+    assert!(
+        !json.contains("\"boxes\":["),
+        "empty boxes are left out of the JSON"
+    );
+}
