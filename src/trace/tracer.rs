@@ -207,10 +207,10 @@ impl<'s> Tracer<'s> {
                 }
                 ControlFlow::Continue(())
             });
-        if R::ENABLED {
-            outer.add(inner);
-            crate::record!(rec.tested(&outer));
-        }
+        // Reported to every recorder, so the renderer's ray counter can count
+        // them too (`render --stats`); the no-op recorder drops it.
+        outer.add(inner);
+        crate::record!(rec.tested(&outer));
         closest.map(|(i, face)| (i, t_closest, face))
     }
 
