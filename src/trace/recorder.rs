@@ -243,7 +243,8 @@ impl Recorder for NoRecorder {
     const ENABLED: bool = false;
 }
 
-/// Counts rays by kind: how the benchmark and the CLI report rays per second.
+/// Counts rays by kind, and the intersection tests they made: how the
+/// benchmark and the CLI report rays per second and tests per ray.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct RayCounter {
     /// Primary rays.
@@ -254,6 +255,10 @@ pub struct RayCounter {
     pub refracted: u64,
     /// Shadow rays actually cast.
     pub shadow: u64,
+    /// Bounding boxes tested by all rays, shadow rays too.
+    pub boxes: u64,
+    /// Primitives (objects, and the triangles of meshes) tested by all rays.
+    pub primitives: u64,
 }
 
 impl RayCounter {
@@ -262,12 +267,24 @@ impl RayCounter {
         self.primary + self.reflected + self.refracted + self.shadow
     }
 
+    /// All intersection tests: boxes and primitives.
+    pub fn tests(&self) -> u64 {
+        self.boxes + self.primitives
+    }
+
     /// Adds another counter's counts.
     pub fn add(&mut self, other: &RayCounter) {
         self.primary += other.primary;
         self.reflected += other.reflected;
         self.refracted += other.refracted;
         self.shadow += other.shadow;
+        self.boxes += other.boxes;
+        self.primitives += other.primitives;
+    }
+
+    fn count_tests(&mut self, tested: &TestCounts) {
+        self.boxes += u64::from(tested.boxes);
+        self.primitives += u64::from(tested.primitives);
     }
 }
 
@@ -284,9 +301,14 @@ impl Recorder for RayCounter {
         }
     }
 
+    fn tested(&mut self, tested: &TestCounts) {
+        self.count_tests(tested);
+    }
+
     fn shadow_ray(&mut self, shadow: &ShadowEvent) {
         if shadow.outcome != ShadowOutcome::FacesAway {
             self.shadow += 1;
         }
+        self.count_tests(&shadow.tested);
     }
 }

@@ -219,9 +219,11 @@ impl<'s> Tracer<'s> {
                 ControlFlow::Continue(())
             },
         );
+        // Reported to every recorder, so the renderer's ray counter can count
+        // them too (`render --stats`); the no-op recorder drops it.
+        outer.add(inner);
+        crate::record!(rec.tested(&outer));
         if R::ENABLED {
-            outer.add(inner);
-            crate::record!(rec.tested(&outer));
             crate::record!(rec.boxes_visited(&boxes));
         }
         closest.map(|(i, face)| (i, t_closest, face))

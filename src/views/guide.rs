@@ -207,8 +207,9 @@ fn fill(say: &str, names: &BTreeMap<String, String>) -> Result<String, String> {
 }
 
 /// The numbers a stop may quote: those of the step's ray (its kind, depth, hit,
-/// angles, local color, sum), the pixel's camera stage, and the step's own
-/// (the object tested, the shadow ray's light).
+/// angles, local color, sum, the boxes and primitives its search tested), the
+/// pixel's camera stage, and the step's own (the object tested; the shadow
+/// ray's light, its tests and the recent blocker it tried first).
 pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<String, String> {
     let mut v = BTreeMap::new();
     let mut put = |k: &str, s: String| {
@@ -270,6 +271,12 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         put("ray_color", color(node.sum.color));
         put("k_rfl", num(node.sum.k_rfl));
         put("k_rfa", num(node.sum.k_rfa));
+    }
+    // The search for the closest hit is over once it is chosen (or missed):
+    // what it cost is known from then on.
+    if hit_known || s.kind == StepKind::Miss {
+        put("boxes", node.tested.boxes.to_string());
+        put("primitives", node.tested.primitives.to_string());
     }
     if let Some(h) = node.hit.as_ref().filter(|_| hit_known) {
         put("object", h.name.clone());
@@ -340,6 +347,13 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         StepKind::Shadow(k) => {
             let shadow = &node.shadow_rays[k];
             put("light", shadow.name.clone());
+            put("shadow_boxes", shadow.tested.boxes.to_string());
+            put("shadow_primitives", shadow.tested.primitives.to_string());
+            if let Some(r) = &shadow.recent {
+                put("recent", r.name.clone());
+                let blocks = if r.blocks { "blocks" } else { "does not block" };
+                put("recent_blocks", blocks.to_owned());
+            }
             let outcome = match &shadow.outcome {
                 ShadowOutcomeRecord::Reaches { .. } => "reaches the light".to_owned(),
                 ShadowOutcomeRecord::Blocked { name, t, .. } => {

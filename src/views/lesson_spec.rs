@@ -69,6 +69,15 @@ impl Command {
     pub fn is_trace(&self) -> bool {
         self.args.first().is_some_and(|a| a == "trace")
     }
+
+    /// Whether it writes an image (to a name of its own choosing unless given
+    /// `-o`): as a run, the book sends the image to a scratch folder and keeps
+    /// what it prints.
+    pub fn writes_image(&self) -> bool {
+        self.args.first().is_some_and(|a| {
+            ["render", "strip", "forward", "chart", "diagram"].contains(&a.as_str())
+        })
+    }
 }
 
 /// A command whose output the text quotes.
@@ -434,6 +443,7 @@ mod tests {
             "raytree trace scenes/w.json --pixel 1,2"
         );
         assert!(s.runs["p"].command.is_trace() && !s.runs["h"].command.is_trace());
+        assert!(s.figures["f"].command.writes_image() && !s.runs["p"].command.writes_image());
         assert_eq!(s.figures["f"].caption, "A.");
         assert_eq!(s.excerpts["x"].range, Some((1, 2)));
         assert_eq!(

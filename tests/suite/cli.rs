@@ -632,3 +632,69 @@ fn inspect_refuses_to_run_without_a_terminal_or_with_a_bad_trace() {
         "error: raytree inspect needs a terminal (standard output is not one)"
     );
 }
+
+/// `--stats` prints its counts on standard output (the rays by kind, the tests
+/// they made, tests per ray), where a script or the book can read them; the
+/// summary of what was written stays on stderr. On one thread the counts are
+/// the same on every run (each thread remembers its own recent blockers).
+#[test]
+fn stats_print_rays_and_tests_per_ray_on_stdout() {
+    let dir = workdir("stats");
+    let scene = scenes().join("spheres.json");
+    let run = || {
+        let out = raytree(
+            &[
+                "render",
+                scene.to_str().unwrap(),
+                "--width",
+                "32",
+                "--height",
+                "24",
+                "--threads",
+                "1",
+                "--stats",
+                "-o",
+                "s.png",
+            ],
+            &dir,
+        );
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(String::from_utf8_lossy(&out.stderr).contains("wrote s.png"));
+        String::from_utf8(out.stdout).unwrap()
+    };
+    let stdout = run();
+    let number = |before: &str| -> f64 {
+        let at = stdout
+            .find(before)
+            .unwrap_or_else(|| panic!("no {before:?} in {stdout}"));
+        let word: String = stdout[at + before.len()..]
+            .trim_start()
+            .chars()
+            .take_while(|c| c.is_ascii_digit() || *c == '.')
+            .collect();
+        word.parse().unwrap()
+    };
+    let rays = number("rays:");
+    assert!(rays >= 32.0 * 24.0, "{stdout}");
+    assert!(
+        stdout.contains(&format!("({} primary", 32 * 24)),
+        "{stdout}"
+    );
+    let (tests, per_ray) = (number("tests:"), number("per ray:"));
+    let boxes = number(&format!("tests: {tests} ("));
+    let primitives = number(" bounding boxes, ");
+    assert!(boxes > 0.0, "spheres.json has a hierarchy: {stdout}");
+    assert_eq!(boxes + primitives, tests, "{stdout}");
+    // per ray is written to 4 significant digits.
+    assert!((per_ray - tests / rays).abs() <= 5e-4 * per_ray, "{stdout}");
+    assert_eq!(
+        run().lines().nth(1),
+        stdout.lines().nth(1),
+        "one thread, same tests"
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
+}

@@ -80,3 +80,63 @@ fn a_stop_at_total_internal_reflection_quotes_the_angles_of_the_trace() {
         )
     );
 }
+
+/// Lesson 12 quotes what a search cost: the boxes and primitives of a ray's
+/// closest-hit search from the step that chooses the hit on, and at a shadow
+/// ray its own tests and the recent blocker it tried first. Pixel 184,280 of
+/// the 2,000 spheres has a shadow ray whose recent blocker blocks again.
+#[test]
+fn stops_quote_the_tests_a_search_made_and_the_recent_blocker() {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.json");
+    let scene = raytree::scene::loader::load(&path).unwrap();
+    let source = raytree::scene::source::SceneSource::new("scenes/spheres.json", "");
+    let trace = raytree::tree::record::pixel(&scene, source, 184, 280, None).unwrap();
+    let steps = trace.steps(0);
+    let nodes = &trace.samples[0].tree.nodes;
+    let at = |kind: &dyn Fn(StepKind) -> bool| steps.iter().position(|s| kind(s.kind)).unwrap();
+    let (test, hit) = (
+        at(&|k| matches!(k, StepKind::Test(_))),
+        at(&|k| k == StepKind::Hit),
+    );
+    let values = |step: usize| raytree::views::guide::values(&trace, 0, step);
+    // Not while the search runs: only once the hit is chosen.
+    assert!(!values(test).contains_key("boxes"));
+    let tested = nodes[steps[hit].node].tested;
+    assert_eq!(values(hit)["boxes"], tested.boxes.to_string());
+    assert_eq!(values(hit)["primitives"], tested.primitives.to_string());
+    let recent = steps
+        .iter()
+        .position(|s| match s.kind {
+            StepKind::Shadow(k) => nodes[s.node].shadow_rays[k].recent.is_some(),
+            _ => false,
+        })
+        .expect("pixel 184,280 tries a recent blocker first");
+    let StepKind::Shadow(k) = steps[recent].kind else {
+        unreachable!()
+    };
+    let shadow = &nodes[steps[recent].node].shadow_rays[k];
+    let tried = shadow.recent.as_ref().unwrap();
+    let v = values(recent);
+    assert_eq!(v["recent"], tried.name);
+    assert_eq!(
+        v["recent_blocks"],
+        if tried.blocks {
+            "blocks"
+        } else {
+            "does not block"
+        }
+    );
+    assert_eq!(v["shadow_boxes"], shadow.tested.boxes.to_string());
+    assert_eq!(v["shadow_primitives"], shadow.tested.primitives.to_string());
+    // A blocker tried first that blocks again is the only test the ray makes.
+    if tried.blocks {
+        assert_eq!(
+            (v["shadow_boxes"].as_str(), v["shadow_primitives"].as_str()),
+            ("0", "1")
+        );
+    }
+    // A shadow ray that tried nothing first has no `recent`.
+    let first = at(&|k| matches!(k, StepKind::Shadow(_)));
+    assert!(nodes[steps[first].node].shadow_rays[0].recent.is_none());
+    assert!(!values(first).contains_key("recent"));
+}

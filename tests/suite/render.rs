@@ -74,3 +74,51 @@ fn adaptive_antialiasing_splits_only_where_corners_differ() {
         split.primary
     );
 }
+
+/// `render --stats` counts the boxes and primitives every ray tested, shadow
+/// rays too: pixel by pixel, starting each with no remembered blocker, the
+/// counter's tests add up to the `tests` image's (another recorder of the same
+/// hooks), on a scene with a hierarchy and one without.
+#[test]
+fn the_ray_counter_counts_the_tests_the_tests_image_shows() {
+    use raytree::trace::aov::{Aov, Value};
+    use raytree::trace::aov_render::render_aov;
+    use raytree::trace::pixel::pixel_color;
+    use raytree::trace::recorder::RayCounter;
+    use raytree::trace::tracer::Tracer;
+    let spheres = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.json");
+    for mut scene in [
+        raytree::scene::loader::whitted(),
+        raytree::scene::loader::load(&spheres).unwrap(),
+    ] {
+        scene.settings.width = 40;
+        scene.settings.height = 30;
+        let tracer = Tracer::new(&scene);
+        let camera = scene.camera();
+        let mut counted = RayCounter::default();
+        for y in 0..30 {
+            for x in 0..40 {
+                tracer.forget_recent();
+                pixel_color(&tracer, &camera, x, y, &mut counted);
+            }
+        }
+        let image = render_aov(&scene, Aov::Tests, &ProgressBar::hidden()).unwrap();
+        let shown: f64 = image
+            .values
+            .iter()
+            .map(|v| match v {
+                Value::Number(n) => *n,
+                other => panic!("a tests pixel is a number, not {other:?}"),
+            })
+            .sum();
+        assert_eq!(counted.tests() as f64, shown);
+        assert_eq!(counted.tests(), counted.boxes + counted.primitives);
+        // Every ray tests something; a hierarchy's box tests show.
+        assert!(counted.primitives >= counted.primary);
+        assert_eq!(
+            counted.boxes > 0,
+            tracer.accelerator().bvh().is_some(),
+            "boxes are tested exactly when there is a hierarchy"
+        );
+    }
+}

@@ -5,7 +5,9 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 use raytree::io::image_file;
+use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
+use raytree::views::numbers::num;
 
 use crate::args::SceneArgs;
 use crate::output;
@@ -27,7 +29,8 @@ pub struct Args {
     /// Print nothing but errors.
     #[arg(short, long)]
     pub quiet: bool,
-    /// Also count the rays cast, by kind, and report rays per second (about 1% slower).
+    /// Also count the rays cast, by kind, and the intersection tests they made, and
+    /// print them with rays per second on standard output (about 1% slower).
     #[arg(long, conflicts_with_all = ["quiet", "aov"])]
     stats: bool,
     /// Render a per-pixel quantity instead of the color, as a PNG with its color
@@ -83,17 +86,29 @@ pub fn run(args: &Args) -> Result<()> {
         ));
     }
     if let Some(r) = rays {
-        output::note(&format!(
-            "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {:.1} M rays/s",
-            r.total(),
-            r.primary,
-            r.shadow,
-            r.reflected,
-            r.refracted,
-            r.total() as f64 / seconds / 1e6
-        ));
+        print!("{}", stats(&r, seconds));
     }
     Ok(())
+}
+
+/// What `--stats` prints on standard output: the rays by kind, the
+/// intersection tests they made (the cost a hierarchy saves), and the speed.
+fn stats(r: &RayCounter, seconds: f64) -> String {
+    let rays = r.total().max(1);
+    format!(
+        "rays: {} ({} primary, {} shadow, {} reflected, {} refracted), {} M rays/s\n\
+         tests: {} ({} bounding boxes, {} primitives), per ray: {}\n",
+        r.total(),
+        r.primary,
+        r.shadow,
+        r.reflected,
+        r.refracted,
+        num(r.total() as f64 / seconds / 1e6),
+        r.tests(),
+        r.boxes,
+        r.primitives,
+        num(r.tests() as f64 / rays as f64)
+    )
 }
 
 /// A pool of `threads` workers (one per core by default, at most

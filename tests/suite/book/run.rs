@@ -44,15 +44,17 @@ pub enum Output {
     Text(String),
 }
 
-/// Runs every run of a spec.
-pub fn runs(spec: &Spec) -> Result<BTreeMap<String, Output>, String> {
+/// Runs every run of a spec. A command that writes an image (a render whose
+/// `--stats` the text quotes, a strip's printed changes) writes it into
+/// `scratch`, never into the repository.
+pub fn runs(spec: &Spec, scratch: &Path) -> Result<BTreeMap<String, Output>, String> {
     spec.runs
         .iter()
-        .map(|(name, run)| Ok((name.clone(), output(run)?)))
+        .map(|(name, run)| Ok((name.clone(), output(run, name, scratch)?)))
         .collect()
 }
 
-fn output(run: &Run) -> Result<Output, String> {
+fn output(run: &Run, name: &str, scratch: &Path) -> Result<Output, String> {
     let Command { args, .. } = &run.command;
     if run.command.is_trace() {
         let mut with_json = args.clone();
@@ -63,7 +65,12 @@ fn output(run: &Run) -> Result<Output, String> {
         let text = text::format(&doc, true);
         Ok(Output::Trace(Box::new(doc), text))
     } else {
-        let bytes = raytree(args)?;
+        let mut args = args.clone();
+        if run.command.writes_image() {
+            let image = scratch.join(format!("run-{name}.png"));
+            args.extend(["-o".to_owned(), image.display().to_string()]);
+        }
+        let bytes = raytree(&args)?;
         Ok(Output::Text(String::from_utf8_lossy(&bytes).into_owned()))
     }
 }
