@@ -281,6 +281,17 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         put("n2", num(h.n2));
         put("n_dot_c", num(h.n_dot_c));
         put("mirror", vec3(h.mirror));
+        if let Some(p) = h.object_point {
+            put("object_point", vec3(p));
+        }
+        if let (Some(n), Some(wrong)) = (h.object_normal, h.normal_like_point) {
+            put("geometric_normal", vec3(h.normal));
+            put("object_normal", vec3(n));
+            put("normal_like_point", vec3(wrong));
+        }
+        if let Some(off) = crate::views::explain::normal_like_point_error(h) {
+            put("normal_error", degrees(off));
+        }
         if let Some(r) = h.refraction.as_ref().filter(|_| angles_known) {
             put("theta1", degrees(r.theta1));
             put("sin_theta1", num(r.sin_theta1));
@@ -314,6 +325,10 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         StepKind::Test(k) => {
             let test = &node.tests[k];
             put("tested", test.name.clone());
+            if let Some(r) = &test.object_ray {
+                put("object_origin", vec3(r.origin));
+                put("object_direction", vec3(r.direction));
+            }
             if let Some(crate::tree::arithmetic::Arithmetic::Quadratic {
                 a,
                 b,
