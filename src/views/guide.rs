@@ -356,7 +356,16 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
             let shadow = &node.shadow_rays[k];
             put("light", shadow.name.clone());
             let outcome = match &shadow.outcome {
-                ShadowOutcomeRecord::Reaches { .. } => "reaches the light".to_owned(),
+                ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
+                    "reaches the light".to_owned()
+                }
+                ShadowOutcomeRecord::Reaches { transmitted } => {
+                    put("transmitted", num(*transmitted));
+                    format!(
+                        "reaches the light through transparent objects, keeping {}",
+                        num(*transmitted)
+                    )
+                }
                 ShadowOutcomeRecord::Blocked { name, t, .. } => {
                     put("blocker_t", num(*t));
                     format!("blocked by {name}")
