@@ -120,6 +120,15 @@ pub struct HitRecord {
     pub point: DVec3,
     /// For a transformed object, the point on the untransformed primitive, `M⁻¹P`.
     pub object_point: Option<DVec3>,
+    /// For a transformed object, the outward unit normal `n'` of the untransformed
+    /// primitive at `object_point`; `normal` is `(M⁻¹)ᵀn'`, normalized.
+    #[serde(default)]
+    pub object_normal: Option<DVec3>,
+    /// For a transformed object, `M·n'` normalized: the normal transformed like a
+    /// point (a direction), the classic mistake. Recorded so a lesson can show how
+    /// far it is from `normal` once `M` scales unevenly; never used for shading.
+    #[serde(default)]
+    pub normal_like_point: Option<DVec3>,
     /// Outward unit geometric normal.
     pub normal: DVec3,
     /// The unit normal the formulas use: the shading normal turned to face the

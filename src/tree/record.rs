@@ -300,6 +300,13 @@ impl Recorder for TreeRecorder<'_> {
             (hit.n1, hit.n2),
             material.transparent > 0.0,
         );
+        let transform = object.transform.as_deref();
+        // N ∝ (M⁻¹)ᵀn', so n' ∝ MᵀN: the object normal back from the world one.
+        let object_normal =
+            transform.map(|tf| (tf.to_world.matrix3.transpose() * hit.normal).normalize());
+        let normal_like_point = transform
+            .zip(object_normal)
+            .map(|(tf, n)| (tf.to_world.matrix3 * n).normalize());
         node.hit = Some(HitRecord {
             object: hit.object,
             name: object.name.clone(),
@@ -307,10 +314,9 @@ impl Recorder for TreeRecorder<'_> {
             t: hit.t,
             face: matches!(object.shape, Shape::Mesh(_)).then_some(hit.face),
             point: hit.point,
-            object_point: object
-                .transform
-                .as_ref()
-                .map(|tf| tf.to_object.transform_point3(hit.point)),
+            object_point: transform.map(|tf| tf.to_object.transform_point3(hit.point)),
+            object_normal,
+            normal_like_point,
             normal: hit.normal,
             shading_normal: hit.shading_normal,
             entering: hit.entering,

@@ -258,7 +258,36 @@ pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
             vec3(p)
         ));
     }
+    if let (Some(n), Some(wrong), Some(off)) = (
+        hit.object_normal,
+        hit.normal_like_point,
+        normal_like_point_error(hit),
+    ) {
+        let verdict = if off < 1e-9 {
+            "the same direction: M keeps angles".to_owned()
+        } else {
+            format!(
+                "{} away from N, the normal at right angles to the surface",
+                degrees(off)
+            )
+        };
+        details.push(format!(
+            "its normal there, n' = {}, comes back through the inverse transpose: N = (M⁻¹)ᵀn' normalized = {}; transformed like a point instead, M·n' normalized = {}: {verdict}",
+            vec3(n),
+            vec3(hit.normal),
+            vec3(wrong),
+        ));
+    }
     (headline, details)
+}
+
+/// For a transformed object, the angle in degrees between the normal
+/// transformed like a point, `M·n'`, and the right one, `(M⁻¹)ᵀn'`: zero when `M`
+/// keeps angles (rotations, even scales), up to 90° for a very flat object.
+pub fn normal_like_point_error(hit: &HitRecord) -> Option<f64> {
+    let wrong = hit.normal_like_point?;
+    let n = hit.normal;
+    Some(n.cross(wrong).length().atan2(n.dot(wrong)).to_degrees())
 }
 
 /// A shadow ray's outcome; `t = 1` is the light.

@@ -288,6 +288,17 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         put("n2", num(h.n2));
         put("n_dot_c", num(h.n_dot_c));
         put("mirror", vec3(h.mirror));
+        if let Some(p) = h.object_point {
+            put("object_point", vec3(p));
+        }
+        if let (Some(n), Some(wrong)) = (h.object_normal, h.normal_like_point) {
+            put("geometric_normal", vec3(h.normal));
+            put("object_normal", vec3(n));
+            put("normal_like_point", vec3(wrong));
+        }
+        if let Some(off) = crate::views::explain::normal_like_point_error(h) {
+            put("normal_error", degrees(off));
+        }
         if let Some(r) = h.refraction.as_ref().filter(|_| angles_known) {
             put("theta1", degrees(r.theta1));
             put("sin_theta1", num(r.sin_theta1));
@@ -321,6 +332,10 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         StepKind::Test(k) => {
             let test = &node.tests[k];
             put("tested", test.name.clone());
+            if let Some(r) = &test.object_ray {
+                put("object_origin", vec3(r.origin));
+                put("object_direction", vec3(r.direction));
+            }
             if let Some(crate::tree::arithmetic::Arithmetic::Quadratic {
                 a,
                 b,
@@ -355,7 +370,16 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
                 put("recent_blocks", blocks.to_owned());
             }
             let outcome = match &shadow.outcome {
-                ShadowOutcomeRecord::Reaches { .. } => "reaches the light".to_owned(),
+                ShadowOutcomeRecord::Reaches { transmitted } if *transmitted == 1.0 => {
+                    "reaches the light".to_owned()
+                }
+                ShadowOutcomeRecord::Reaches { transmitted } => {
+                    put("transmitted", num(*transmitted));
+                    format!(
+                        "reaches the light through transparent objects, keeping {}",
+                        num(*transmitted)
+                    )
+                }
                 ShadowOutcomeRecord::Blocked { name, t, .. } => {
                     put("blocker_t", num(*t));
                     format!("blocked by {name}")

@@ -197,6 +197,62 @@ fn the_quadratic_and_the_inverse_transformed_ray_agree_with_the_scene() {
 }
 
 #[test]
+fn normals_come_back_through_the_inverse_transpose() {
+    each_node(|at, scene, _, _, node| {
+        let Some(hit) = &node.hit else { return };
+        let object = &scene.objects[hit.object];
+        let (Some(tf), Shape::Sphere(sphere)) = (&object.transform, &object.shape) else {
+            assert!(
+                hit.object_normal.is_none() && hit.normal_like_point.is_none(),
+                "{at}"
+            );
+            return;
+        };
+        // On the untransformed sphere the outward normal points from its center to P'.
+        let p = hit.object_point.expect("a transformed hit records P'");
+        let n = hit.object_normal.expect("a transformed hit records n'");
+        let like_point = hit.normal_like_point.expect("and M·n'");
+        // Tolerance: P' is M⁻¹ of a rounded point; a few ULPs of 1 after normalizing.
+        assert!(
+            (n - ((p - sphere.center) / sphere.radius).normalize()).length() < 1e-12,
+            "{at}: n'"
+        );
+        let m = tf.to_world.matrix3;
+        let right = (m.inverse().transpose() * n).normalize();
+        assert!((hit.normal - right).length() < 1e-12, "{at}: N = (M⁻¹)ᵀn'");
+        assert!(
+            (like_point - (m * n).normalize()).length() < 1e-12,
+            "{at}: M·n'"
+        );
+    });
+    // Worked by hand: the ellipsoid x²/4 + y² = 1 (a unit sphere scaled by 2 along
+    // x), hit from above at (√2, √2/2, 0). Its gradient (x/2, 2y, 0) is along
+    // (1, 2, 0); n' = (√2/2, √2/2, 0) transformed like a point gives (2, 1, 0)
+    // instead, atan(3/4) = 36.87° away.
+    let s = crate::common::scene(
+        r#"{ "objects": [{ "sphere": {}, "transform": [{ "scale": [2, 1, 1] }] }] }"#,
+    );
+    let x = 2f64.sqrt();
+    let ray = Ray::new(DVec3::new(x, 5.0, 0.0), DVec3::NEG_Y);
+    let trace = record::ray(&s, source(), ray).unwrap();
+    let hit = trace.samples[0].tree.nodes[0].hit.clone().unwrap();
+    let near = |a: DVec3, b: DVec3| (a - b.normalize()).length() < 1e-15;
+    assert!(
+        near(hit.normal, DVec3::new(1.0, 2.0, 0.0)),
+        "{}",
+        hit.normal
+    );
+    assert!(near(hit.object_normal.unwrap(), DVec3::new(1.0, 1.0, 0.0)));
+    assert!(near(
+        hit.normal_like_point.unwrap(),
+        DVec3::new(2.0, 1.0, 0.0)
+    ));
+    let off = raytree::views::explain::normal_like_point_error(&hit).unwrap();
+    // Tolerance: degrees of an angle made from unit vectors good to 1e-16.
+    assert!((off - 0.75f64.atan().to_degrees()).abs() < 1e-12, "{off}");
+}
+
+#[test]
 fn each_roots_fate_is_what_the_tracer_did() {
     each_node(|at, _, _, _, node| {
         let chosen: Vec<(usize, f64)> = node

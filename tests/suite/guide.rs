@@ -140,3 +140,61 @@ fn stops_quote_the_tests_a_search_made_and_the_recent_blocker() {
     assert!(nodes[steps[first].node].shadow_rays[0].recent.is_none());
     assert!(!values(first).contains_key("recent"));
 }
+
+#[test]
+fn shadow_and_object_space_stops_quote_what_the_trace_recorded() {
+    use raytree::tree::ray_tree::ShadowOutcomeRecord;
+    use raytree::views::guide::values;
+    use raytree::views::numbers::{num, vec3};
+    let source = || raytree::scene::source::SceneSource::new("test", "");
+    // Floor pixel 440,376 of the Whitted scene is lit through the glass ball by both lights.
+    let scene = raytree::scene::loader::whitted();
+    let trace = raytree::tree::record::pixel(&scene, source(), 440, 376, None).unwrap();
+    let steps = trace.steps(0);
+    let node = &trace.samples[0].tree.nodes[0];
+    let at = steps
+        .iter()
+        .position(|s| s.kind == StepKind::Shadow(0) && s.node == 0)
+        .unwrap();
+    let ShadowOutcomeRecord::Reaches { transmitted } = node.shadow_rays[0].outcome else {
+        panic!("the key's shadow ray reaches the light through the glass");
+    };
+    let v = values(&trace, 0, at);
+    assert_eq!(v["transmitted"], num(transmitted));
+    assert_eq!(
+        v["outcome"],
+        format!(
+            "reaches the light through transparent objects, keeping {}",
+            num(transmitted)
+        )
+    );
+    // A transformed object: S' and c' at its test, P' and the normals at the hit.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/ellipsoids.json");
+    let scene = raytree::scene::loader::load(&path).unwrap();
+    let trace = raytree::tree::record::pixel(&scene, source(), 320, 240, None).unwrap();
+    let steps = trace.steps(0);
+    let node = &trace.samples[0].tree.nodes[0];
+    let hit = node.hit.as_ref().unwrap();
+    let test = node
+        .tests
+        .iter()
+        .position(|t| t.object == hit.object)
+        .unwrap();
+    let at = steps
+        .iter()
+        .position(|s| s.kind == StepKind::Test(test) && s.node == 0)
+        .unwrap();
+    let ray = node.tests[test].object_ray.unwrap();
+    let v = values(&trace, 0, at);
+    assert_eq!(v["object_origin"], vec3(ray.origin));
+    assert_eq!(v["object_direction"], vec3(ray.direction));
+    let at = steps
+        .iter()
+        .position(|s| s.kind == StepKind::Hit && s.node == 0)
+        .unwrap();
+    let v = values(&trace, 0, at);
+    assert_eq!(v["object_point"], vec3(hit.object_point.unwrap()));
+    assert_eq!(v["object_normal"], vec3(hit.object_normal.unwrap()));
+    assert_eq!(v["normal_like_point"], vec3(hit.normal_like_point.unwrap()));
+    assert!(v["normal_error"].ends_with('°'), "{}", v["normal_error"]);
+}
