@@ -51,7 +51,7 @@ pub const NUMBERS_TITLE: &str = "<summary>Where this chapter's numbers come from
 /// Makes a chapter. Errors name the file and line at fault.
 pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
     let spec = src.spec;
-    let outputs = run::runs(spec).map_err(|e| format!("{}: {e}", src.spec_path))?;
+    let outputs = run::runs(spec, scratch).map_err(|e| format!("{}: {e}", src.spec_path))?;
     let mut numbers = BTreeMap::new();
     for (name, n) in &spec.numbers {
         let value = run::number(n, &outputs[&n.run])
@@ -308,6 +308,7 @@ fn origin(spec: &Spec, n: &raytree::views::lesson_spec::Number) -> String {
         Source::Step { step, value } => format!("`{command}`, step {step}, `{value}`"),
         Source::Json(pointer) => format!("`{command} --json`, `{pointer}`"),
         Source::After(before) => format!("`{command}`, after “{before}”"),
+        Source::Before(after) => format!("`{command}`, before “{after}”"),
     }
 }
 
