@@ -632,3 +632,30 @@ fn inspect_refuses_to_run_without_a_terminal_or_with_a_bad_trace() {
         "error: raytree inspect needs a terminal (standard output is not one)"
     );
 }
+
+#[test]
+fn render_stats_prints_the_rays_by_kind_on_standard_output() {
+    let dir = workdir("stats");
+    let out = raytree(
+        &["render", "--width", "40", "--height", "30", "--stats"],
+        &dir,
+    );
+    assert!(out.status.success());
+    let stdout = String::from_utf8(out.stdout).unwrap();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(stderr.starts_with("wrote whitted.png (40×30"), "{stderr}");
+    assert!(!stderr.contains("rays:"), "{stderr}");
+    // "5,130 rays: 1,200 primary, …; 2.1 M rays/s": the kinds add up to the total.
+    let (counts, speed) = stdout.split_once(';').expect("counts; speed");
+    let counts: Vec<u64> = counts
+        .replace(',', "")
+        .split(|c: char| !c.is_ascii_digit())
+        .filter(|w| !w.is_empty())
+        .map(|w| w.parse().unwrap())
+        .collect();
+    assert_eq!(counts.len(), 5, "{stdout}");
+    assert_eq!(counts[1], 40 * 30, "{stdout}");
+    assert_eq!(counts[0], counts[1..].iter().sum::<u64>(), "{stdout}");
+    assert!(speed.trim_end().ends_with(" M rays/s"), "{stdout}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}

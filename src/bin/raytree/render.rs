@@ -8,6 +8,7 @@ use raytree::io::image_file;
 use raytree::trace::render;
 
 use crate::args::SceneArgs;
+use crate::forward::thousands;
 use crate::output;
 
 /// Most worker threads: more only costs time on any machine of today (each
@@ -27,7 +28,7 @@ pub struct Args {
     /// Print nothing but errors.
     #[arg(short, long)]
     pub quiet: bool,
-    /// Also count the rays cast, by kind, and report rays per second (about 1% slower).
+    /// Also count the rays cast, by kind, and print them with the rays per second (about 1% slower).
     #[arg(long, conflicts_with_all = ["quiet", "aov"])]
     stats: bool,
     /// Render a per-pixel quantity instead of the color, as a PNG with its color
@@ -83,15 +84,20 @@ pub fn run(args: &Args) -> Result<()> {
         ));
     }
     if let Some(r) = rays {
-        output::note(&format!(
-            "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {:.1} M rays/s",
-            r.total(),
-            r.primary,
-            r.shadow,
-            r.reflected,
-            r.refracted,
-            r.total() as f64 / seconds / 1e6
-        ));
+        // The counts are what --stats asked for: standard output, as strip
+        // and forward print their figures; notes stay on standard error.
+        output::write_stdout(
+            format!(
+                "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {:.1} M rays/s\n",
+                thousands(r.total()),
+                thousands(r.primary),
+                thousands(r.shadow),
+                thousands(r.reflected),
+                thousands(r.refracted),
+                r.total() as f64 / seconds / 1e6
+            )
+            .as_bytes(),
+        )?;
     }
     Ok(())
 }
