@@ -22,6 +22,9 @@
 //! [number]         # quoted in the text as {{name}}
 //! u_c = { run = "pixel", step = 1, value = "u_c" }   # a step-through name
 //! eye = { run = "pixel", json = "/camera/eye" }      # any field of the trace
+//! # from any other run: the word after (or before) a text of its output
+//! shot = { run = "forward", after = "forward:" }
+//! reached = { run = "forward", before = "reached a pixel" }
 //!
 //! [[exercise]]
 //! task = "Change X; predict Y."
@@ -126,6 +129,8 @@ pub enum Source {
     Json(String),
     /// The word after this text in a run's output.
     After(String),
+    /// The word before this text in a run's output (`17  reached a pixel`).
+    Before(String),
 }
 
 /// A number the text quotes.
@@ -196,6 +201,7 @@ struct NumberFile {
     value: Option<String>,
     json: Option<String>,
     after: Option<String>,
+    before: Option<String>,
 }
 
 #[derive(Deserialize)]
@@ -393,13 +399,13 @@ fn command(text: &str, figure: bool) -> Result<Command, String> {
 }
 
 fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
-    match (&n.step, &n.value, &n.json, &n.after) {
+    match (&n.step, &n.value, &n.json, &n.after, &n.before) {
         (Some(0), ..) => Err("steps count from 1".to_owned()),
-        (Some(step), Some(value), None, None) if trace => Ok(Source::Step {
+        (Some(step), Some(value), None, None, None) if trace => Ok(Source::Step {
             step: *step,
             value: value.clone(),
         }),
-        (None, None, Some(json), None) if trace => {
+        (None, None, Some(json), None, None) if trace => {
             if json.starts_with('/') {
                 Ok(Source::Json(json.clone()))
             } else {
@@ -408,9 +414,13 @@ fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
                 ))
             }
         }
-        (None, None, None, Some(after)) if !trace => Ok(Source::After(after.clone())),
+        (None, None, None, Some(after), None) if !trace => Ok(Source::After(after.clone())),
+        (None, None, None, None, Some(before)) if !trace => Ok(Source::Before(before.clone())),
         _ if trace => Err("a trace's number is step + value, or json".to_owned()),
-        _ => Err("a number from a run other than a trace is after = \"text before it\"".to_owned()),
+        _ => Err(
+            "a number from a run other than a trace is after = \"text before it\" or before = \"text after it\""
+                .to_owned(),
+        ),
     }
 }
 
@@ -431,6 +441,7 @@ mod tests {
              [excerpt.x]\nrun = \"p\"\nsteps = [1, 2]\n\
              [number]\nu = { run = \"p\", step = 1, value = \"u_c\" }\n\
              e = { run = \"p\", json = \"/camera/eye\" }\nv = { run = \"h\", after = \"Usage:\" }\n\
+             w = { run = \"h\", before = \"Usage:\" }\n\
              [[exercise]]\ntask = \"t\"\nanswer = \"{{u}}\"\n",
         )
         .unwrap();
@@ -455,8 +466,9 @@ mod tests {
         );
         assert_eq!(s.numbers["e"].source, Source::Json("/camera/eye".into()));
         assert_eq!(s.numbers["v"].source, Source::After("Usage:".into()));
+        assert_eq!(s.numbers["w"].source, Source::Before("Usage:".into()));
         assert_eq!(s.numbers["u"].line, 13);
-        assert_eq!(s.exercises[0].line, 16);
+        assert_eq!(s.exercises[0].line, 17);
     }
 
     #[test]
@@ -478,6 +490,10 @@ mod tests {
             (
                 &format!("{run}[number]\nsteps = {{ run = \"p\", json = \"/x\" }}\n"),
                 "'steps' is a directive",
+            ),
+            (
+                "[run.h]\ncommand = \"raytree forward\"\n[number]\nu = { run = \"h\", after = \"a\", before = \"b\" }\n",
+                "line 4: number u: a number from a run other than a trace is after",
             ),
             (
                 &format!("{run}[excerpt.x]\nrun = \"p\"\nlines = [1, 2]\n"),

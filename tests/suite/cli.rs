@@ -658,42 +658,36 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
             ],
             &dir,
         );
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        assert!(String::from_utf8_lossy(&out.stderr).contains("wrote s.png"));
+        let stderr = String::from_utf8_lossy(&out.stderr).into_owned();
+        assert!(out.status.success(), "{stderr}");
+        assert!(stderr.starts_with("wrote s.png (32×24"), "{stderr}");
+        assert!(!stderr.contains("rays:"), "{stderr}");
         String::from_utf8(out.stdout).unwrap()
     };
     let stdout = run();
-    let number = |before: &str| -> f64 {
-        let at = stdout
-            .find(before)
-            .unwrap_or_else(|| panic!("no {before:?} in {stdout}"));
-        let word: String = stdout[at + before.len()..]
-            .trim_start()
-            .chars()
-            .take_while(|c| c.is_ascii_digit() || *c == '.')
-            .collect();
-        word.parse().unwrap()
+    // "5,130 rays: 768 primary, …; 2.1 M rays/s" and
+    // "40,211 tests: 30,000 bounding boxes, 10,211 primitives; 7.838 per ray".
+    let (rays, tests) = stdout.split_once('\n').expect("two lines");
+    let counts = |line: &str| -> Vec<f64> {
+        line.replace(',', "")
+            .split(|c: char| !c.is_ascii_digit() && c != '.')
+            .filter_map(|w| w.parse().ok())
+            .collect()
     };
-    let rays = number("rays:");
-    assert!(rays >= 32.0 * 24.0, "{stdout}");
-    assert!(
-        stdout.contains(&format!("({} primary", 32 * 24)),
-        "{stdout}"
-    );
-    let (tests, per_ray) = (number("tests:"), number("per ray:"));
-    let boxes = number(&format!("tests: {tests} ("));
-    let primitives = number(" bounding boxes, ");
-    assert!(boxes > 0.0, "spheres.json has a hierarchy: {stdout}");
-    assert_eq!(boxes + primitives, tests, "{stdout}");
+    let r = counts(rays);
+    assert_eq!(r.len(), 6, "total, four kinds, speed: {stdout}");
+    assert_eq!(r[1], (32 * 24) as f64, "{stdout}");
+    assert_eq!(r[0], r[1..5].iter().sum::<f64>(), "{stdout}");
+    assert!(rays.ends_with(" M rays/s"), "{stdout}");
+    let t = counts(tests);
+    assert_eq!(t.len(), 4, "total, boxes, primitives, per ray: {stdout}");
+    assert!(t[1] > 0.0, "spheres.json has a hierarchy: {stdout}");
+    assert_eq!(t[1] + t[2], t[0], "{stdout}");
     // per ray is written to 4 significant digits.
-    assert!((per_ray - tests / rays).abs() <= 5e-4 * per_ray, "{stdout}");
+    assert!((t[3] - t[0] / r[0]).abs() <= 5e-4 * t[3], "{stdout}");
     assert_eq!(
         run().lines().nth(1),
-        stdout.lines().nth(1),
+        Some(tests.trim_end()),
         "one thread, same tests"
     );
     std::fs::remove_dir_all(&dir).unwrap();

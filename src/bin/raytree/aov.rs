@@ -44,12 +44,13 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
     pending.commit(&figure.png())?;
     if !args.quiet {
         eprintln!(
-            "wrote {} ({}, {}×{}) in {:.2} s on {threads} threads",
+            "wrote {} ({}, {}×{}) in {:.2} s on {}",
             path.display(),
             image.name,
             s.width,
             s.height,
-            started.elapsed().as_secs_f64()
+            started.elapsed().as_secs_f64(),
+            crate::render::threads_word(threads)
         );
     }
     Ok(())

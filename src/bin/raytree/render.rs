@@ -10,6 +10,7 @@ use raytree::trace::render;
 use raytree::views::numbers::num;
 
 use crate::args::SceneArgs;
+use crate::forward::thousands;
 use crate::output;
 
 /// Most worker threads: more only costs time on any machine of today (each
@@ -77,16 +78,19 @@ pub fn run(args: &Args) -> Result<()> {
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
         output::note(&format!(
-            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.3} s on {threads} threads",
+            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.3} s on {}",
             path.display(),
             s.width,
             s.height,
             s.spp,
-            s.max_depth
+            s.max_depth,
+            threads_word(threads)
         ));
     }
     if let Some(r) = rays {
-        print!("{}", stats(&r, seconds));
+        // The counts are what --stats asked for: standard output, as strip and
+        // forward print their figures; notes stay on standard error.
+        output::write_stdout(stats(&r, seconds).as_bytes())?;
     }
     Ok(())
 }
@@ -96,19 +100,28 @@ pub fn run(args: &Args) -> Result<()> {
 fn stats(r: &RayCounter, seconds: f64) -> String {
     let rays = r.total().max(1);
     format!(
-        "rays: {} ({} primary, {} shadow, {} reflected, {} refracted), {} M rays/s\n\
-         tests: {} ({} bounding boxes, {} primitives), per ray: {}\n",
-        r.total(),
-        r.primary,
-        r.shadow,
-        r.reflected,
-        r.refracted,
+        "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {} M rays/s\n\
+         {} tests: {} bounding boxes, {} primitives; {} per ray\n",
+        thousands(r.total()),
+        thousands(r.primary),
+        thousands(r.shadow),
+        thousands(r.reflected),
+        thousands(r.refracted),
         num(r.total() as f64 / seconds / 1e6),
-        r.tests(),
-        r.boxes,
-        r.primitives,
+        thousands(r.tests()),
+        thousands(r.boxes),
+        thousands(r.primitives),
         num(r.tests() as f64 / rays as f64)
     )
+}
+
+/// "1 thread", "2 threads".
+pub fn threads_word(threads: usize) -> String {
+    if threads == 1 {
+        "1 thread".to_owned()
+    } else {
+        format!("{threads} threads")
+    }
 }
 
 /// A pool of `threads` workers (one per core by default, at most

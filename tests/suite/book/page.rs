@@ -308,6 +308,7 @@ fn origin(spec: &Spec, n: &raytree::views::lesson_spec::Number) -> String {
         Source::Step { step, value } => format!("`{command}`, step {step}, `{value}`"),
         Source::Json(pointer) => format!("`{command} --json`, `{pointer}`"),
         Source::After(before) => format!("`{command}`, after “{before}”"),
+        Source::Before(after) => format!("`{command}`, before “{after}”"),
     }
 }
 

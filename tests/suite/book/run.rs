@@ -110,20 +110,44 @@ pub fn number(n: &Number, out: &Output) -> Result<String, String> {
             let at = text
                 .find(before.as_str())
                 .ok_or_else(|| format!("the output has no '{before}'"))?;
-            let word: String = text[at + before.len()..]
-                .trim_start()
-                .chars()
-                .take_while(|c| !c.is_whitespace() && !",;()".contains(*c))
-                .collect();
-            let word = word.trim_end_matches('.').to_owned();
-            if word.is_empty() {
-                Err(format!("nothing follows '{before}'"))
-            } else {
-                Ok(word)
-            }
+            let rest: Vec<char> = text[at + before.len()..].trim_start().chars().collect();
+            let end = word_end(&rest);
+            word(&rest[..end]).ok_or_else(|| format!("nothing follows '{before}'"))
+        }
+        (Source::Before(after), Output::Text(text)) => {
+            let at = text
+                .find(after.as_str())
+                .ok_or_else(|| format!("the output has no '{after}'"))?;
+            let head = text[..at].trim_end().trim_end_matches([',', ':']);
+            let mut head: Vec<char> = head.trim_end().chars().collect();
+            head.reverse();
+            let mut w: Vec<char> = head[..word_end(&head)].to_vec();
+            w.reverse();
+            word(&w).ok_or_else(|| format!("nothing comes before '{after}'"))
         }
         _ => Err("the spec checked this pairing; it cannot happen".to_owned()),
     }
+}
+
+/// How many of `chars` make one word: up to a space or a bracket, and up to
+/// a comma unless it sits between digits (`1,000,000` is one word).
+fn word_end(chars: &[char]) -> usize {
+    let digit = |i: usize| chars.get(i).is_some_and(char::is_ascii_digit);
+    (0..chars.len())
+        .find(|&i| {
+            let c = chars[i];
+            c.is_whitespace()
+                || ";()".contains(c)
+                || (c == ',' && !(i > 0 && digit(i - 1) && digit(i + 1)))
+        })
+        .unwrap_or(chars.len())
+}
+
+/// A word without the punctuation that ends a sentence or a label.
+fn word(chars: &[char]) -> Option<String> {
+    let w: String = chars.iter().collect();
+    let w = w.trim_end_matches(['.', ':']).to_owned();
+    (!w.is_empty()).then_some(w)
 }
 
 fn json_number(v: &Value) -> Option<String> {
@@ -189,4 +213,40 @@ pub fn text_lines(text: &str, range: Option<(usize, usize)>) -> Result<String, S
         ));
     }
     Ok(lines[from - 1..to].join("\n") + "\n")
+}
+
+#[test]
+fn a_number_is_the_word_after_or_before_a_text() {
+    let out = Output::Text(
+        "forward: 1,000,000 rays shot (seed 1, pupil radius 0.3276)\n           17  reached a pixel (0.0017%)\n\
+         backward: 336,120 rays (76,800 primary, 180,563 shadow)\npixel 416,209 at x,y.\n"
+            .to_owned(),
+    );
+    let n = |source: Source| {
+        let n = Number {
+            run: "r".to_owned(),
+            source,
+            line: 1,
+        };
+        number(&n, &out)
+    };
+    let after = |t: &str| n(Source::After(t.to_owned()));
+    let before = |t: &str| n(Source::Before(t.to_owned()));
+    assert_eq!(after("forward:").unwrap(), "1,000,000");
+    assert_eq!(after("pupil radius").unwrap(), "0.3276");
+    assert_eq!(after("reached a pixel (").unwrap(), "0.0017%");
+    assert_eq!(after("pixel 416,209 at").unwrap(), "x");
+    assert_eq!(before("reached a pixel").unwrap(), "17");
+    assert_eq!(before("primary").unwrap(), "76,800");
+    assert_eq!(before("shadow)").unwrap(), "180,563");
+    assert_eq!(before("rays shot").unwrap(), "1,000,000");
+    assert_eq!(
+        before("backward").unwrap_err(),
+        "nothing comes before 'backward'"
+    );
+    assert_eq!(
+        after("reached a pixel").unwrap_err(),
+        "nothing follows 'reached a pixel'"
+    );
+    assert_eq!(after("no such").unwrap_err(), "the output has no 'no such'");
 }
