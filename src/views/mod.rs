@@ -25,3 +25,4 @@ pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod chart; // speed against accuracy as a chart
 pub mod aov_figure; // a per-pixel quantity with its color bar or key
 pub mod filmstrip; // frames side by side, one per value of a setting
+pub mod difference; // two images side by side with where they differ

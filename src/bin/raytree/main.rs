@@ -48,7 +48,7 @@ enum Command {
     Forward(forward::Args),
     /// List the lessons, or open lesson N's guided step-through (the trace's own numbers, stop by stop).
     Lesson(lesson::Args),
-    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
+    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels; with -o, a figure of where they differ.
     Diff(diff::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(generate::Args),
