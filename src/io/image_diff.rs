@@ -45,6 +45,15 @@ pub fn difference(a: &image::RgbImage, b: &image::RgbImage) -> Result<Difference
     })
 }
 
+/// Per pixel of two 8-bit RGB buffers of one size, the largest of its three
+/// channels' absolute differences (what `share_over_3` counts above 3).
+pub fn per_pixel(a: &[u8], b: &[u8]) -> Vec<u8> {
+    a.chunks_exact(3)
+        .zip(b.chunks_exact(3))
+        .map(|(p, q)| (0..3).map(|c| p[c].abs_diff(q[c])).max().unwrap_or(0))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -1,9 +1,11 @@
 //! Files in and out: input files read within limits, the linear-RGB image and
 //! its one conversion to 8-bit sRGB, image files, output files written
-//! atomically, and the difference between two images.
+//! atomically, the difference between two images, and the lecture's
+//! PostScript program.
 
 pub mod input; // regular files only, size checked before reading
 pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
 pub mod image_file; // PNG and PPM
 pub mod output; // files written atomically
 pub mod image_diff; // how far apart two images are
+pub mod postscript; // the lecture's PostScript ray tracer, its transcription slips repaired

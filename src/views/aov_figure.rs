@@ -30,7 +30,7 @@ const CATEGORIES: [Rgb; 8] = [
 ];
 
 /// Whole-number scales with at most this many values get a step per value.
-const MAX_STEPS: f64 = 24.0;
+pub const MAX_STEPS: f64 = 24.0;
 
 /// The narrowest figure: the key needs room for its words.
 const MIN_WIDTH: u32 = 640;
@@ -396,7 +396,7 @@ fn draw_swatch(fig: &mut Figure, swatch: Swatch, at: DVec2) {
 
 /// The color bar from `x0` to `x1` at height `y`, with ticks, their values and
 /// the unit under them.
-fn draw_bar(fig: &mut Figure, range: &Range, unit: &str, (x0, x1): (f64, f64), y: f64) {
+pub fn draw_bar(fig: &mut Figure, range: &Range, unit: &str, (x0, x1): (f64, f64), y: f64) {
     let w = x1 - x0;
     let at = |v: f64| x0 + range.t(v) * w;
     let ticks: Vec<(f64, f64)> = if range.stepped {

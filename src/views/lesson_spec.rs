@@ -15,6 +15,9 @@
 //! command = "raytree diagram scenes/whitted.json --pixel 416,209 --view camera"
 //! caption = "The image plane face-on."
 //!
+//! [image.plain]    # a PNG that other commands read as plain.png, not shown
+//! command = "raytree render scenes/whitted.json --width 160 --height 120"
+//!
 //! [excerpt.camera] # steps of a trace run (or lines of any other run)
 //! run = "pixel"
 //! steps = [1, 2]
@@ -37,6 +40,8 @@ use std::path::Path;
 use serde::Deserialize;
 use toml::Spanned;
 
+pub use crate::views::lesson_command::Command;
+use crate::views::lesson_command::{command, resolve_reads};
 use crate::views::teacher_file::{self, line_of};
 
 /// A spec file, read and checked: every name it refers to exists.
@@ -50,37 +55,14 @@ pub struct Spec {
     pub runs: BTreeMap<String, Run>,
     /// Figures, by name (the file is `NAME.png`).
     pub figures: BTreeMap<String, Figure>,
+    /// Images other commands read as `NAME.png`, by name: made, never shown.
+    pub images: BTreeMap<String, Image>,
     /// Excerpts of runs' output, by name.
     pub excerpts: BTreeMap<String, Excerpt>,
     /// Numbers, by the name the text quotes them with.
     pub numbers: BTreeMap<String, Number>,
     /// Exercises, in order.
     pub exercises: Vec<Exercise>,
-}
-
-/// A raytree command line, as written in the spec and as arguments.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Command {
-    /// As written: `raytree trace scenes/whitted.json --pixel 416,209`.
-    pub text: String,
-    /// The arguments after `raytree`.
-    pub args: Vec<String>,
-}
-
-impl Command {
-    /// Whether it is `raytree trace`: run with `--json`, its numbers named.
-    pub fn is_trace(&self) -> bool {
-        self.args.first().is_some_and(|a| a == "trace")
-    }
-
-    /// Whether it writes an image (to a name of its own choosing unless given
-    /// `-o`): as a run, the book sends the image to a scratch folder and keeps
-    /// what it prints.
-    pub fn writes_image(&self) -> bool {
-        self.args.first().is_some_and(|a| {
-            ["render", "strip", "forward", "chart", "diagram"].contains(&a.as_str())
-        })
-    }
 }
 
 /// A command whose output the text quotes.
@@ -99,6 +81,15 @@ pub struct Figure {
     pub command: Command,
     /// One or two sentences under the figure.
     pub caption: String,
+    /// Line of the spec file.
+    pub line: usize,
+}
+
+/// An image: a command that writes a PNG for other commands to read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Image {
+    /// The command, without `-o`.
+    pub command: Command,
     /// Line of the spec file.
     pub line: usize,
 }
@@ -165,6 +156,8 @@ struct SpecFile {
     #[serde(default)]
     figure: BTreeMap<String, Spanned<FigureFile>>,
     #[serde(default)]
+    image: BTreeMap<String, Spanned<RunFile>>,
+    #[serde(default)]
     excerpt: BTreeMap<String, Spanned<ExcerptFile>>,
     #[serde(default)]
     number: BTreeMap<String, Spanned<NumberFile>>,
@@ -230,6 +223,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
         .run
         .keys()
         .chain(file.figure.keys())
+        .chain(file.image.keys())
         .chain(file.excerpt.keys())
     {
         check_name(name, false).map_err(|e| format!("{at}: {e}"))?;
@@ -258,6 +252,16 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
                 line: l,
             },
         );
+    }
+    let mut images = BTreeMap::new();
+    for (name, i) in &file.image {
+        let l = line(i.span());
+        if figures.contains_key(name) {
+            return Err(fail(l, format!("image {name}: a figure has that name")));
+        }
+        let command = command(&i.get_ref().command, true)
+            .map_err(|e| fail(l, format!("image {name}: {e}")))?;
+        images.insert(name.clone(), Image { command, line: l });
     }
     let run_of = |what: &str, run: &str, l: usize| -> Result<&Run, String> {
         runs.get(run).ok_or_else(|| {
@@ -336,15 +340,18 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
             line: line(e.span()),
         })
         .collect();
-    Ok(Spec {
+    let mut spec = Spec {
         title: file.title,
         summary: file.summary,
         runs,
         figures,
+        images,
         excerpts,
         numbers,
         exercises,
-    })
+    };
+    resolve_reads(&mut spec).map_err(|(l, e)| fail(l, e))?;
+    Ok(spec)
 }
 
 /// Names are what the text writes between braces and what files are called:
@@ -362,40 +369,6 @@ fn check_name(name: &str, number: bool) -> Result<(), String> {
         ));
     }
     Ok(())
-}
-
-/// Splits `raytree ARGS…` into arguments. The book adds the output options,
-/// so a command may not give them.
-fn command(text: &str, figure: bool) -> Result<Command, String> {
-    if text.contains(['"', '\'', '\\', '|', '>', '<', ';', '&', '$', '`']) {
-        return Err(format!(
-            "'{text}': plain words only (no quotes or shell syntax)"
-        ));
-    }
-    let mut words = text.split_whitespace().map(str::to_owned);
-    if words.next().as_deref() != Some("raytree") {
-        return Err(format!("'{text}' does not start with raytree"));
-    }
-    let args: Vec<String> = words.collect();
-    if args.is_empty() {
-        return Err("no command after raytree".to_owned());
-    }
-    let given = |flag: &str| {
-        args.iter()
-            .any(|a| a == flag || a.starts_with(&format!("{flag}=")))
-    };
-    if given("-o") || given("--output") {
-        return Err(format!("'{text}': leave out -o; the book names the output"));
-    }
-    if !figure && args[0] == "trace" && (given("--json") || given("--steps")) {
-        return Err(format!(
-            "'{text}': leave out --json and --steps; the book adds them"
-        ));
-    }
-    Ok(Command {
-        text: text.split_whitespace().collect::<Vec<_>>().join(" "),
-        args,
-    })
 }
 
 fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
@@ -522,6 +495,19 @@ mod tests {
             (
                 "[figure.\"a b\"]\ncommand = \"raytree diagram\"\ncaption = \"\"\n",
                 "'a b' is not a name",
+            ),
+            (
+                "[run.d]\ncommand = \"raytree diff a.png b.png\"\n",
+                "line 1: run d: reads a.png, but the spec makes no image or figure 'a'",
+            ),
+            (
+                "[image.a]\ncommand = \"raytree diff b.png c.png\"\n[image.b]\ncommand = \"raytree diff a.png c.png\"\n\
+                 [image.c]\ncommand = \"raytree render\"\n",
+                "line 1: a reads a file that is made from itself",
+            ),
+            (
+                "[image.a]\ncommand = \"raytree render\"\n",
+                "line 1: image a is read by no command (as a.png)",
             ),
         ];
         for (text, want) in cases {

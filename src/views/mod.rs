@@ -23,7 +23,9 @@ pub mod object_view; // a transformed sphere's hit in its own space, beside the 
 pub mod teacher_file; // the small TOML files a teacher writes, read with line-numbered errors
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
+pub mod lesson_command; // a spec's command lines, and the images and figures each one reads
 pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod chart; // speed against accuracy as a chart
 pub mod aov_figure; // a per-pixel quantity with its color bar or key
 pub mod filmstrip; // frames side by side, one per value of a setting
+pub mod difference; // two images side by side with where they differ

@@ -22,6 +22,7 @@ mod inspector_teaching;
 mod inspector_tmux;
 mod media;
 mod outputs;
+mod postscript;
 mod povray;
 mod ray_tree;
 mod readme;

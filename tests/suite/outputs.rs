@@ -39,6 +39,19 @@ fn an_output_that_is_an_input_is_refused() {
         e,
         "error: cannot write c.png: the CSV figures and the chart need two files"
     );
+    let mut png = Vec::new();
+    image::RgbImage::new(2, 2)
+        .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
+        .unwrap();
+    let e = refused(
+        "diff-figure-over-an-image",
+        &[("a.png", &png), ("b.png", &png)],
+        &["diff", "a.png", "b.png", "-o", "b.png"],
+    );
+    assert_eq!(
+        e,
+        "error: cannot write b.png: it is an input, which this command reads (choose another output name)"
+    );
     let e = refused(
         "icosphere-over-its-mesh",
         &[],

@@ -13,6 +13,7 @@ mod inspect;
 mod lesson;
 mod memory;
 mod output;
+mod postscript;
 mod render;
 mod strip;
 mod trace;
@@ -48,8 +49,10 @@ enum Command {
     Forward(forward::Args),
     /// List the lessons, or open lesson N's guided step-through (the trace's own numbers, stop by stop).
     Lesson(lesson::Args),
-    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels.
+    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels; with -o, a figure of where they differ.
     Diff(diff::Args),
+    /// Draw the lecture's PostScript ray tracer with Ghostscript (PNG), its transcription slips repaired.
+    Postscript(postscript::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(generate::Args),
 }
@@ -70,6 +73,7 @@ fn main() -> ExitCode {
         Command::Forward(args) => forward::run(&args),
         Command::Lesson(args) => lesson::run(&args),
         Command::Diff(args) => diff::run(&args),
+        Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
     };
     match result {

@@ -51,7 +51,8 @@ pub const NUMBERS_TITLE: &str = "<summary>Where this chapter's numbers come from
 /// Makes a chapter. Errors name the file and line at fault.
 pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
     let spec = src.spec;
-    let outputs = run::runs(spec, scratch).map_err(|e| format!("{}: {e}", src.spec_path))?;
+    let files = run::Files::new(spec, scratch)?;
+    let outputs = run::runs(spec, &files).map_err(|e| format!("{}: {e}", src.spec_path))?;
     let mut numbers = BTreeMap::new();
     for (name, n) in &spec.numbers {
         let value = run::number(n, &outputs[&n.run])
@@ -67,7 +68,7 @@ pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
         used: BTreeSet::new(),
         figures: Vec::new(),
         blocks: Vec::new(),
-        scratch,
+        files: &files,
     };
     let mut body = page.fill(&text, src.text, true)?;
     page.check_used()?;
@@ -96,7 +97,7 @@ struct Page<'a> {
     used: BTreeSet<String>,
     figures: Vec<(String, Vec<u8>, String)>,
     blocks: Vec<(String, String)>,
-    scratch: &'a Path,
+    files: &'a run::Files<'a>,
 }
 
 impl Page<'_> {
@@ -159,14 +160,22 @@ impl Page<'_> {
                     &format!("{} (figure {name})", self.src.spec_path),
                     false,
                 )?;
-                let png = run::figure(&figure.command, name, self.scratch)?;
+                let png = self.files.png(name)?;
                 let command = format!("{} -o {name}.png", figure.command.text);
                 self.figures
                     .push((format!("{name}.png"), png, command.clone()));
                 let number = self.figures.len();
                 let alt = caption.replace(['[', ']', '\n'], " ");
+                // What it reads first, a command a line, so a learner can make it all.
+                let commands: String = self
+                    .files
+                    .making(&figure.command)
+                    .iter()
+                    .chain([&command])
+                    .map(|c| format!(" <br>`{c}`"))
+                    .collect();
                 Ok(format!(
-                    "![{alt}]({}{name}.png)\n\n**Figure {number}.** {} <br>`{command}`",
+                    "![{alt}]({}{name}.png)\n\n**Figure {number}.** {}{commands}",
                     self.src.figures, caption
                 ))
             }
@@ -176,7 +185,8 @@ impl Page<'_> {
                     .get(name)
                     .ok_or_else(|| unknown("excerpt", spec.excerpts.keys().collect()))?;
                 self.used.insert(format!("excerpt {name}"));
-                let command = &spec.runs[&x.run].command.text;
+                let run = &spec.runs[&x.run].command;
+                let command = &run.text;
                 let (shown, body) = match &self.outputs[&x.run] {
                     Output::Trace(_, text) => (
                         format!("{command} --steps"),
@@ -186,7 +196,13 @@ impl Page<'_> {
                 };
                 let body = body.map_err(|e| format!("excerpt {name}: {e}"))?;
                 self.blocks.push((format!("excerpt {name}"), body.clone()));
-                Ok(format!("```text\n$ {shown}\n{body}```"))
+                let making: String = self
+                    .files
+                    .making(run)
+                    .iter()
+                    .map(|c| format!("$ {c}\n"))
+                    .collect();
+                Ok(format!("```text\n{making}$ {shown}\n{body}```"))
             }
             ("steps", None) if top => self.steps(),
             ("exercises", None) if top => self.exercises(),

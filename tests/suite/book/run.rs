@@ -1,6 +1,7 @@
 //! Running the spec's raytree commands: the real binary, in the repository,
 //! exactly as a learner would type them.
 
+use std::cell::RefCell;
 use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command as Process;
@@ -44,20 +45,98 @@ pub enum Output {
     Text(String),
 }
 
+/// The images and figures of one chapter, each made once into a folder of
+/// the chapter's own: a command that reads `NAME.png` is given that file.
+pub struct Files<'a> {
+    spec: &'a Spec,
+    dir: tempfile::TempDir,
+    made: RefCell<BTreeMap<String, Vec<u8>>>,
+}
+
+impl<'a> Files<'a> {
+    pub fn new(spec: &'a Spec, scratch: &Path) -> Result<Self, String> {
+        Ok(Files {
+            spec,
+            dir: tempfile::tempdir_in(scratch).map_err(|e| e.to_string())?,
+            made: RefCell::default(),
+        })
+    }
+
+    fn command(&self, name: &str) -> &'a Command {
+        let spec = self.spec;
+        match spec.images.get(name) {
+            Some(image) => &image.command,
+            None => &spec.figures[name].command,
+        }
+    }
+
+    /// The PNG of image or figure `name`, made by its command with `-o`.
+    pub fn png(&self, name: &str) -> Result<Vec<u8>, String> {
+        if let Some(png) = self.made.borrow().get(name) {
+            return Ok(png.clone());
+        }
+        let command = self.command(name);
+        let path = self.dir.path().join(format!("{name}.png"));
+        let mut args = self.args(command)?;
+        args.extend(["-o".to_owned(), path.display().to_string()]);
+        raytree(&args)?;
+        let png =
+            std::fs::read(&path).map_err(|e| format!("`{}` wrote no figure: {e}", command.text))?;
+        self.made.borrow_mut().insert(name.to_owned(), png.clone());
+        Ok(png)
+    }
+
+    /// `command`'s arguments, each file it reads made first and named by its path.
+    fn args(&self, command: &Command) -> Result<Vec<String>, String> {
+        for name in &command.reads {
+            self.png(name)?;
+        }
+        Ok(command
+            .args
+            .iter()
+            .map(|a| match a.strip_suffix(".png") {
+                Some(name) if command.reads.iter().any(|r| r == name) => {
+                    self.dir.path().join(a).display().to_string()
+                }
+                _ => a.clone(),
+            })
+            .collect())
+    }
+
+    /// The commands, with their `-o`, that make what `command` reads, in the
+    /// order a learner would type them.
+    pub fn making(&self, command: &Command) -> Vec<String> {
+        let mut out: Vec<String> = Vec::new();
+        for name in &command.reads {
+            let maker = self.command(name);
+            for line in self.making(maker) {
+                if !out.contains(&line) {
+                    out.push(line);
+                }
+            }
+            let line = format!("{} -o {name}.png", maker.text);
+            if !out.contains(&line) {
+                out.push(line);
+            }
+        }
+        out
+    }
+}
+
 /// Runs every run of a spec. A command that writes an image (a render whose
-/// `--stats` the text quotes, a strip's printed changes) writes it into
-/// `scratch`, never into the repository.
-pub fn runs(spec: &Spec, scratch: &Path) -> Result<BTreeMap<String, Output>, String> {
+/// `--stats` the text quotes, a strip's printed changes) writes it into the
+/// chapter's folder, never into the repository.
+pub fn runs(spec: &Spec, files: &Files) -> Result<BTreeMap<String, Output>, String> {
     spec.runs
         .iter()
-        .map(|(name, run)| Ok((name.clone(), output(run, name, scratch)?)))
+        .map(|(name, run)| Ok((name.clone(), output(run, name, files)?)))
         .collect()
 }
 
-fn output(run: &Run, name: &str, scratch: &Path) -> Result<Output, String> {
-    let Command { args, .. } = &run.command;
+fn output(run: &Run, name: &str, files: &Files) -> Result<Output, String> {
+    let mut args = files.args(&run.command)?;
     if run.command.is_trace() {
-        let mut with_json = args.clone();
+        let mut with_json = args;
         with_json.push("--json".to_owned());
         let bytes = raytree(&with_json)?;
         let doc: TraceDocument = serde_json::from_slice(&bytes)
@@ -65,23 +144,13 @@ fn output(run: &Run, name: &str, scratch: &Path) -> Result<Output, String> {
         let text = text::format(&doc, true);
         Ok(Output::Trace(Box::new(doc), text))
     } else {
-        let mut args = args.clone();
         if run.command.writes_image() {
-            let image = scratch.join(format!("run-{name}.png"));
+            let image = files.dir.path().join(format!("run-{name}.png"));
             args.extend(["-o".to_owned(), image.display().to_string()]);
         }
         let bytes = raytree(&args)?;
         Ok(Output::Text(String::from_utf8_lossy(&bytes).into_owned()))
     }
-}
-
-/// A figure's PNG, made by its command with `-o` into `scratch`.
-pub fn figure(command: &Command, name: &str, scratch: &Path) -> Result<Vec<u8>, String> {
-    let path = scratch.join(format!("{name}.png"));
-    let mut args = command.args.clone();
-    args.extend(["-o".to_owned(), path.display().to_string()]);
-    raytree(&args)?;
-    std::fs::read(&path).map_err(|e| format!("`{}` wrote no figure: {e}", command.text))
 }
 
 /// A number's value, written as the trace writes numbers.

@@ -1,0 +1,188 @@
+//! The commands of a lesson's spec ([`crate::views::lesson_spec`]): a command
+//! line split into arguments, and which of the spec's images and figures
+//! each one reads (an argument `NAME.png`), so the book can make those first.
+
+use crate::views::lesson_spec::Spec;
+
+/// A raytree command line, as written in the spec and as arguments.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Command {
+    /// As written: `raytree trace scenes/whitted.json --pixel 416,209`.
+    pub text: String,
+    /// The arguments after `raytree`.
+    pub args: Vec<String>,
+    /// The images and figures of the spec it reads, by name, in the order
+    /// its arguments name them (an argument `NAME.png`).
+    pub reads: Vec<String>,
+}
+
+impl Command {
+    /// Whether it is `raytree trace`: run with `--json`, its numbers named.
+    pub fn is_trace(&self) -> bool {
+        self.args.first().is_some_and(|a| a == "trace")
+    }
+
+    /// Whether it writes an image (to a name of its own choosing unless given
+    /// `-o`): as a run, the book sends the image to a scratch folder and keeps
+    /// what it prints.
+    pub fn writes_image(&self) -> bool {
+        self.args.first().is_some_and(|a| {
+            [
+                "render",
+                "strip",
+                "forward",
+                "chart",
+                "diagram",
+                "postscript",
+            ]
+            .contains(&a.as_str())
+        })
+    }
+}
+
+/// Splits `raytree ARGS…` into arguments. The book adds the output options,
+/// so a command may not give them.
+pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
+    if text.contains(['"', '\'', '\\', '|', '>', '<', ';', '&', '$', '`']) {
+        return Err(format!(
+            "'{text}': plain words only (no quotes or shell syntax)"
+        ));
+    }
+    let mut words = text.split_whitespace().map(str::to_owned);
+    if words.next().as_deref() != Some("raytree") {
+        return Err(format!("'{text}' does not start with raytree"));
+    }
+    let args: Vec<String> = words.collect();
+    if args.is_empty() {
+        return Err("no command after raytree".to_owned());
+    }
+    let given = |flag: &str| {
+        args.iter()
+            .any(|a| a == flag || a.starts_with(&format!("{flag}=")))
+    };
+    if given("-o") || given("--output") {
+        return Err(format!("'{text}': leave out -o; the book names the output"));
+    }
+    if !figure && args[0] == "trace" && (given("--json") || given("--steps")) {
+        return Err(format!(
+            "'{text}': leave out --json and --steps; the book adds them"
+        ));
+    }
+    Ok(Command {
+        text: text.split_whitespace().collect::<Vec<_>>().join(" "),
+        args,
+        reads: Vec::new(),
+    })
+}
+
+/// Finds the files each command reads (an argument `NAME.png` naming an image
+/// or a figure of the spec), and refuses a name that is neither, a command
+/// that reads itself through others, and an image nothing reads.
+pub(crate) fn resolve_reads(spec: &mut Spec) -> Result<(), (usize, String)> {
+    let files: Vec<String> = spec
+        .images
+        .keys()
+        .chain(spec.figures.keys())
+        .cloned()
+        .collect();
+    let commands = spec
+        .runs
+        .iter_mut()
+        .map(|(n, r)| (format!("run {n}"), r.line, &mut r.command))
+        .chain(
+            spec.figures
+                .iter_mut()
+                .map(|(n, f)| (format!("figure {n}"), f.line, &mut f.command)),
+        )
+        .chain(
+            spec.images
+                .iter_mut()
+                .map(|(n, i)| (format!("image {n}"), i.line, &mut i.command)),
+        );
+    for (what, line, command) in commands {
+        for arg in &command.args {
+            let Some(name) = arg.strip_suffix(".png").filter(|n| !n.contains('/')) else {
+                continue;
+            };
+            if !files.iter().any(|f| f == name) {
+                return Err((
+                    line,
+                    format!("{what}: reads {arg}, but the spec makes no image or figure '{name}'"),
+                ));
+            }
+            command.reads.push(name.to_owned());
+        }
+    }
+    let reads = |name: &str| -> &[String] {
+        spec.images
+            .get(name)
+            .map(|i| &i.command)
+            .or(spec.figures.get(name).map(|f| &f.command))
+            .map_or(&[], |c| &c.reads)
+    };
+    for name in &files {
+        // Without a cycle, no chain of reads from `name` is longer than there are files.
+        let mut frontier = vec![name.as_str()];
+        for _ in 0..=files.len() {
+            frontier = frontier
+                .iter()
+                .flat_map(|n| reads(n))
+                .map(String::as_str)
+                .collect();
+            frontier.sort_unstable();
+            frontier.dedup();
+        }
+        if !frontier.is_empty() {
+            let line = spec
+                .images
+                .get(name)
+                .map_or_else(|| spec.figures[name].line, |i| i.line);
+            return Err((
+                line,
+                format!("{name} reads a file that is made from itself (a cycle of reads)"),
+            ));
+        }
+    }
+    for (name, image) in &spec.images {
+        let read = spec
+            .runs
+            .values()
+            .map(|r| &r.command)
+            .chain(spec.figures.values().map(|f| &f.command))
+            .chain(spec.images.values().map(|i| &i.command))
+            .any(|c| c.reads.contains(name));
+        if !read {
+            return Err((
+                image.line,
+                format!("image {name} is read by no command (as {name}.png)"),
+            ));
+        }
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::Path;
+
+    use crate::views::lesson_spec::{Spec, parse};
+
+    fn spec(text: &str) -> Result<Spec, String> {
+        parse(Path::new("lessons/03-x/lesson.toml"), text)
+    }
+
+    #[test]
+    fn commands_read_the_images_and_figures_they_name() {
+        let s = spec(
+            "[image.a]\ncommand = \"raytree render x.json\"\n\
+             [figure.b]\ncommand = \"raytree render y.json\"\ncaption = \"B.\"\n\
+             [figure.d]\ncommand = \"raytree diff a.png b.png\"\ncaption = \"D.\"\n\
+             [run.d]\ncommand = \"raytree diff b.png scenes/a.png\"\n",
+        )
+        .unwrap();
+        assert_eq!(s.figures["d"].command.reads, ["a", "b"]);
+        // A path with a folder is a file of the repository, not one the spec makes.
+        assert_eq!(s.runs["d"].command.reads, ["b"]);
+        assert!(s.images["a"].command.reads.is_empty());
+    }
+}
