@@ -205,26 +205,7 @@ fn golden_figures() {
         let fig = aov_figure::draw(&image, "scenes/whitted.json · 160×120").unwrap();
         let file = name.replace('=', "-");
         let path = format!("{}/tests/aovs/{file}.png", env!("CARGO_MANIFEST_DIR"));
-        if std::env::var_os("RAYTREE_BLESS").is_some() {
-            std::fs::create_dir_all(std::path::Path::new(&path).parent().unwrap()).unwrap();
-            std::fs::write(&path, fig.png()).unwrap();
-            continue;
-        }
-        let golden = image::open(&path)
-            .unwrap_or_else(|e| panic!("{path}: {e} (make it with RAYTREE_BLESS=1)"))
-            .to_rgb8();
-        assert_eq!(golden.dimensions(), fig.size(), "{name}");
-        // Tolerance 8 of 255 per channel, as for the diagrams: a different SIMD
-        // path in the rasterizer may round an edge pixel of the key's text
-        // differently; a changed value moves whole regions by far more.
-        let worst = golden
-            .as_raw()
-            .iter()
-            .zip(fig.rgb())
-            .map(|(&a, b)| a.abs_diff(b))
-            .max()
-            .unwrap();
-        assert!(worst <= 8, "{name}: a pixel differs by {worst} from {path}");
+        crate::common::matches_golden(&fig, path.as_ref(), "aov");
     }
 }
 

@@ -126,22 +126,5 @@ fn docs_chart_png_is_drawn_from_docs_chart_csv_as_the_code_draws_today() {
         800,
     )
     .unwrap();
-    if std::env::var_os("RAYTREE_BLESS").is_some() {
-        std::fs::write(path, fig.png()).unwrap();
-        return;
-    }
-    let shown = image::open(path).unwrap().to_rgb8();
-    assert_eq!(shown.dimensions(), fig.size());
-    // Tolerance 8 of 255, as for the golden diagrams (antialiasing may round an edge differently).
-    let worst = shown
-        .as_raw()
-        .iter()
-        .zip(fig.rgb())
-        .map(|(&a, b)| a.abs_diff(b))
-        .max()
-        .unwrap();
-    assert!(
-        worst <= 8,
-        "docs/chart.png is stale: RAYTREE_BLESS=1 cargo test --release chart"
-    );
+    crate::common::matches_golden(&fig, path.as_ref(), "chart");
 }

@@ -129,3 +129,46 @@ pub fn refused_with(code: i32, name: &str, files: &[(&str, &[u8])], args: &[&str
 pub fn refused(name: &str, files: &[(&str, &[u8])], args: &[&str]) -> String {
     refused_with(1, name, files, args)
 }
+
+/// How far a drawn figure may stray from its committed PNG, in 8-bit levels
+/// per channel: figures are drawn the same way on every machine, but another
+/// SIMD path in the rasterizer may round an edge pixel's coverage (of a line or
+/// a glyph) differently; a moved line or label, or a changed value, changes
+/// pixels by far more.
+pub const FIGURE_TOLERANCE: u8 = 8;
+
+/// The largest difference between two images' channels, in 8-bit levels.
+pub fn worst_difference(a: &[u8], b: &[u8]) -> u8 {
+    assert_eq!(a.len(), b.len(), "images of different sizes");
+    a.iter()
+        .zip(b)
+        .map(|(a, b)| a.abs_diff(*b))
+        .max()
+        .unwrap_or(0)
+}
+
+/// Checks `fig` against the PNG at `path` within [`FIGURE_TOLERANCE`]; with
+/// `RAYTREE_BLESS` set, writes it there instead. `bless` names the test
+/// filter that remakes it.
+pub fn matches_golden(fig: &raytree::views::figure::Figure, path: &std::path::Path, bless: &str) {
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::create_dir_all(path.parent().unwrap()).unwrap();
+        std::fs::write(path, fig.png()).unwrap();
+        return;
+    }
+    let golden = image::open(path)
+        .unwrap_or_else(|e| {
+            panic!(
+                "{}: {e} (make it with RAYTREE_BLESS=1 cargo test --release {bless})",
+                path.display()
+            )
+        })
+        .to_rgb8();
+    assert_eq!(golden.dimensions(), fig.size(), "{}", path.display());
+    let worst = worst_difference(golden.as_raw(), &fig.rgb());
+    assert!(
+        worst <= FIGURE_TOLERANCE,
+        "{} is stale: a pixel differs by {worst} of 255 (RAYTREE_BLESS=1 cargo test --release {bless})",
+        path.display()
+    );
+}

@@ -206,29 +206,7 @@ fn golden_figures() {
     ];
     for (name, figure) in cases {
         let path = format!("{}/tests/diagrams/{name}.png", env!("CARGO_MANIFEST_DIR"));
-        let fig = figure();
-        if std::env::var_os("RAYTREE_BLESS").is_some() {
-            std::fs::write(&path, fig.png()).unwrap();
-            continue;
-        }
-        let golden = image::open(&path)
-            .unwrap_or_else(|e| panic!("{path}: {e} (make it with RAYTREE_BLESS=1)"))
-            .to_rgb8();
-        assert_eq!(golden.dimensions(), fig.size(), "{name}");
-        // Tolerance 8 of 255 per channel: the figure is drawn the same way on every
-        // machine, but a different SIMD path in the rasterizer may round an edge
-        // pixel's coverage differently; a moved line or label changes pixels by far more.
-        let worst = golden
-            .as_raw()
-            .iter()
-            .zip(fig.rgb())
-            .map(|(&a, b)| a.abs_diff(b))
-            .max()
-            .unwrap();
-        assert!(
-            worst <= 8,
-            "{name}: a pixel differs by {worst} from tests/diagrams/{name}.png"
-        );
+        crate::common::matches_golden(&figure(), path.as_ref(), "diagram");
     }
 }
 

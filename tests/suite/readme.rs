@@ -143,17 +143,9 @@ fn readme_figures_are_what_the_commands_draw_today() {
             image::open(&shown).unwrap().to_rgb8(),
         );
         assert_eq!(now.dimensions(), then.dimensions(), "{name}");
-        // Tolerance 8 of 255, as for the golden diagrams: the rasterizer may
-        // round an edge of the key's text differently on another machine.
-        let worst = now
-            .as_raw()
-            .iter()
-            .zip(then.as_raw())
-            .map(|(a, b)| a.abs_diff(*b))
-            .max()
-            .unwrap();
+        let worst = crate::common::worst_difference(now.as_raw(), then.as_raw());
         assert!(
-            worst <= 8,
+            worst <= crate::common::FIGURE_TOLERANCE,
             "docs/{name} is stale: RAYTREE_BLESS=1 cargo test --release readme"
         );
     }

@@ -20,12 +20,7 @@ fn default_cutoff_changes_no_pixel_by_more_than_one_level() {
         let (fixed, fixed_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
         scene.settings.cutoff = RenderSettings::DEFAULT_CUTOFF;
         let (adaptive, adaptive_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
-        let worst = to_rgb8(&fixed)
-            .iter()
-            .zip(to_rgb8(&adaptive))
-            .map(|(&a, b)| a.abs_diff(b))
-            .max()
-            .unwrap();
+        let worst = common::worst_difference(&to_rgb8(&fixed), &to_rgb8(&adaptive));
         println!(
             "{name}: fixed depth 32 traces {} rays, cutoff {} traces {} ({:.1}%); worst 8-bit difference {worst}",
             fixed_rays.total(),

@@ -535,12 +535,7 @@ fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
         s.settings.cutoff = cutoff;
         let (adaptive, rays) = render_counting(&s, &ProgressBar::hidden()).unwrap();
         let adaptive8 = to_rgb8(&adaptive);
-        let worst = fixed8
-            .iter()
-            .zip(&adaptive8)
-            .map(|(a, b)| a.abs_diff(*b))
-            .max()
-            .unwrap();
+        let worst = common::worst_difference(&fixed8, &adaptive8);
         let differ = fixed8
             .chunks(3)
             .zip(adaptive8.chunks(3))
