@@ -11,6 +11,7 @@ use serde_json::Value;
 
 use super::app::{App, Before, Item};
 use super::preview::Worker;
+use crate::io::output::PendingFile;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
 
@@ -109,27 +110,17 @@ fn parse_value(raw: &str) -> Value {
 }
 
 /// Writes the edited scene to `path`, which must not exist yet (an edit never
-/// replaces a file, least of all the scene it came from); atomically.
+/// replaces a file, least of all the scene it came from); atomically, and
+/// removed if a signal ends the inspector while it is written.
 pub fn write(json: &Value, path: &Path) -> Result<(), String> {
-    let at = path.display();
     if path.exists() {
-        return Err(format!("{at} exists: give a new file name"));
+        return Err(format!("{} exists: give a new file name", path.display()));
     }
-    let dir = path
-        .parent()
-        .filter(|p| !p.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
     let mut text = serde_json::to_string_pretty(json).map_err(|e| e.to_string())?;
     text.push('\n');
-    let tmp = tempfile::Builder::new()
-        .prefix(".raytree-")
-        .suffix(".part")
-        .tempfile_in(dir)
-        .map_err(|e| format!("{at}: {e}"))?;
-    std::fs::write(tmp.path(), text).map_err(|e| format!("{at}: {e}"))?;
-    tmp.persist_noclobber(path)
-        .map_err(|e| format!("{at}: {}", e.error))?;
-    Ok(())
+    PendingFile::create(path)
+        .and_then(|file| file.commit_new(text.as_bytes()))
+        .map_err(|e| e.to_string())
 }
 
 impl App {

@@ -87,7 +87,17 @@ impl PendingFile {
 
     /// Writes `bytes` and renames the file into place, keeping the permissions
     /// of the file it replaces (a new file gets `rw-r--r--`).
-    pub fn commit(mut self, bytes: &[u8]) -> Result<()> {
+    pub fn commit(self, bytes: &[u8]) -> Result<()> {
+        self.finish(bytes, true)
+    }
+
+    /// As [`commit`](Self::commit), but fails rather than replace a file that
+    /// appeared at the target meanwhile: for outputs that must be new.
+    pub fn commit_new(self, bytes: &[u8]) -> Result<()> {
+        self.finish(bytes, false)
+    }
+
+    fn finish(mut self, bytes: &[u8], replace: bool) -> Result<()> {
         let Some(mut temp) = self.temp.take() else {
             return Ok(());
         };
@@ -109,7 +119,11 @@ impl PendingFile {
         let mut list = pending();
         let path = temp.path().to_owned();
         list.retain(|p| *p != path);
-        temp.persist(target).map_err(|e| fail(e.error))?;
+        if replace {
+            temp.persist(target).map_err(|e| fail(e.error))?;
+        } else {
+            temp.persist_noclobber(target).map_err(|e| fail(e.error))?;
+        }
         Ok(())
     }
 }
@@ -189,6 +203,24 @@ mod tests {
         let temp = b.temp_path().to_owned();
         drop(b);
         assert!(!listed(&temp) && !temp.exists());
+    }
+
+    #[test]
+    fn commit_new_never_replaces_a_file_that_appeared_meanwhile() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("edit.json");
+        let file = PendingFile::create(&target).unwrap();
+        let temp = file.temp_path().to_owned();
+        std::fs::write(&target, "theirs").unwrap();
+        assert!(file.commit_new(b"ours").is_err());
+        assert_eq!(std::fs::read(&target).unwrap(), b"theirs");
+        assert!(!temp.exists(), "the temporary file is cleaned up");
+        let fresh = dir.path().join("fresh.json");
+        PendingFile::create(&fresh)
+            .unwrap()
+            .commit_new(b"ours")
+            .unwrap();
+        assert_eq!(std::fs::read(&fresh).unwrap(), b"ours");
     }
 
     #[cfg(unix)]
