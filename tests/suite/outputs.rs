@@ -208,6 +208,24 @@ fn small_promises_hold() {
         e,
         "error: unexpected argument '--bogus' found (see raytree render --help)"
     );
+    // The one line keeps what clap's message names: the missing arguments,
+    // the possible values and a near miss.
+    let e = refused_with(2, "usage-missing", &[], &["trace"]);
+    assert!(
+        e.starts_with(
+            "error: the following required arguments were not provided: <--pixel <X,Y>|--ray"
+        ),
+        "{e}"
+    );
+    let e = refused_with(2, "usage-values", &[], &["render", "--weights", "frenel"]);
+    assert_eq!(
+        e,
+        "error: invalid value 'frenel' for '--weights <WEIGHTS>' [possible values: constant, \
+         schlick, fresnel]; tip: a similar value exists: 'fresnel' (see raytree render --help)"
+    );
+    // A negative number is a value, refused for what it is.
+    let e = refused_with(1, "usage-negative", &[], &["forward", "--pupil", "-1"]);
+    assert_eq!(e, "error: --pupil: must be a number > 0, got -1");
     let e = refused_with(
         2,
         "usage-generate",

@@ -20,7 +20,7 @@ mod trace;
 
 use std::process::ExitCode;
 
-use clap::{CommandFactory, Parser, Subcommand};
+use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use raytree::scene::strict::printable;
 
 /// A Whitted-style ray tracer that shows its work.
@@ -58,7 +58,10 @@ enum Command {
 }
 
 fn main() -> ExitCode {
-    let cli = match Cli::try_parse() {
+    let cli = match grammar()
+        .try_get_matches()
+        .and_then(|m| Cli::from_arg_matches(&m))
+    {
         Ok(cli) => cli,
         Err(e) => return usage_error(&e),
     };
@@ -85,6 +88,23 @@ fn main() -> ExitCode {
     }
 }
 
+/// The command line's grammar, where an option's value may be a negative
+/// number (`--pupil -1` is then refused for its value, not taken for a flag).
+fn grammar() -> clap::Command {
+    fn negative_numbers(command: clap::Command) -> clap::Command {
+        command
+            .mut_args(|a| {
+                if a.get_action().takes_values() {
+                    a.allow_negative_numbers(true)
+                } else {
+                    a
+                }
+            })
+            .mut_subcommands(negative_numbers)
+    }
+    negative_numbers(Cli::command())
+}
+
 /// A malformed command line: clap's message as one line, with where to look,
 /// and exit code 2. Help and the version print as clap prints them.
 fn usage_error(e: &clap::Error) -> ExitCode {
@@ -99,11 +119,30 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
     }
     let text = e.render().to_string();
-    let first = text.lines().next().unwrap_or_default();
-    let first = first.strip_prefix("error: ").unwrap_or(first);
+    // clap's message runs until its usage: the problem, then what it names
+    // (missing arguments, possible values) and a tip, each on a line of its own.
+    let mut message = String::new();
+    for line in text
+        .lines()
+        .take_while(|l| !l.starts_with("Usage:") && !l.starts_with("For more information"))
+        .map(str::trim)
+        // The tip on passing a flag as a value after `--` never applies here.
+        .filter(|l| !l.is_empty() && !l.starts_with("tip: to pass"))
+    {
+        let line = line.strip_prefix("error: ").unwrap_or(line);
+        if !message.is_empty() {
+            let joint = if message.ends_with(':') || line.starts_with('[') {
+                " "
+            } else {
+                "; "
+            };
+            message.push_str(joint);
+        }
+        message.push_str(line);
+    }
     // The subcommands named first on the command line, e.g. `raytree generate grid`.
     let mut command = vec!["raytree".to_owned()];
-    let mut level = Cli::command();
+    let mut level = grammar();
     for arg in std::env::args().skip(1) {
         let Some(sub) = level.find_subcommand(&arg).cloned() else {
             break;
@@ -114,7 +153,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
     let command = command.join(" ");
     output::note(&format!(
         "error: {} (see {command} --help)",
-        printable(first)
+        printable(&message)
     ));
     ExitCode::from(2)
 }
