@@ -50,13 +50,13 @@ overrides! {
     /// Image height in pixels.
     #[arg(long, value_name = "H")]
     height: u32,
-    /// Samples per pixel, a square number (1, 4, 9, 16, …) for an n×n stratified grid.
+    /// Samples per pixel, a square number (1, 4, 9, 16, …) for an n×n stratified grid [default: 1].
     #[arg(long, value_name = "N")]
     spp: u32,
-    /// Deepest ray traced: 1 traces only primary rays (default 8).
+    /// Deepest ray traced: 1 traces only primary rays [default: 8].
     #[arg(long, value_name = "D")]
     max_depth: u32,
-    /// Skip reflected and refracted rays whose weight (product of coefficients) is below this; 0 turns it off.
+    /// Skip reflected and refracted rays whose weight (product of coefficients) is below this; 0 turns it off [default: 0.0009765625, 1/1024].
     #[arg(long, value_name = "W")]
     cutoff: f64,
     /// Ray–sphere intersection: the lecture's quadratic as written, or the stable form [default: stable].
@@ -68,7 +68,7 @@ overrides! {
     /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
     #[arg(long, value_enum)]
     weights: Weights,
-    /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980), with an optional threshold [default: grid].
+    /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980; ignores --spp) with an optional threshold in linear RGB (adaptive alone: 0.05) [default: grid].
     #[arg(long, value_name = "grid|adaptive[=T]")]
     aa: Antialiasing,
     /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].
@@ -131,5 +131,31 @@ mod tests {
             }
         );
         assert_eq!(Overrides::default().apply(&unusual()), unusual());
+    }
+
+    /// The defaults `--help` states are the settings' own (the scene's
+    /// `render` block may set others; the help says what raytree falls back to).
+    #[test]
+    fn the_help_states_the_settings_defaults() {
+        use clap::{Args, Command};
+        let command = Overrides::augment_args(Command::new("render"));
+        let defaults = serde_json::to_value(RenderSettings::default()).unwrap();
+        let mut stated = 0;
+        for arg in command.get_arguments() {
+            let help = arg.get_help().map(|h| h.to_string()).unwrap_or_default();
+            let Some((_, rest)) = help.split_once("[default: ") else {
+                continue;
+            };
+            let value = rest.split([',', ']']).next().unwrap();
+            let field = arg.get_id().as_str();
+            let want = match &defaults[field] {
+                serde_json::Value::String(s) => s.clone(),
+                serde_json::Value::Object(o) => o.keys().next().unwrap().clone(),
+                v => v.to_string(),
+            };
+            assert_eq!(value, want, "--{field}'s help");
+            stated += 1;
+        }
+        assert!(stated >= 9, "only {stated} flags state their default");
     }
 }

@@ -54,6 +54,17 @@ impl RenderSettings {
         }
     }
 
+    /// How pixels are sampled, for a summary line: `4 spp`, or the adaptive
+    /// subdivision (which takes as many samples as a pixel needs, ignoring `spp`).
+    pub fn sampling(&self) -> String {
+        match self.aa {
+            Antialiasing::Grid => format!("{} spp", self.spp),
+            Antialiasing::Adaptive { threshold, levels } => {
+                format!("adaptive sampling, threshold {threshold}, up to {levels} levels")
+            }
+        }
+    }
+
     /// `n` of the `n × n` sampling grid.
     pub fn grid(&self) -> u32 {
         self.spp.isqrt()

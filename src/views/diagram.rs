@@ -21,6 +21,7 @@ use crate::views::labels::{self, Placed, PxRect};
 use crate::views::numbers::num;
 use crate::views::pen::{Pen, palette};
 use crate::views::projection::Outline;
+use crate::views::text;
 
 /// Sizes scaled with the figure, so 600×400 reads as well as 1200×800.
 #[derive(Clone, Copy, Debug)]
@@ -144,13 +145,9 @@ pub fn draw_with_labels(
 fn caption(trace: &TraceDocument, lay: &Layout, options: &Options) -> String {
     let sample = &trace.samples[options.sample];
     let what = match (&trace.pixel, &trace.ray) {
-        (Some(p), _) if trace.samples.len() > 1 || trace.settings.spp > 1 => format!(
-            "pixel {},{}, sample {} of {}",
-            p.x,
-            p.y,
-            sample.index + 1,
-            trace.settings.spp
-        ),
+        (Some(p), _) if let Some(which) = text::sample_name(trace, options.sample) => {
+            format!("pixel {},{}, {which}", p.x, p.y)
+        }
         (Some(p), _) => format!("pixel {},{}", p.x, p.y),
         _ => "one ray".to_owned(),
     };

@@ -8,6 +8,7 @@
 use std::fmt::Write;
 
 use crate::geometry::hit::TestCounts;
+use crate::methods::Antialiasing;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{
     Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, SumRecord,
@@ -28,11 +29,11 @@ pub fn format(trace: &TraceDocument, numbered: bool) -> String {
     };
     let _ = writeln!(
         out,
-        "{what} of {} ({}×{}, {} spp, max depth {}, cutoff {})",
+        "{what} of {} ({}×{}, {}, max depth {}, cutoff {})",
         trace.scene.file,
         s.width,
         s.height,
-        s.spp,
+        s.sampling(),
         s.max_depth,
         num(s.cutoff)
     );
@@ -44,17 +45,11 @@ pub fn format(trace: &TraceDocument, numbered: bool) -> String {
     );
     for (k, sample) in trace.samples.iter().enumerate() {
         let _ = writeln!(out);
-        if trace.pixel.is_some() && s.spp > 1 {
+        if let Some(which) = sample_name(trace, k) {
             let at = sample.position.map_or(String::new(), |[x, y]| {
                 format!(" through ({}, {})", num(x), num(y))
             });
-            let _ = writeln!(
-                out,
-                "sample {} of {}{at}: color {}",
-                sample.index + 1,
-                s.spp,
-                color(sample.color)
-            );
+            let _ = writeln!(out, "{which}{at}: color {}", color(sample.color));
         }
         for (n, step) in trace.steps(k).iter().enumerate() {
             let depth = sample.tree.nodes[step.node].depth as usize;
@@ -91,11 +86,7 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
     match step.kind {
         StepKind::Camera => {
             let s = &trace.samples[sample];
-            let which = if trace.settings.spp > 1 || trace.samples.len() > 1 {
-                format!("sample {} of {}, ", s.index + 1, trace.settings.spp)
-            } else {
-                String::new()
-            };
+            let which = sample_name(trace, sample).map_or(String::new(), |w| w + ", ");
             s.camera.as_ref().map_or_else(
                 || one(String::new()),
                 |c| explain::camera(&trace.camera, c, &which),
@@ -242,5 +233,23 @@ pub fn kind_name(kind: RayKind) -> &'static str {
         RayKind::Reflected => "reflected",
         RayKind::Refracted => "refracted",
         RayKind::Shadow => "shadow",
+    }
+}
+
+/// "sample 3 of 4" for a pixel sampled more than once: of `spp` on the grid,
+/// of as many as the adaptive subdivision took (when all are recorded).
+pub fn sample_name(trace: &TraceDocument, sample: usize) -> Option<String> {
+    let s = &trace.settings;
+    let index = trace.samples[sample].index + 1;
+    let adaptive = matches!(s.aa, Antialiasing::Adaptive { .. });
+    match trace.pixel {
+        None => None,
+        Some(_) if !adaptive && s.spp > 1 => Some(format!("sample {index} of {}", s.spp)),
+        Some(_) if adaptive && trace.samples.len() > 1 => Some(format!(
+            "sample {index} of {} (adaptive)",
+            trace.samples.len()
+        )),
+        Some(_) if adaptive => Some(format!("sample {index} (adaptive)")),
+        Some(_) => None,
     }
 }

@@ -32,8 +32,12 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
         .map_err(|_| anyhow!("not enough memory for a {}×{} image", s.width, s.height))?;
     progress.finish_and_clear();
     let caption = format!(
-        "{} · {}×{} · {} spp · max depth {}",
-        source.file, s.width, s.height, s.spp, s.max_depth
+        "{} · {}×{} · {} · max depth {}",
+        source.file,
+        s.width,
+        s.height,
+        s.sampling(),
+        s.max_depth
     );
     let figure = if args.no_key {
         aov_figure::bare(&image)

@@ -44,7 +44,7 @@ pub struct Args {
     /// Which labels to write.
     #[arg(long, value_enum, default_value = "all")]
     labels: Labels,
-    /// Tick marks along the rays at whole steps of t (the parametric line S + t·c).
+    /// Tick marks at round steps of t along each ray that hits (1, 2 or 5 times a power of ten, about five to the hit, on the parametric line S + t·c), and t = 1 on a primary ray's image plane (most of a primary ray lies outside the frame of --fit hits: add --fit tree).
     #[arg(long)]
     ticks: bool,
     /// Number the rays and hits as `raytree trace --steps` numbers their steps.

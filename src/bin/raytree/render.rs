@@ -78,11 +78,11 @@ pub fn run(args: &Args) -> Result<()> {
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
         output::note(&format!(
-            "wrote {} ({}×{}, {} spp, max depth {}) in {seconds:.3} s on {}",
+            "wrote {} ({}×{}, {}, max depth {}) in {seconds:.3} s on {}",
             path.display(),
             s.width,
             s.height,
-            s.spp,
+            s.sampling(),
             s.max_depth,
             threads_word(threads)
         ));

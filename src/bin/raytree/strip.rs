@@ -114,11 +114,11 @@ pub fn run(args: &Args) -> Result<()> {
     progress.finish_and_clear();
     let s = &scenes[0].settings;
     let title = format!(
-        "{}: {path} from {} to {} · {width}×{height} · {} spp{} · under each frame: the share of pixels that changed from the frame before by more than 3/255 (as raytree diff counts)",
+        "{}: {path} from {} to {} · {width}×{height} · {}{} · under each frame: the share of pixels that changed from the frame before by more than 3/255 (as raytree diff counts)",
         source.file,
         num(values[0]),
         num(values[values.len() - 1]),
-        s.spp,
+        s.sampling(),
         if path.ends_with("max_depth") {
             String::new()
         } else {
