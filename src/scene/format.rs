@@ -76,7 +76,16 @@ pub(super) struct MaterialFile {
 #[serde(deny_unknown_fields)]
 pub(super) struct CheckerFile {
     pub(super) colors: [DVec3; 2],
-    pub(super) size: Option<f64>,
+    pub(super) size: Option<CellSize>,
+}
+
+/// A checker cell's side: one length (cubes), or one per axis, for a pattern
+/// whose cells are longer one way (lesson 14's floor is 7 by 9).
+#[derive(Deserialize)]
+#[serde(untagged, expecting = "expected a length, or three lengths [x, y, z]")]
+pub(super) enum CellSize {
+    Cube(f64),
+    Sides(DVec3),
 }
 
 #[derive(Deserialize)]

@@ -28,8 +28,8 @@ use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
 use crate::scene::format::{
-    BoxFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile, SphereFile,
-    TransformStep, TriangleFile,
+    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile,
+    SphereFile, TransformStep, TriangleFile,
 };
 use crate::scene::light::PointLight;
 use crate::scene::limits;
@@ -281,8 +281,12 @@ impl Builder<'_> {
             }
             (Some(c), None) => Pattern::Solid(self.color(at("color"), *c)?),
             (None, Some(ch)) => {
-                let size =
-                    self.check(at("checker.size"), ch.size.unwrap_or(1.0), limits::length)?;
+                let side = |s| self.check(at("checker.size"), s, limits::length);
+                let size = match ch.size {
+                    None => DVec3::ONE,
+                    Some(CellSize::Cube(s)) => DVec3::splat(side(s)?),
+                    Some(CellSize::Sides(s)) => DVec3::new(side(s.x)?, side(s.y)?, side(s.z)?),
+                };
                 Pattern::Checker {
                     colors: [
                         self.color(at("checker.colors[0]"), ch.colors[0])?,

@@ -8,12 +8,12 @@ use glam::DVec3;
 pub enum Pattern {
     /// One color.
     Solid(DVec3),
-    /// Alternating cubes of side `size`, in object space (squares on a plane).
+    /// Alternating boxes of sides `size`, in object space (rectangles on a plane).
     Checker {
         /// The two colors; `colors[0]` holds the cell at the origin.
         colors: [DVec3; 2],
-        /// The side of a cell.
-        size: f64,
+        /// A cell's side along each axis (all three equal for cubes).
+        size: DVec3,
     },
 }
 
@@ -78,7 +78,7 @@ mod tests {
     fn checker_alternates_and_handles_negative_cells() {
         let c = Pattern::Checker {
             colors: [DVec3::X, DVec3::Y],
-            size: 2.0,
+            size: DVec3::splat(2.0),
         };
         assert_eq!(c.color_at(DVec3::new(0.5, 0.0, 0.5)), DVec3::X);
         assert_eq!(c.color_at(DVec3::new(2.5, 0.0, 0.5)), DVec3::Y);
@@ -89,5 +89,18 @@ mod tests {
         assert_eq!(c.color_at(DVec3::new(-0.0, 0.0, 0.0)), DVec3::X);
         assert_eq!(c.color_at(DVec3::new(1e300, 0.0, 0.0)), DVec3::X);
         assert_eq!(c.color_at(DVec3::NAN), DVec3::Y);
+    }
+
+    #[test]
+    fn checker_cells_may_be_longer_along_one_axis() {
+        // Cells 7 wide in x and 9 deep in z: x = 8 is in the second cell, z = 8 still in the first.
+        let c = Pattern::Checker {
+            colors: [DVec3::X, DVec3::Y],
+            size: DVec3::new(7.0, 1.0, 9.0),
+        };
+        assert_eq!(c.color_at(DVec3::new(6.5, 0.0, 8.5)), DVec3::X);
+        assert_eq!(c.color_at(DVec3::new(7.5, 0.0, 8.5)), DVec3::Y);
+        assert_eq!(c.color_at(DVec3::new(6.5, 0.0, 9.5)), DVec3::Y);
+        assert_eq!(c.color_at(DVec3::new(7.5, 0.0, -0.5)), DVec3::X);
     }
 }

@@ -190,6 +190,11 @@ fn each_validation_error_names_its_field() {
             "materials.m.checker.size: must be from 1e-9 to 1e9, got 0",
         ),
         (
+            "checker-sides",
+            r#"{"materials": {"m": {"checker": {"colors": [[0,0,0],[1,1,1]], "size": [7, 0, 9]}}}}"#,
+            "materials.m.checker.size: must be from 1e-9 to 1e9, got 0",
+        ),
+        (
             "eye-is-target",
             r#"{"camera": {"eye": [1, 2, 3], "look_at": [1, 2, 3]}}"#,
             "camera.look_at: must differ from camera.eye",
@@ -217,6 +222,19 @@ fn each_validation_error_names_its_field() {
             "{name}: {e}"
         );
     }
+    // A checker size of the wrong shape fails while parsing: at its line and column.
+    let e = fails(
+        "checker-two-sides",
+        Some(r#"{"materials": {"m": {"checker": {"colors": [[0,0,0],[1,1,1]], "size": [7, 9]}}}}"#),
+        &[],
+    );
+    assert!(
+        e.starts_with("error: bad.json:1:")
+            && e.contains(
+                ": materials.m.checker.size: expected a length, or three lengths [x, y, z]"
+            ),
+        "{e}"
+    );
 }
 
 #[test]
