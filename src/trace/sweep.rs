@@ -16,7 +16,7 @@ use crate::io::image::{Image, to_rgb8};
 use crate::methods::{Antialiasing, Offset, SphereMethod};
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
-use crate::trace::render::render_with_tracer;
+use crate::trace::render::{render_counting_with, render_with_tracer};
 use crate::trace::tracer::Tracer;
 
 /// One point of the sweep.
@@ -28,12 +28,31 @@ pub struct Point {
     pub settings: RenderSettings,
     /// Median wall time of the renders, in seconds.
     pub seconds: f64,
+    /// Intersection tests (bounding boxes and primitives) per pixel, when the
+    /// sweep counted them ([`Cost::Tests`]).
+    pub tests: Option<f64>,
     /// Root-mean-square error against the reference, linear RGB, per channel.
     pub rmse: f64,
     /// Share of pixels whose 8-bit value differs from the reference's by more than 1 in some channel.
     pub off: f64,
     /// Whether these are the default settings.
     pub default: bool,
+}
+
+/// What a sweep measures as the cost of a setting.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
+pub enum Cost {
+    /// Wall time, the median of several runs: what a user waits for, but it
+    /// moves from run to run on a busy machine.
+    #[default]
+    Time,
+    /// Intersection tests per pixel (bounding boxes and primitives), counted
+    /// on one thread: exact, the same on every run and machine; most of the
+    /// time, though shading is not counted.
+    // One thread: each thread remembers its own recent shadow blockers, so on
+    // several the counts would depend on scheduling. Exact counts are what
+    // figures that must not change from run to run (the book's) need.
+    Tests,
 }
 
 /// The settings swept: the defaults, then one change at a time.
@@ -126,52 +145,77 @@ pub fn reference_settings(base: &RenderSettings) -> RenderSettings {
     }
 }
 
-/// Renders every setting of the sweep `runs` times and measures it. The scene's
+/// Renders every setting of the sweep and measures it: `runs` times each for
+/// [`Cost::Time`], once, counting its tests, for [`Cost::Tests`]. The scene's
 /// hierarchy is built once and shared by every setting (none of them changes
 /// the objects), so only tracing is timed.
-pub fn measure(scene: &Scene, runs: usize, progress: &ProgressBar) -> Vec<Point> {
+pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &ProgressBar) -> Vec<Point> {
     let points = sweep(&scene.settings);
     progress.set_length(points.len() as u64 + 1);
     let base = Tracer::new(scene);
+    let pixels = f64::from(scene.settings.width) * f64::from(scene.settings.height);
+    let one_thread = (cost == Cost::Tests).then(|| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .expect("one worker thread can be started")
+    });
     let render = |settings: RenderSettings| {
         let mut s = scene.clone();
         s.settings = settings;
+        let tracer = base.with_settings(&s);
         let started = Instant::now();
-        let image = render_with_tracer(&base.with_settings(&s), &ProgressBar::hidden())
-            .expect("the size was validated");
-        (image, started.elapsed().as_secs_f64())
+        let (image, tests) = match cost {
+            Cost::Time => (render_with_tracer(&tracer, &ProgressBar::hidden()), None),
+            Cost::Tests => match one_thread
+                .as_ref()
+                .map(|pool| pool.install(|| render_counting_with(&tracer, &ProgressBar::hidden())))
+                .expect("built for counting")
+            {
+                Ok((image, counts)) => (Ok(image), Some(counts.tests() as f64 / pixels)),
+                Err(e) => (Err(e), None),
+            },
+        };
+        let image = image.expect("the size was validated");
+        (image, started.elapsed().as_secs_f64(), tests)
     };
-    let (reference, _) = render(reference_settings(&scene.settings));
+    let (reference, _, _) = render(reference_settings(&scene.settings));
     progress.inc(1);
     let reference8 = to_rgb8(&reference);
+    let runs = if cost == Cost::Tests { 1 } else { runs.max(1) };
     // Runs alternate over the settings, so a machine that slows down or speeds up
     // during the sweep shifts every setting alike.
     let mut times = vec![Vec::with_capacity(runs); points.len()];
     let mut images = vec![None; points.len()];
-    for run in 0..runs.max(1) {
+    let mut tests = vec![None; points.len()];
+    for run in 0..runs {
         for (k, (_, settings, _)) in points.iter().enumerate() {
-            let (image, seconds) = render(*settings);
+            let (image, seconds, counted) = render(*settings);
             times[k].push(seconds);
             images[k] = Some(image);
+            tests[k] = counted;
         }
-        progress.set_position(1 + (points.len() * (run + 1) / runs.max(1)) as u64);
+        progress.set_position(1 + (points.len() * (run + 1) / runs) as u64);
     }
     points
         .into_iter()
         .zip(times)
-        .zip(images)
-        .map(|(((label, settings, default), mut times), image)| {
-            times.sort_by(f64::total_cmp);
-            let image = image.expect("at least one run");
-            Point {
-                label,
-                settings,
-                seconds: times[times.len() / 2],
-                rmse: rmse(&image, &reference),
-                off: share_off(&to_rgb8(&image), &reference8),
-                default,
-            }
-        })
+        .zip(images.into_iter().zip(tests))
+        .map(
+            |(((label, settings, default), mut times), (image, tests))| {
+                times.sort_by(f64::total_cmp);
+                let image = image.expect("at least one run");
+                Point {
+                    label,
+                    settings,
+                    seconds: times[times.len() / 2],
+                    tests,
+                    rmse: rmse(&image, &reference),
+                    off: share_off(&to_rgb8(&image), &reference8),
+                    default,
+                }
+            },
+        )
         .collect()
 }
 

@@ -29,7 +29,7 @@ pub fn pareto(points: &[(f64, f64)]) -> Vec<usize> {
 /// The CSV of every figure, one row per point.
 pub fn csv(points: &[Point]) -> String {
     let mut out = String::from(
-        "label,default,spp,max_depth,cutoff,sphere,offset,median_seconds,rmse_linear,share_off_by_more_than_1_in_8bit\n",
+        "label,default,spp,max_depth,cutoff,sphere,offset,median_seconds,rmse_linear,share_off_by_more_than_1_in_8bit,tests_per_pixel\n",
     );
     for p in points {
         let s = &p.settings;
@@ -41,15 +41,32 @@ pub fn csv(points: &[Point]) -> String {
         // Labels may hold commas: quoted, with quotes doubled (RFC 4180).
         let label = format!("\"{}\"", p.label.replace('"', "\"\""));
         let sphere = format!("{:?}", s.sphere).to_lowercase();
+        let tests = p.tests.map_or(String::new(), |t| t.to_string());
         out.push_str(&format!(
-            "{label},{},{},{},{},{sphere},{offset},{},{},{}\n",
+            "{label},{},{},{},{},{sphere},{offset},{},{},{},{tests}\n",
             p.default, s.spp, s.max_depth, s.cutoff, p.seconds, p.rmse, p.off
         ));
     }
     out
 }
 
-/// The chart: time (x, log) against RMSE (y, log).
+/// Whether the chart's cost axis is counted tests (every point has them) or
+/// wall time.
+fn counted(points: &[Point]) -> bool {
+    !points.is_empty() && points.iter().all(|p| p.tests.is_some())
+}
+
+/// A point's cost: its tests per pixel when counted, else its time.
+fn cost(p: &Point, counted: bool) -> f64 {
+    if counted {
+        p.tests.unwrap_or(f64::NAN)
+    } else {
+        p.seconds
+    }
+}
+
+/// The chart: cost (x, log: time, or tests per pixel when counted) against
+/// RMSE (y, log).
 pub fn draw(points: &[Point], title: &str, width: u32, height: u32) -> Option<Figure> {
     draw_with_labels(points, title, width, height).map(|(fig, _)| fig)
 }
@@ -76,22 +93,29 @@ pub fn draw_with_labels(
         hi + span * DVec2::new(0.08, 0.1),
         0.0,
     );
-    draw_grid(&mut fig);
+    let counted = counted(points);
+    draw_grid(&mut fig, counted);
     let front = pareto(
         &points
             .iter()
-            .map(|p| (p.seconds, p.rmse))
+            .map(|p| (cost(p, counted), p.rmse))
             .collect::<Vec<_>>(),
     );
     for w in front.windows(2) {
         fig.line(xy[w[0]], xy[w[1]], Pen::dashed(palette::REFLECTED, 2.0));
     }
-    let mut blocked = draw_axis_titles(&mut fig, "median of the runs");
-    blocked.push(draw_legend(&mut fig, &xy));
+    let x_title = if counted {
+        "intersection tests per pixel (boxes and primitives, counted), log scale →"
+    } else {
+        "wall time (median of the runs), log scale →"
+    };
+    let mut blocked = draw_axis_titles(&mut fig, x_title);
+    blocked.push(draw_legend(&mut fig, &xy, counted));
     let placed = draw_points(&mut fig, points, &xy, &front, &blocked);
     fig.frame_border();
     let caption = format!(
-        "{title} · each setting's time against its error; the Pareto front joins those nothing beats on both"
+        "{title} · each setting's {} against its error; the Pareto front joins those nothing beats on both",
+        if counted { "cost" } else { "time" }
     );
     fig.caption(&Figure::wrap(&caption, 15.0, fig.frame().width()), 15.0);
     Some((fig, placed))
@@ -100,6 +124,7 @@ pub fn draw_with_labels(
 /// Each point at (log₁₀ seconds, log₁₀ RMSE); an RMSE of 0 sits at half the
 /// smallest nonzero one, so it still has a place on a log axis.
 fn log_positions(points: &[Point]) -> Vec<DVec2> {
+    let counted = counted(points);
     let floor = points
         .iter()
         .map(|p| p.rmse)
@@ -109,12 +134,18 @@ fn log_positions(points: &[Point]) -> Vec<DVec2> {
         / 2.0;
     points
         .iter()
-        .map(|p| DVec2::new(p.seconds.max(1e-6).log10(), p.rmse.max(floor).log10()))
+        .map(|p| {
+            DVec2::new(
+                cost(p, counted).max(1e-6).log10(),
+                p.rmse.max(floor).log10(),
+            )
+        })
         .collect()
 }
 
-/// Grid lines at every power of ten, with their values.
-fn draw_grid(fig: &mut Figure) {
+/// Grid lines at every power of ten, with their values (seconds, or tests
+/// when `counted`).
+fn draw_grid(fig: &mut Figure, counted: bool) {
     let (vlo, vhi) = fig.visible();
     let grid = Pen::solid([225, 225, 225], 1.0);
     for k in (vlo.x.ceil() as i32)..=(vhi.x.floor() as i32) {
@@ -123,7 +154,11 @@ fn draw_grid(fig: &mut Figure) {
         fig.label(
             DVec2::new(x, vlo.y),
             DVec2::new(0.0, -6.0),
-            &seconds_label(x),
+            &if counted {
+                tests_label(x)
+            } else {
+                seconds_label(x)
+            },
             13.0,
             palette::INK,
             Anchor::Center,
@@ -212,16 +247,15 @@ fn draw_points(
 
 /// The axis titles, along the bottom and up the left edge of the frame; the
 /// boxes they take, which the points' labels keep clear of.
-fn draw_axis_titles(fig: &mut Figure, runs_note: &str) -> Vec<PxRect> {
+fn draw_axis_titles(fig: &mut Figure, x_title: &str) -> Vec<PxRect> {
     let f = fig.frame();
     let size = 14.0;
-    let x_title = format!("wall time ({runs_note}), log scale →");
     let y_title = "↑ RMSE against the converged reference (linear RGB), log scale";
     let x_at = DVec2::new(f64::from(f.right()) - 10.0, f64::from(f.bottom()) - 26.0);
     let y_at = DVec2::new(f64::from(f.left()) + 8.0, f64::from(f.top()) + 20.0);
     let mut boxes = Vec::new();
     for (at, text, anchor) in [
-        (x_at, x_title.as_str(), Anchor::Right),
+        (x_at, x_title, Anchor::Right),
         (y_at, y_title, Anchor::Left),
     ] {
         let w = f64::from(Figure::text_width(text, size));
@@ -237,14 +271,16 @@ fn draw_axis_titles(fig: &mut Figure, runs_note: &str) -> Vec<PxRect> {
 }
 
 /// The legend, in the corner with the fewest points near it; its box.
-fn draw_legend(fig: &mut Figure, xy: &[DVec2]) -> PxRect {
+fn draw_legend(fig: &mut Figure, xy: &[DVec2], counted: bool) -> PxRect {
+    let front = if counted {
+        "Pareto front: nothing is both cheaper and more accurate"
+    } else {
+        "Pareto front: nothing is both faster and more accurate"
+    };
     let legend = [
         (Pen::solid(palette::REFRACTED, 6.0), "the defaults"),
         (Pen::solid(palette::REFLECTED, 6.0), "on the Pareto front"),
-        (
-            Pen::dashed(palette::REFLECTED, 2.0),
-            "Pareto front: nothing is both faster and more accurate",
-        ),
+        (Pen::dashed(palette::REFLECTED, 2.0), front),
         (Pen::solid(palette::PRIMARY, 6.0), "other settings"),
     ];
     let boxes = fig.legend_boxes(&legend, 13.0);
@@ -275,6 +311,24 @@ fn seconds_label(log10: f64) -> String {
     }
 }
 
+/// A power of ten of tests: `1`, `10`, `1,000`, `1e6`.
+fn tests_label(log10: f64) -> String {
+    let n = 10f64.powf(log10).round();
+    if n < 1e6 {
+        let digits = format!("{n}");
+        let mut out = String::new();
+        for (i, d) in digits.chars().enumerate() {
+            if i > 0 && (digits.len() - i) % 3 == 0 {
+                out.push(',');
+            }
+            out.push(d);
+        }
+        out
+    } else {
+        format!("1e{}", log10.round())
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -284,5 +338,13 @@ mod tests {
         // (time, error): b is dominated by a (slower and worse); d by c.
         let points = [(1.0, 0.5), (2.0, 0.6), (3.0, 0.1), (4.0, 0.2), (0.5, 0.9)];
         assert_eq!(pareto(&points), vec![4, 0, 2]);
+    }
+
+    #[test]
+    fn tests_axis_labels_read_as_counts() {
+        assert_eq!(tests_label(0.0), "1");
+        assert_eq!(tests_label(3.0), "1,000");
+        assert_eq!(tests_label(5.0), "100,000");
+        assert_eq!(tests_label(7.0), "1e7");
     }
 }

@@ -65,6 +65,65 @@ fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// `--cost tests` counts intersection tests on one thread instead of timing:
+/// two runs draw the same chart to the byte and print the same figures, so the
+/// book can show it and notice when it goes stale.
+#[test]
+fn chart_by_counted_tests_is_the_same_on_every_run() {
+    let dir = std::env::temp_dir().join(format!("raytree-chart-tests-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json");
+    let run = |name: &str| {
+        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args([
+                "chart", scene, "--width", "32", "--height", "24", "--cost", "tests", "--size",
+                "600x400", "-o",
+            ])
+            .arg(format!("{name}.png"))
+            .args(["--csv", &format!("{name}.csv")])
+            .current_dir(&dir)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let png = std::fs::read(dir.join(format!("{name}.png"))).unwrap();
+        let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
+        // The counted tests per pixel, the last column; the times are not compared.
+        let tests: Vec<f64> = csv
+            .lines()
+            .skip(1)
+            .map(|l| l.rsplit(',').next().unwrap().parse().unwrap())
+            .collect();
+        (png, tests, String::from_utf8(out.stdout).unwrap())
+    };
+    let (png_a, tests_a, stdout_a) = run("a");
+    let (png_b, tests_b, stdout_b) = run("b");
+    assert!(png_a == png_b, "the two charts differ");
+    assert_eq!(tests_a, tests_b);
+    assert_eq!(stdout_a, stdout_b);
+    let settings =
+        raytree::trace::sweep::sweep(&raytree::scene::settings::RenderSettings::default()).len();
+    assert_eq!(tests_a.len(), settings);
+    assert!(tests_a.iter().all(|&t| t > 0.0), "{tests_a:?}");
+    // The sweep's second setting, four samples a pixel, traces four rays
+    // where the default traces one: about four times the tests.
+    assert!(tests_a[1] > 3.0 * tests_a[0], "{tests_a:?}");
+    let line = |label: &str| {
+        stdout_a
+            .lines()
+            .find(|l| l.starts_with(&format!("{label}: RMSE ")))
+            .unwrap_or_else(|| panic!("no line for {label} in\n{stdout_a}"))
+            .to_owned()
+    };
+    assert!(line("default").ends_with("tests per pixel"), "{stdout_a}");
+    assert_eq!(stdout_a.lines().count(), settings);
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
 /// The points of the committed chart, read back from `docs/chart.csv`.
 fn committed_points() -> Vec<raytree::trace::sweep::Point> {
     let csv =
@@ -79,6 +138,7 @@ fn committed_points() -> Vec<raytree::trace::sweep::Point> {
                 settings: raytree::scene::settings::RenderSettings::default(),
                 default: f[0] == "true",
                 seconds: f[6].parse().unwrap(),
+                tests: None,
                 rmse: f[7].parse().unwrap(),
                 off: f[8].parse().unwrap(),
             }

@@ -4,8 +4,9 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use raytree::io::output::same_file;
-use raytree::trace::sweep;
+use raytree::trace::sweep::{self, Cost};
 use raytree::views::chart;
+use raytree::views::numbers::num;
 
 use crate::args::{SceneArgs, parse_size};
 use crate::output;
@@ -23,6 +24,11 @@ pub struct Args {
     /// Renders per setting; the chart shows the median time.
     #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100))]
     runs: u32,
+    /// What a setting costs: wall time (median of --runs), or intersection
+    /// tests per pixel, counted in one run (exact and repeatable: the same
+    /// chart on every machine).
+    #[arg(long, value_enum, default_value_t = Cost::Time)]
+    cost: Cost,
     /// Chart size in pixels.
     #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
     size: (u32, u32),
@@ -55,19 +61,36 @@ pub fn run(args: &Args) -> Result<()> {
         false,
         "{spinner} charting [{bar:40}] {pos}/{len} settings, {elapsed}",
     );
-    let points = sweep::measure(&scene, args.runs as usize, &progress);
+    let points = sweep::measure(&scene, args.runs as usize, args.cost, &progress);
     progress.finish_and_clear();
     let s = &scene.settings;
-    let title = format!(
-        "{} at {}×{}, {} runs each",
-        source.file, s.width, s.height, args.runs
-    );
+    let how = match args.cost {
+        Cost::Time => format!("{} runs each", args.runs),
+        Cost::Tests => "tests counted".to_owned(),
+    };
+    let title = format!("{} at {}×{}, {how}", source.file, s.width, s.height);
     let figure = chart::draw(&points, &title, args.size.0, args.size.1)
         .context("the chart size is too small")?;
     png.commit(&figure.png())?;
     if let Some(file) = csv {
         file.commit(chart::csv(&points).as_bytes())?;
     }
+    // The figures on standard output, one setting a line, so they can be
+    // read (and quoted) without the CSV.
+    let mut table = String::new();
+    for p in &points {
+        let cost = match p.tests {
+            Some(t) => format!("{} tests per pixel", num(t)),
+            None => format!("{} s", num(p.seconds)),
+        };
+        table.push_str(&format!(
+            "{}: RMSE {}, {}% of pixels off by more than one level, {cost}\n",
+            p.label,
+            num(p.rmse),
+            num(100.0 * p.off)
+        ));
+    }
+    output::write_stdout(table.as_bytes())?;
     output::note(&format!(
         "wrote {}{}",
         path.display(),
