@@ -41,7 +41,7 @@ pub enum TraceError {
         height: u32,
     },
     /// The sample is not one of the pixel's.
-    #[error("sample {} does not exist: a pixel has {spp} samples (1 to {spp})", index + 1)]
+    #[error("sample {} does not exist: {}", index + 1, if *spp == 1 { "a pixel has 1 sample".to_owned() } else { format!("a pixel has {spp} samples (1 to {spp})") })]
     SampleOutside {
         /// Index of the sample asked for (0 is the first).
         index: u32,

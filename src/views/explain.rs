@@ -141,7 +141,26 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
                 num(*c)
             ));
             let d = *discriminant;
-            if d < 0.0 {
+            let lecture_count = if d < 0.0 {
+                0
+            } else if d == 0.0 {
+                1
+            } else {
+                2
+            };
+            if test.method == TestMethod::StableQuadratic && test.roots.len() != lecture_count {
+                // B² − AC cancels where B² and AC are huge and nearly equal (a far
+                // sphere); the stable form computes it without the subtraction.
+                let found = match test.roots.len() {
+                    0 => "no root: the ray misses".to_owned(),
+                    1 => format!("one root: {roots}"),
+                    n => format!("{n} roots: {roots}"),
+                };
+                format!(
+                    "B² − AC = {} as the lecture writes it (nearly equal numbers subtracted: rounding decides); the stable form (Ray Tracing Gems ch. 7) finds {found}",
+                    num(d)
+                )
+            } else if d < 0.0 {
                 format!("B² − AC = {} < 0: no root, the ray misses", num(d))
             } else if d == 0.0 {
                 format!("B² − AC = 0: one root, t = −B/A: {roots}")

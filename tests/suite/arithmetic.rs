@@ -497,3 +497,31 @@ fn the_tir_pixel_reads_as_the_lecture_writes_it() {
         "{text}"
     );
 }
+
+/// Where the lecture's B² − AC cancels (lesson 13's far ball, seen grazing
+/// from 1e7 radii away), the text says so when the stable form decided
+/// otherwise, rather than print "one root" beside two.
+#[test]
+fn a_cancelled_discriminant_is_named_when_the_stable_form_disagrees() {
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/13-numerics/far.json");
+    let mut far = raytree::scene::loader::load(&path).unwrap();
+    far.settings.sphere = raytree::methods::SphereMethod::Stable;
+    let trace = record::pixel(&far, source(), 32, 32, None).unwrap();
+    let test = &trace.samples[0].tree.nodes[0].tests[0];
+    let Some(Arithmetic::Quadratic { discriminant, .. }) = test.arithmetic else {
+        panic!("a sphere test records its quadratic");
+    };
+    assert_eq!(discriminant, 0.0, "the lecture's form cancels here");
+    assert_eq!(test.roots.len(), 2, "the stable form finds two roots");
+    let text = raytree::views::text::format(&trace, false);
+    assert!(
+        text.contains("B² − AC = 0 as the lecture writes it (nearly equal numbers subtracted: rounding decides); the stable form (Ray Tracing Gems ch. 7) finds 2 roots"),
+        "{text}"
+    );
+    // With the lecture's form itself, the count follows B² − AC as before.
+    far.settings.sphere = raytree::methods::SphereMethod::Lecture;
+    let trace = record::pixel(&far, source(), 32, 32, None).unwrap();
+    let text = raytree::views::text::format(&trace, false);
+    assert!(text.contains("B² − AC = 0: one root"), "{text}");
+}

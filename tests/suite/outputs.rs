@@ -57,9 +57,18 @@ fn an_output_that_is_an_input_is_refused() {
         &[],
         &["generate", "icosphere", "--triangles", "20", "-o", "x.obj"],
     );
-    assert!(
-        e.starts_with("error: cannot write x.obj: the mesh goes beside the scene"),
-        "{e}"
+    assert_eq!(
+        e,
+        "error: cannot write x.obj: a generated scene is a .json file (its mesh goes beside it, as .obj)"
+    );
+    let e = refused(
+        "spheres-as-png",
+        &[],
+        &["generate", "spheres", "--count", "3", "-o", "x.png"],
+    );
+    assert_eq!(
+        e,
+        "error: cannot write x.png: a generated scene is a .json file"
     );
 }
 

@@ -99,6 +99,16 @@ fn bad_variations_are_one_line_errors() {
     );
     let e = fails_in("strip", "strip-width", None, &["--vary", "width=100,200"]);
     assert!(e.contains("share one size"), "{e}");
+    let e = fails_in(
+        "strip",
+        "strip-twice",
+        None,
+        &["--vary", "max_depth=1..3", "--max-depth", "3"],
+    );
+    assert_eq!(
+        e,
+        "error: --vary max_depth and --max-depth both set max_depth: give one"
+    );
     let dir = std::env::temp_dir();
     for bad in ["max_depth", "max_depth=1..40", "max_depth=a,b"] {
         let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
@@ -112,4 +122,37 @@ fn bad_variations_are_one_line_errors() {
             "{bad}: a malformed command line"
         );
     }
+}
+
+/// One side given, the frames keep the scene's shape; the default name is the
+/// field's words joined by dashes.
+#[test]
+fn one_side_given_keeps_the_shape_and_the_default_name_is_tidy() {
+    let dir = std::env::temp_dir().join(format!("raytree-strip-side-{}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args([
+            "strip",
+            "--vary",
+            "lights[0].position[1]=5,9",
+            "--width",
+            "64",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "{stderr}");
+    // The Whitted scene is 640×480: a 64-pixel frame is 48 high.
+    assert_eq!(
+        stderr.trim_end(),
+        "wrote whitted-strip-lights-0-position-1.png (2 frames of 64×48)"
+    );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        stdout.lines().next(),
+        Some("lights[0].position[1] = 5: the first frame")
+    );
+    std::fs::remove_dir_all(&dir).unwrap();
 }

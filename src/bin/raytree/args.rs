@@ -8,6 +8,7 @@ use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
 use raytree::scene::overrides::Overrides;
+use raytree::scene::settings::RenderSettings;
 use raytree::scene::source::{self, SceneSource};
 use raytree::tree::document::TraceDocument;
 use raytree::tree::record;
@@ -26,11 +27,17 @@ impl SceneArgs {
     /// what names it in a trace.
     pub fn load(&self) -> Result<(Scene, SceneSource)> {
         let (mut scene, source) = source::load(self.scene.as_deref())?;
-        scene.settings = self.overrides.apply(&scene.settings);
-        if let Err((field, message)) = scene.settings.validate() {
+        scene.settings = self.settings(&scene.settings)?;
+        Ok((scene, source))
+    }
+
+    /// `own` (a scene's settings) with the flags given put in place, checked.
+    pub fn settings(&self, own: &RenderSettings) -> Result<RenderSettings> {
+        let settings = self.overrides.apply(own);
+        if let Err((field, message)) = settings.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }
-        Ok((scene, source))
+        Ok(settings)
     }
 
     /// The files the scene was read from (the scene file and its OBJ files):

@@ -65,6 +65,7 @@ pub fn run(args: &Args) -> Result<()> {
     progress.finish_and_clear();
     let s = &scene.settings;
     let how = match args.cost {
+        Cost::Time if args.runs == 1 => "1 run each".to_owned(),
         Cost::Time => format!("{} runs each", args.runs),
         Cost::Tests => "tests counted".to_owned(),
     };

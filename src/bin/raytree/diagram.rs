@@ -130,5 +130,8 @@ pub fn run(args: &Args) -> Result<()> {
         (_, Space::World) => diagram::draw(&trace, &scene, &options),
     }
     .map_err(anyhow::Error::msg)?;
-    pending.commit(&figure.png())
+    pending.commit(&figure.png())?;
+    let (w, h) = figure.size();
+    output::note(&format!("wrote {} ({w}×{h})", path.display()));
+    Ok(())
 }

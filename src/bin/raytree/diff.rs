@@ -31,7 +31,7 @@ pub fn run(args: &Args) -> Result<()> {
         }
         None => None,
     };
-    if let Some(pending) = pending {
+    if let (Some(pending), Some(path)) = (pending, &args.output) {
         let name = |p: &Path| {
             p.file_name().map_or_else(
                 || p.display().to_string(),
@@ -54,6 +54,7 @@ pub fn run(args: &Args) -> Result<()> {
         )
         .context("the images are too large for a figure")?;
         pending.commit(&figure.png())?;
+        output::note(&format!("wrote {}", path.display()));
     }
     output::write_stdout(
         format!(

@@ -93,6 +93,20 @@ pub fn run(args: &Args) -> Result<()> {
             )
         }
     };
+    if path
+        .extension()
+        .is_none_or(|e| !e.eq_ignore_ascii_case("json"))
+    {
+        bail!(
+            "cannot write {}: a generated scene is a .json file{}",
+            path.display(),
+            if matches!(args.what, Generated::Icosphere { .. }) {
+                " (its mesh goes beside it, as .obj)"
+            } else {
+                ""
+            }
+        );
+    }
     if let Some(available) = memory::available().filter(|&a| need > a) {
         bail!(
             "making {what} needs about {} of memory, more than the {} this machine has available",

@@ -39,7 +39,10 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    let (base, source) = args.scene.load()?;
+    // The scene's own settings, for its shape; the flags are checked here and
+    // applied to each frame.
+    let (base, source) = raytree::scene::source::load(args.scene.scene.as_deref())?;
+    args.scene.settings(&base.settings)?;
     let Variation { path, values } = &args.vary;
     if ["width", "height", "render.width", "render.height"].contains(&path.as_str()) {
         bail!(
@@ -51,30 +54,38 @@ pub fn run(args: &Args) -> Result<()> {
         None => loader::WHITTED.to_owned(),
     };
     let mut overrides = args.scene.overrides;
-    if overrides.width.is_none() && overrides.height.is_none() {
-        let s = &base.settings;
-        overrides.width = Some(FRAME_WIDTH);
-        overrides.height = Some(
-            (f64::from(FRAME_WIDTH) * f64::from(s.height) / f64::from(s.width))
-                .round()
-                .max(1.0) as u32,
+    let setting = path.strip_prefix("render.").unwrap_or(path);
+    let given = serde_json::to_value(overrides).context("the settings given")?;
+    if given.get(setting).is_some() {
+        bail!(
+            "--vary {path} and --{} both set {setting}: give one",
+            setting.replace('_', "-")
         );
+    }
+    // Frames keep the scene's shape: one side given, the other follows.
+    let s = &base.settings;
+    let aspect = f64::from(s.height) / f64::from(s.width);
+    let side = |v: f64| v.round().max(1.0) as u32;
+    match (overrides.width, overrides.height) {
+        (None, None) => {
+            overrides.width = Some(FRAME_WIDTH);
+            overrides.height = Some(side(f64::from(FRAME_WIDTH) * aspect));
+        }
+        (Some(w), None) => overrides.height = Some(side(f64::from(w) * aspect)),
+        (None, Some(h)) => overrides.width = Some(side(f64::from(h) / aspect)),
+        (Some(_), Some(_)) => {}
     }
     let scenes = values
         .iter()
         .map(|&v| vary::scene_with(&text, &source.file, &overrides, path, v))
         .collect::<Result<Vec<_>, String>>()
         .map_err(|e| anyhow!(e))?;
-    let field: String = path
-        .chars()
-        .map(|c| {
-            if c.is_alphanumeric() || c == '_' {
-                c
-            } else {
-                '-'
-            }
-        })
-        .collect();
+    // lights[0].position[1] → lights-0-position-1
+    let field = path
+        .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+        .filter(|w| !w.is_empty())
+        .collect::<Vec<_>>()
+        .join("-");
     let out = output::name_or(&args.output, || {
         format!("{}-strip-{field}.png", args.scene.stem())
     });
@@ -105,7 +116,12 @@ pub fn run(args: &Args) -> Result<()> {
         };
         let label = format!("{path} = {}", num(value));
         if !args.quiet {
-            println!("{label}: {change} (from the frame before, by more than 3/255)");
+            let from = if previous.is_some() {
+                " (from the frame before, by more than 3/255)"
+            } else {
+                ""
+            };
+            println!("{label}: {change}{from}");
         }
         frames.push(Frame { rgb, label, change });
         previous = Some(now);

@@ -42,8 +42,12 @@ pub fn run(args: &Args) -> Result<()> {
     } else {
         text::format(&trace, args.steps)
     };
-    match pending {
-        Some(file) => file.commit(text.as_bytes()),
-        None => output::write_stdout(text.as_bytes()),
+    match (pending, &args.output) {
+        (Some(file), Some(path)) => {
+            file.commit(text.as_bytes())?;
+            output::note(&format!("wrote {}", path.display()));
+            Ok(())
+        }
+        _ => output::write_stdout(text.as_bytes()),
     }
 }
