@@ -244,19 +244,14 @@ fn the_command_writes_the_figure_or_the_bare_image() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let run = |extra: &[&str]| {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
-            .args([
+        let args = [
+            &[
                 "render", "--width", "80", "--height", "60", "--aov", "depth", "-q",
-            ])
-            .args(extra)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
+            ][..],
+            extra,
+        ]
+        .concat();
+        crate::cli::succeeds(&args, &dir);
     };
     run(&[]);
     let figure = image::open(dir.join("whitted-depth.png")).unwrap();

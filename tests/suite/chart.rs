@@ -2,7 +2,7 @@
 //! the figures behaving as they must (more samples come closer to the converged
 //! reference; no origin offset is worse than the robust one).
 
-use std::process::Command;
+use crate::cli::succeeds;
 
 #[test]
 fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
@@ -10,18 +10,12 @@ fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json");
-    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
-        .args([
+    succeeds(
+        &[
             "chart", scene, "--width", "48", "--height", "36", "--runs", "1", "--size", "600x400",
             "-o", "c.png", "--csv", "c.csv",
-        ])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+        ],
+        &dir,
     );
     let png = image::open(dir.join("c.png")).unwrap();
     assert_eq!((png.width(), png.height()), (600, 400));
@@ -75,23 +69,16 @@ fn chart_by_counted_tests_is_the_same_on_every_run() {
     std::fs::create_dir_all(&dir).unwrap();
     let scene = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json");
     let run = |name: &str| {
-        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
-            .args([
+        let (png, csv) = (format!("{name}.png"), format!("{name}.csv"));
+        let out = succeeds(
+            &[
                 "chart", scene, "--width", "32", "--height", "24", "--cost", "tests", "--size",
-                "600x400", "-o",
-            ])
-            .arg(format!("{name}.png"))
-            .args(["--csv", &format!("{name}.csv")])
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
+                "600x400", "-o", &png, "--csv", &csv,
+            ],
+            &dir,
         );
-        let png = std::fs::read(dir.join(format!("{name}.png"))).unwrap();
-        let csv = std::fs::read_to_string(dir.join(format!("{name}.csv"))).unwrap();
+        let png = std::fs::read(dir.join(png)).unwrap();
+        let csv = std::fs::read_to_string(dir.join(csv)).unwrap();
         // The counted tests per pixel, the last column; the times are not compared.
         let tests: Vec<f64> = csv
             .lines()

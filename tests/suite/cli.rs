@@ -12,6 +12,18 @@ pub fn raytree(args: &[&str], dir: &Path) -> Output {
         .expect("the binary runs")
 }
 
+/// Runs raytree in `dir` and expects it to succeed (its stderr otherwise).
+pub fn succeeds(args: &[&str], dir: &Path) -> Output {
+    let out = raytree(args, dir);
+    assert!(
+        out.status.success(),
+        "raytree {}: {}",
+        args.join(" "),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    out
+}
+
 pub fn scenes() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }

@@ -4,26 +4,14 @@
 
 use std::process::Command;
 
-use crate::cli::fails_in;
+use crate::cli::{fails_in, succeeds};
 
 #[test]
 fn a_strip_has_a_frame_per_value_and_the_changes_raytree_diff_measures() {
     let dir = std::env::temp_dir().join(format!("raytree-strip-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    let run = |args: &[&str]| {
-        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
-            .args(args)
-            .current_dir(&dir)
-            .output()
-            .unwrap();
-        assert!(
-            out.status.success(),
-            "{}",
-            String::from_utf8_lossy(&out.stderr)
-        );
-        String::from_utf8(out.stdout).unwrap()
-    };
+    let run = |args: &[&str]| String::from_utf8(succeeds(args, &dir).stdout).unwrap();
     let size = ["--width", "64", "--height", "48"];
     let printed = run(&[
         &["strip", "--vary", "max_depth=1..3", "-o", "s.png"][..],
