@@ -2,88 +2,124 @@
 //! typed, the screen is read back, and the exit status is checked.
 //! Skipped, saying so, when tmux is not installed (`.ci/run` installs it).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::{Duration, Instant};
 
-pub fn tmux(args: &[&str]) -> String {
+fn tmux(args: &[&str]) -> String {
     let out = Command::new("tmux").args(args).output().expect("tmux runs");
     String::from_utf8_lossy(&out.stdout).into_owned()
 }
 
-/// Waits until the captured screen satisfies `ok`, up to 20 s; returns the last capture.
-fn wait_for(session: &str, ok: impl Fn(&str) -> bool) -> String {
-    let started = Instant::now();
-    loop {
-        let screen = tmux(&["capture-pane", "-t", session, "-p"]);
-        if ok(&screen) || started.elapsed() > Duration::from_secs(20) {
-            return screen;
+/// Whether tmux is missing, in which case the test says it is skipped.
+pub fn tmux_missing() -> bool {
+    let missing = Command::new("tmux").arg("-V").output().is_err();
+    if missing {
+        println!(
+            "skipped: tmux is not installed, so the inspector cannot be driven in a real terminal here (.ci/run installs it)"
+        );
+    }
+    missing
+}
+
+/// A detached tmux session of `width` × `height` running `command` in a
+/// shell; killed when dropped, so a failing test leaves none behind.
+pub struct Session(String);
+
+impl Session {
+    pub fn start(name: &str, width: u16, height: u16, command: &str) -> Session {
+        let name = format!("raytree-{name}-{}", std::process::id());
+        let (w, h) = (width.to_string(), height.to_string());
+        let started = Command::new("tmux")
+            .args([
+                "new-session",
+                "-d",
+                "-s",
+                &name,
+                "-x",
+                &w,
+                "-y",
+                &h,
+                command,
+            ])
+            .status()
+            .unwrap();
+        assert!(started.success(), "tmux could not start a session");
+        Session(name)
+    }
+
+    pub fn send(&self, keys: &[&str]) {
+        tmux(&[&["send-keys", "-t", &self.0][..], keys].concat());
+    }
+
+    pub fn capture(&self) -> String {
+        tmux(&["capture-pane", "-t", &self.0, "-p"])
+    }
+
+    /// Waits until the captured screen satisfies `ok`, up to 20 s; returns the
+    /// last capture.
+    pub fn wait_for(&self, ok: impl Fn(&str) -> bool) -> String {
+        let started = Instant::now();
+        loop {
+            let screen = self.capture();
+            if ok(&screen) || started.elapsed() > Duration::from_secs(20) {
+                return screen;
+            }
+            std::thread::sleep(Duration::from_millis(100));
         }
+    }
+}
+
+impl Drop for Session {
+    fn drop(&mut self) {
+        let _ = Command::new("tmux")
+            .args(["kill-session", "-t", &self.0])
+            .status();
+    }
+}
+
+/// `raytree inspect ARGS` run from the repository in a `width` × `height`
+/// session, its exit status written to a file when it ends.
+fn inspector(name: &str, width: u16, height: u16, env: &str, args: &str) -> (Session, PathBuf) {
+    let exit_file =
+        std::env::temp_dir().join(format!("raytree-{name}-{}.exit", std::process::id()));
+    let _ = std::fs::remove_file(&exit_file);
+    let command = format!(
+        "cd {} && {env}{} inspect {args}; echo $? > {}; sleep 60",
+        env!("CARGO_MANIFEST_DIR"),
+        env!("CARGO_BIN_EXE_raytree"),
+        exit_file.display()
+    );
+    (Session::start(name, width, height, &command), exit_file)
+}
+
+/// Quits with `q`; the inspector's exit status and the screen after it.
+fn quit(session: &Session, exit_file: &Path) -> (String, String) {
+    session.send(&["q"]);
+    let started = Instant::now();
+    while !exit_file.exists() && started.elapsed() < Duration::from_secs(10) {
         std::thread::sleep(Duration::from_millis(100));
     }
+    let status = std::fs::read_to_string(exit_file).unwrap_or_default();
+    let _ = std::fs::remove_file(exit_file);
+    (status, session.capture())
 }
 
 #[test]
 fn inspect_in_a_real_terminal() {
-    if Command::new("tmux").arg("-V").output().is_err() {
-        println!(
-            "skipped: tmux is not installed, so the inspector cannot be driven in a real terminal here (.ci/run installs it)"
-        );
+    if tmux_missing() {
         return;
     }
-    let root = env!("CARGO_MANIFEST_DIR");
-    let session = format!("raytree-test-{}", std::process::id());
-    let exit_file: PathBuf = std::env::temp_dir().join(format!("{session}.exit"));
-    let _ = std::fs::remove_file(&exit_file);
-    let command = format!(
-        "cd {root} && {} inspect scenes/whitted.json; echo $? > {}; sleep 60",
-        env!("CARGO_BIN_EXE_raytree"),
-        exit_file.display()
+    let (session, exit_file) = inspector("test", 160, 48, "", "scenes/whitted.json");
+    let screen = session.wait_for(|s| s.contains("ray tree") && s.contains("pixel "));
+    assert!(
+        screen.contains("ray tree"),
+        "the inspector did not start:\n{screen}"
     );
-    let started = Command::new("tmux")
-        .args([
-            "new-session",
-            "-d",
-            "-s",
-            &session,
-            "-x",
-            "160",
-            "-y",
-            "48",
-            &command,
-        ])
-        .status()
-        .unwrap();
-    assert!(started.success(), "tmux could not start a session");
-    let kill = || {
-        let _ = Command::new("tmux")
-            .args(["kill-session", "-t", &session])
-            .status();
-    };
-
-    let screen = wait_for(&session, |s| s.contains("ray tree") && s.contains("pixel "));
-    if !screen.contains("ray tree") {
-        kill();
-        panic!("the inspector did not start:\n{screen}");
-    }
     // Go to a pixel on the glass sphere, as a user would: g, the coordinates, Enter.
-    tmux(&[
-        "send-keys",
-        "-t",
-        &session,
-        "g",
-        "4",
-        "1",
-        "6",
-        ",",
-        "2",
-        "0",
-        "9",
-        "Enter",
-    ]);
-    let screen = wait_for(&session, |s| {
-        s.contains("pixel 416,209") && s.contains("primary d1 'glass'")
-    });
+    session.send(&["g", "4", "1", "6", ",", "2", "0", "9", "Enter"]);
+    let screen =
+        session.wait_for(|s| s.contains("pixel 416,209") && s.contains("primary d1 'glass'"));
     assert!(
         screen.contains("refracted d2"),
         "the glass pixel's tree shows its refracted ray:\n{screen}"
@@ -93,31 +129,13 @@ fn inspect_in_a_real_terminal() {
         "deeper rays stay folded until expanded:\n{screen}"
     );
     // Into the tree, down to the refracted ray, and open it.
-    tmux(&[
-        "send-keys",
-        "-t",
-        &session,
-        "Tab",
-        "Down",
-        "Down",
-        "Down",
-        "Down",
-        "Enter",
-    ]);
-    let screen = wait_for(&session, |s| s.contains("reflected d3"));
+    session.send(&["Tab", "Down", "Down", "Down", "Down", "Enter"]);
+    let screen = session.wait_for(|s| s.contains("reflected d3"));
     assert!(
         screen.contains("reflected d3") && screen.contains("total internal reflection"),
         "the refracted ray opens:\n{screen}"
     );
-    tmux(&["send-keys", "-t", &session, "q"]);
-    let started = Instant::now();
-    while !exit_file.exists() && started.elapsed() < Duration::from_secs(10) {
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    let status = std::fs::read_to_string(&exit_file).unwrap_or_default();
-    let after = tmux(&["capture-pane", "-t", &session, "-p"]);
-    kill();
-    let _ = std::fs::remove_file(&exit_file);
+    let (status, after) = quit(&session, &exit_file);
     assert_eq!(status.trim(), "0", "raytree inspect exit status");
     assert!(
         !after.contains("ray tree"),
@@ -130,51 +148,21 @@ fn inspect_in_a_real_terminal() {
 /// the full color sum, ask what if the glass had index 1.0, quit.
 #[test]
 fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection() {
-    if Command::new("tmux").arg("-V").output().is_err() {
-        println!("skipped: tmux is not installed (.ci/run installs it)");
+    if tmux_missing() {
         return;
     }
-    let root = env!("CARGO_MANIFEST_DIR");
-    let session = format!("raytree-test-80x24-{}", std::process::id());
-    let exit_file: PathBuf = std::env::temp_dir().join(format!("{session}.exit"));
-    let _ = std::fs::remove_file(&exit_file);
-    let command = format!(
-        "cd {root} && env -u COLORTERM {} inspect scenes/whitted.json; echo $? > {}; sleep 60",
-        env!("CARGO_BIN_EXE_raytree"),
-        exit_file.display()
+    let (session, exit_file) = inspector(
+        "test-80x24",
+        80,
+        24,
+        "env -u COLORTERM ",
+        "scenes/whitted.json",
     );
-    let started = Command::new("tmux")
-        .args([
-            "new-session",
-            "-d",
-            "-s",
-            &session,
-            "-x",
-            "80",
-            "-y",
-            "24",
-            &command,
-        ])
-        .status()
-        .unwrap();
-    assert!(started.success(), "tmux could not start a session");
-    let send = |keys: &[&str]| {
-        let mut args = vec!["send-keys", "-t", session.as_str()];
-        args.extend_from_slice(keys);
-        tmux(&args);
-    };
-    let capture = || tmux(&["capture-pane", "-t", &session, "-p"]);
-    let kill = || {
-        let _ = Command::new("tmux")
-            .args(["kill-session", "-t", &session])
-            .status();
-    };
-    let fail = |what: &str, screen: &str| -> ! {
-        kill();
-        panic!("{what}:\n{screen}");
-    };
+    let send = |keys: &[&str]| session.send(keys);
+    let capture = || session.capture();
+    let fail = |what: &str, screen: &str| -> ! { panic!("{what}:\n{screen}") };
 
-    let screen = wait_for(&session, |s| s.contains("ray tree") && s.contains("pixel "));
+    let screen = session.wait_for(|s| s.contains("ray tree") && s.contains("pixel "));
     if !screen.contains("ray tree") {
         fail("the inspector did not start", &screen);
     }
@@ -191,7 +179,7 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
     }
     // One key to a total internal reflection.
     send(&["f"]);
-    let screen = wait_for(&session, |s| s.contains("found: total internal reflection"));
+    let screen = session.wait_for(|s| s.contains("found: total internal reflection"));
     if !screen.contains("found: total internal reflection") {
         fail("f finds a total internal reflection", &screen);
     }
@@ -239,19 +227,11 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
     send(&["x", "m"]);
     send(&["-l", "ior=1.0"]);
     send(&["Enter"]);
-    let screen = wait_for(&session, |s| s.contains("what if"));
+    let screen = session.wait_for(|s| s.contains("what if"));
     if !(screen.contains("what if") && screen.contains("ior=1.0") && screen.contains(" → ")) {
         fail("the edit shows before → after", &screen);
     }
-    send(&["q"]);
-    let started = Instant::now();
-    while !exit_file.exists() && started.elapsed() < Duration::from_secs(10) {
-        std::thread::sleep(Duration::from_millis(100));
-    }
-    let status = std::fs::read_to_string(&exit_file).unwrap_or_default();
-    let after = capture();
-    kill();
-    let _ = std::fs::remove_file(&exit_file);
+    let (status, after) = quit(&session, &exit_file);
     assert_eq!(status.trim(), "0", "raytree inspect exit status");
     assert!(
         !after.contains("ray tree"),

@@ -6,7 +6,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::inspector_tmux::tmux;
+use crate::inspector_tmux::{Session, tmux_missing};
 
 const SIGNALS: [(&str, i32); 3] = [("INT", 2), ("TERM", 15), ("HUP", 1)];
 
@@ -71,34 +71,19 @@ fn each_signal_during_a_render_leaves_no_file() {
 fn inspector_after(signal: &str) -> (String, String, String) {
     let dir = tempfile::tempdir().unwrap();
     let d = dir.path().display();
-    let session = format!("raytree-signal-{signal}-{}", std::process::id());
     // `exec` makes the shell's pid raytree's; the pane's shell then reports.
     let command = format!(
         "sh -c 'echo $$ > {d}/pid; exec {} inspect --width 64 --height 48'; echo $? > {d}/exit; stty -a > {d}/stty; sleep 30",
         env!("CARGO_BIN_EXE_raytree")
     );
-    let made = Command::new("tmux")
-        .args([
-            "new-session",
-            "-d",
-            "-s",
-            &session,
-            "-x",
-            "100",
-            "-y",
-            "30",
-            &command,
-        ])
-        .status()
-        .unwrap();
-    assert!(made.success());
+    let session = Session::start(&format!("signal-{signal}"), 100, 30, &command);
     let wait = |ok: &dyn Fn() -> bool| {
         let started = Instant::now();
         while !ok() && started.elapsed() < Duration::from_secs(20) {
             std::thread::sleep(Duration::from_millis(50));
         }
     };
-    wait(&|| tmux(&["capture-pane", "-t", &session, "-p"]).contains("ray tree"));
+    wait(&|| session.capture().contains("ray tree"));
     let pid: u32 = std::fs::read_to_string(dir.path().join("pid"))
         .unwrap()
         .trim()
@@ -107,18 +92,15 @@ fn inspector_after(signal: &str) -> (String, String, String) {
     kill(signal, pid);
     wait(&|| dir.path().join("stty").exists());
     std::thread::sleep(Duration::from_millis(100));
-    let screen = tmux(&["capture-pane", "-t", &session, "-p"]);
-    let _ = Command::new("tmux")
-        .args(["kill-session", "-t", &session])
-        .status();
+    let screen = session.capture();
+    drop(session);
     let read = |f: &str| std::fs::read_to_string(dir.path().join(f)).unwrap_or_default();
     (read("exit"), read("stty"), screen)
 }
 
 #[test]
 fn each_signal_gives_the_inspector_s_terminal_back() {
-    if Command::new("tmux").arg("-V").output().is_err() {
-        println!("skipped: tmux is not installed (.ci/run installs it)");
+    if tmux_missing() {
         return;
     }
     for (signal, number) in SIGNALS {
