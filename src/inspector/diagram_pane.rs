@@ -156,17 +156,11 @@ fn paint_rays(
         } else {
             term_color(s.stroke.pen().color, tc)
         };
-        let at = |t: f64| s.from + (s.to - s.from) * t;
-        let mut cuts = vec![0.0];
-        for &[a, b] in &s.passing {
-            cuts.extend([a, b]);
-        }
-        cuts.push(1.0);
-        for (k, w) in cuts.windows(2).enumerate() {
-            let Some((a, b)) = clip_segment(at(w[0]), at(w[1]), lo, hi) else {
+        for (from, to, passing, _) in s.pieces() {
+            let Some((a, b)) = clip_segment(from, to, lo, hi) else {
                 continue;
             };
-            if k % 2 == 1 {
+            if passing {
                 dotted(ctx, a, b, color, step);
             } else {
                 segment(ctx, a, b, color);

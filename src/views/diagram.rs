@@ -295,19 +295,11 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     let (vlo, vhi) = fig.visible();
     for s in &lay.segments {
         let pen = scale.pen(s.stroke.pen());
-        let at = |t: f64| s.from + (s.to - s.from) * t;
-        let mut cuts = vec![0.0];
-        for &[a, b] in &s.passing {
-            cuts.extend([a, b]);
-        }
-        cuts.push(1.0);
-        for (k, w) in cuts.windows(2).enumerate() {
-            let passing = k % 2 == 1;
-            let Some((a, b)) = clip_segment(at(w[0]), at(w[1]), vlo, vhi) else {
+        for (from, to, passing, last) in s.pieces() {
+            let Some((a, b)) = clip_segment(from, to, vlo, vhi) else {
                 continue;
             };
             let pen = if passing { pen.passing() } else { pen };
-            let last = w[1] == 1.0;
             if s.stroke.arrow() && last && !passing {
                 fig.arrow(a, b, pen);
             } else {

@@ -155,6 +155,21 @@ pub struct Segment {
     pub ends: (DVec3, DVec3),
 }
 
+impl Segment {
+    /// The line in pieces, in order: `(from, to, passing, last)`, where a
+    /// piece is `passing` (drawn faint and dotted) inside one of the
+    /// [`passing`](Self::passing) intervals and `last` when it ends the line.
+    pub fn pieces(&self) -> impl Iterator<Item = (DVec2, DVec2, bool, bool)> + '_ {
+        let at = |t: f64| self.from + (self.to - self.from) * t;
+        let cuts: Vec<f64> = std::iter::once(0.0)
+            .chain(self.passing.iter().flatten().copied())
+            .chain(std::iter::once(1.0))
+            .collect();
+        (0..cuts.len() - 1)
+            .map(move |k| (at(cuts[k]), at(cuts[k + 1]), k % 2 == 1, cuts[k + 1] == 1.0))
+    }
+}
+
 /// A hit point, drawn as a dot with its normal.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct HitMark {
