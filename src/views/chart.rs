@@ -315,15 +315,7 @@ fn seconds_label(log10: f64) -> String {
 fn tests_label(log10: f64) -> String {
     let n = 10f64.powf(log10).round();
     if n < 1e6 {
-        let digits = format!("{n}");
-        let mut out = String::new();
-        for (i, d) in digits.chars().enumerate() {
-            if i > 0 && (digits.len() - i) % 3 == 0 {
-                out.push(',');
-            }
-            out.push(d);
-        }
-        out
+        crate::views::numbers::thousands(n as u64)
     } else {
         format!("1e{}", log10.round())
     }

@@ -12,7 +12,7 @@ use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
 use raytree::views::figure::Figure;
 use raytree::views::filmstrip::{self, Frame};
-use raytree::views::numbers::num;
+use raytree::views::numbers::{num, thousands};
 
 use crate::args::SceneArgs;
 use crate::output;
@@ -174,17 +174,4 @@ fn sparse_image(f: &Forward, width: u32, height: u32, grow: i64) -> Vec<u8> {
         }
     }
     sum.iter().flat_map(|&c| rgb8(c)).collect()
-}
-
-/// `1234567` as `1,234,567`.
-pub fn thousands(n: u64) -> String {
-    let digits = n.to_string();
-    let mut out = String::new();
-    for (i, d) in digits.chars().enumerate() {
-        if i > 0 && (digits.len() - i).is_multiple_of(3) {
-            out.push(',');
-        }
-        out.push(d);
-    }
-    out
 }

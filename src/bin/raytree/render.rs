@@ -7,10 +7,9 @@ use anyhow::{Context, Result, bail};
 use raytree::io::image_file;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
-use raytree::views::numbers::num;
+use raytree::views::numbers::{num, thousands};
 
 use crate::args::SceneArgs;
-use crate::forward::thousands;
 use crate::output;
 
 /// Most worker threads: more only costs time on any machine of today (each
