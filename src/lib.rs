@@ -27,9 +27,11 @@ pub mod scene; // the camera and image plane, lights, materials, objects, scene 
 // Running the algorithm, and showing its work.
 pub mod trace; // raytrace(): the recursion, its recorder, every pixel on all cores
 pub mod tree; // the ray tree of one pixel, its steps, the trace document
-pub mod views; // the text trace, ray diagrams, charts
+pub mod views; // the text trace, ray diagrams, figures that explain an image
+pub mod course; // the lessons, their specs and guided step-throughs
 pub mod inspector; // the terminal inspector
 
 // Anyone's.
 pub mod methods; // the selectable methods: the lecture's and the robust ones
 pub mod io; // images and output files
+pub mod figure; // the drawing toolkit: canvas, pens, text, labels, legend

@@ -10,5 +10,4 @@ pub mod triangle; // watertight and Möller–Trumbore
 pub mod mesh; // many triangles, one object, a hierarchy of their own
 pub mod transform; // transformed primitives: the inverse-transformed ray
 pub mod object; // a shape, its transform and its material
-pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy
-pub mod bvh_build; // building it: the binned surface area heuristic, on all cores
+pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)

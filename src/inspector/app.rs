@@ -14,12 +14,12 @@ use super::features::FeatureMap;
 use super::find::{Overlay, Seek};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
+use crate::course::guide::{Narration, Script};
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::recorder::Branch;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
-use crate::views::guide::{Narration, Script};
 
 /// Which pane the arrow keys drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

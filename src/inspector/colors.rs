@@ -5,8 +5,8 @@ use glam::DVec3;
 use ratatui::style::{Color, Style};
 use ratatui::text::Span;
 
+use crate::figure::pen::Rgb;
 use crate::io::image::rgb8;
-use crate::views::figure::Rgb;
 
 /// Whether to draw in 24-bit color, and if not, a note saying why and how to
 /// change it. Asks the environment as terminals announce themselves

@@ -13,11 +13,13 @@ use ratatui::widgets::{Block, Borders, Paragraph};
 
 use super::app::App;
 use super::colors::term_color;
-use crate::views::clip::{clip_line, clip_segment};
-use crate::views::diagram_layout::{Layout as DiagramLayout, Options, layout};
-use crate::views::figure::Rgb;
-use crate::views::pen::palette;
-use crate::views::projection::Outline;
+use crate::figure::clip::{clip_line, clip_segment};
+use crate::figure::pen::Rgb;
+use crate::figure::pen::palette;
+use crate::views::diagram::arrange::layout;
+use crate::views::diagram::layout::Layout as DiagramLayout;
+use crate::views::diagram::options::Options;
+use crate::views::diagram::projection::Outline;
 
 /// Draws the diagram pane.
 pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
@@ -147,7 +149,7 @@ fn paint_rays(
 ) {
     let step = (hi - lo).max_element() / 120.0;
     let chosen =
-        |s: &&crate::views::diagram_layout::Segment| Some(s.node) == selected && s.stroke.arrow();
+        |s: &&crate::views::diagram::layout::Segment| Some(s.node) == selected && s.stroke.arrow();
     let mut order: Vec<_> = lay.segments.iter().collect();
     order.sort_by_key(|s| (chosen(s), s.stroke.arrow()));
     for s in order {

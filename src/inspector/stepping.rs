@@ -3,8 +3,8 @@
 
 use super::app::{App, Guided, Item};
 use super::reveal::Revealed;
+use crate::course::guide::Script;
 use crate::tree::steps::StepKind;
-use crate::views::guide::Script;
 
 impl App {
     /// What the algorithm has computed at the current step (everything when
@@ -28,7 +28,7 @@ impl App {
             .trace
             .as_ref()
             .ok_or("the script's pixel could not be traced")?;
-        let told = crate::views::guide::narrate(&script, trace)?;
+        let told = crate::course::guide::narrate(&script, trace)?;
         self.guide = Some(Guided {
             script,
             told,

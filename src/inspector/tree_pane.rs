@@ -12,9 +12,9 @@ use super::app::{App, Item};
 use super::colors::{swatch, term_color};
 use super::fit::cut;
 use super::reveal::Progress;
+use crate::figure::pen::palette;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::views::numbers::num;
-use crate::views::pen::palette;
 use crate::views::text::kind_name;
 
 fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<Span<'static>> {
@@ -28,7 +28,7 @@ fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<S
             format!("{} ", kind_name(node.kind)),
             Style::default()
                 .fg(term_color(
-                    crate::views::diagram_layout::ray_pen(node.kind).color,
+                    crate::views::diagram::style::ray_pen(node.kind).color,
                     tc,
                 ))
                 .add_modifier(Modifier::BOLD),

@@ -2,21 +2,16 @@
 //! settings that made them, as written by `raytree trace --json` and documented
 //! field by field in `book/src/trace-format.md`.
 
-use std::path::{Path, PathBuf};
-
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::io::image::rgb8;
-use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
-use crate::scene::source::{BUILT_IN, SceneSource};
-use crate::scene::strict::printable;
+use crate::scene::source::SceneSource;
 use crate::tree::arithmetic::{CameraRecord, CameraStage, camera_record};
 use crate::tree::ray_tree::RayTree;
 use crate::tree::steps::{Step, StepKind, steps};
-use crate::tree::trace_check;
 
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
@@ -194,20 +189,6 @@ impl TraceDocument {
         out
     }
 
-    /// [`Self::to_json`], read back and compared: JSON cannot hold an infinity
-    /// or a NaN (serde_json writes `null`), so a trace that would not read back
-    /// exactly is refused rather than written. The scene limits keep every
-    /// number finite; this is the guarantee that the format never holds `null`
-    /// for a number.
-    pub fn to_checked_json(&self) -> Result<String, String> {
-        let text = self.to_json();
-        match parse(&text) {
-            Ok(back) if back == *self => Ok(text),
-            Ok(_) => Err("the trace holds a number JSON cannot write (infinite or NaN)".to_owned()),
-            Err(e) => Err(format!("the trace would not read back:{e}")),
-        }
-    }
-
     /// The steps of sample `k` in execution order: for a pixel, the camera
     /// stage that made its primary ray, then its tree's.
     pub fn steps(&self, k: usize) -> Vec<Step> {
@@ -218,135 +199,4 @@ impl TraceDocument {
         });
         camera.into_iter().chain(steps(&sample.tree)).collect()
     }
-}
-
-/// Reads a saved trace document (`raytree trace --json -o FILE`): a regular
-/// file of at most [`MAX_INPUT_BYTES`], a document this raytree writes, and
-/// one that holds together ([`trace_check::structure`]). Errors are one line
-/// naming the file.
-pub fn read(path: &Path) -> anyhow::Result<TraceDocument> {
-    let file = path.display();
-    let text = input::read_text(path, MAX_INPUT_BYTES)
-        .map_err(|reason| anyhow::anyhow!("cannot read {file}: {reason}"))?;
-    parse(&text).map_err(|e| anyhow::anyhow!("{file}:{e}"))
-}
-
-/// Parses and checks a trace document's text. The error is one line: a
-/// position (`L:C: …`) for a syntax error, else ` field: …`, to follow the
-/// file's name.
-pub fn parse(text: &str) -> Result<TraceDocument, String> {
-    let trace: TraceDocument = serde_json::from_str(text).map_err(|e| {
-        format!(
-            "{}:{}: not a raytree trace: {}",
-            e.line(),
-            e.column(),
-            printable(without_position(&e.to_string()))
-        )
-    })?;
-    if trace.format != FORMAT || trace.version != VERSION {
-        return Err(format!(
-            " a {} version {} document; this raytree reads {FORMAT} version {VERSION}",
-            trace.format.escape_debug(),
-            trace.version,
-        ));
-    }
-    trace_check::structure(&trace).map_err(|e| format!(" {e}"))?;
-    Ok(trace)
-}
-
-/// A saved trace with the scene it was made from, when that is at hand.
-#[derive(Debug)]
-pub struct Opened {
-    /// The trace, checked.
-    pub trace: TraceDocument,
-    /// Its scene with the trace's settings, when found and unchanged (or given).
-    pub scene: Option<Scene>,
-    /// What a user should know about the scene: not found, changed, or given
-    /// in place of the one the trace names.
-    pub note: Option<String>,
-}
-
-/// Opens a saved trace with its scene: `scene` when given (it must have the
-/// objects and lights the trace names), else the file the trace names, looked
-/// for beside the trace first, then from the working folder. A scene that
-/// changed since the trace was made is left out, with a note: the trace is then
-/// shown without the scene's drawing. Errors are one line naming the file.
-pub fn open(path: &Path, scene: Option<&Path>) -> anyhow::Result<Opened> {
-    let trace = read(path)?;
-    let file = path.display();
-    let Some(given) = scene else {
-        let (scene, note) = find_scene(&trace, path);
-        return Ok(Opened { trace, scene, note });
-    };
-    let (mut scene, source) = crate::scene::source::load(Some(given))?;
-    scene.settings = trace.settings;
-    trace_check::against_scene(&trace, &scene)
-        .map_err(|e| anyhow::anyhow!("{file} does not fit the scene {}: {e}", given.display()))?;
-    let note = (source.hash != trace.scene.hash).then(|| {
-        format!(
-            "{} is not the scene the trace was made from ({}), but has its objects and lights",
-            given.display(),
-            trace.scene.file
-        )
-    });
-    Ok(Opened {
-        trace,
-        scene: Some(scene),
-        note,
-    })
-}
-
-/// The scene `trace` (read from `path`) names, if it is found and unchanged,
-/// and a note when it is not.
-fn find_scene(trace: &TraceDocument, path: &Path) -> (Option<Scene>, Option<String>) {
-    let named = &trace.scene.file;
-    let file = if named == BUILT_IN {
-        None
-    } else {
-        let beside = path.parent().unwrap_or(Path::new("")).join(named);
-        match [beside, PathBuf::from(named)]
-            .into_iter()
-            .find(|p| p.is_file())
-        {
-            Some(found) => Some(found),
-            None => {
-                return (
-                    None,
-                    Some(format!(
-                        "scene {named} not found: showing the saved trace only"
-                    )),
-                );
-            }
-        }
-    };
-    let shown = file
-        .as_deref()
-        .map_or(named.clone(), |p| p.display().to_string());
-    let (mut scene, now) = match crate::scene::source::load(file.as_deref()) {
-        Ok(found) => found,
-        Err(e) => return (None, Some(format!("{e}: showing the saved trace only"))),
-    };
-    scene.settings = trace.settings;
-    if now.hash != trace.scene.hash {
-        let note = format!(
-            "{shown} changed since the trace was saved: showing the saved trace only (give the scene after the trace to use it anyway)"
-        );
-        return (None, Some(note));
-    }
-    match trace_check::against_scene(trace, &scene) {
-        Ok(()) => (Some(scene), None),
-        Err(e) => (
-            None,
-            Some(format!(
-                "{shown} does not fit the trace ({e}): showing the saved trace only"
-            )),
-        ),
-    }
-}
-
-/// serde_json's message without its " at line L column C".
-fn without_position(message: &str) -> &str {
-    message
-        .rfind(" at line ")
-        .map_or(message, |i| &message[..i])
 }

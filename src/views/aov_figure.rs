@@ -7,11 +7,12 @@
 
 use glam::DVec2;
 
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::pen::Rgb;
+use crate::figure::pen::{Pen, palette};
 use crate::io::image::rgb8;
 use crate::trace::aov::{Aov, AovImage, Key, Value};
-use crate::views::figure::{Anchor, Figure, Rgb};
 use crate::views::numbers::num;
-use crate::views::pen::{Pen, palette};
 
 /// The two grays of the checkerboard that marks pixels without a value.
 pub const UNDEFINED: [Rgb; 2] = [[190, 190, 190], [232, 232, 232]];

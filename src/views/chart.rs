@@ -1,15 +1,15 @@
 //! The speed-against-accuracy chart: time against error on log axes, with the
 //! Pareto front (no other setting is both faster and more accurate) and the
 //! defaults marked, from the points [`crate::trace::sweep`] measured. Drawn with
-//! the project's figure toolkit ([`crate::views::figure`]).
+//! the project's figure toolkit ([`crate::figure::canvas`]).
 
 use glam::DVec2;
 
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::labels::{Label, Placed, PxRect, Target, place, text_box};
+use crate::figure::pen::{Pen, palette};
 use crate::methods::Offset;
 use crate::trace::sweep::Point;
-use crate::views::figure::{Anchor, Figure};
-use crate::views::labels::{Label, Placed, PxRect, Target, place, text_box};
-use crate::views::pen::{Pen, palette};
 
 /// Indices of the points on the Pareto front (no other point is at least as fast
 /// and as accurate and better in one), by increasing time.
@@ -179,7 +179,7 @@ fn draw_grid(fig: &mut Figure, counted: bool) {
 }
 
 /// Each point as a dot (the defaults last, on top), then the labels, placed
-/// by [`crate::views::labels`] as the diagrams' are: touching their dot where
+/// by [`crate::figure::labels`] as the diagrams' are: touching their dot where
 /// there is room, else with a leader line, never over another label, a dot,
 /// the legend or an axis title. The defaults are placed first, so their
 /// label sits at their dot.

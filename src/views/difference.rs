@@ -4,9 +4,9 @@
 //! and that frame's color bar under all three. `raytree diff -o` draws it, so
 //! a lesson can show where a textbook method, or another renderer, departs.
 
+use crate::figure::canvas::Figure;
 use crate::io::image_diff::{Difference, per_pixel};
 use crate::views::aov_figure::{MAX_STEPS, Range, draw_bar};
-use crate::views::figure::Figure;
 use crate::views::filmstrip::{self, Frame};
 use crate::views::numbers::num;
 

@@ -5,8 +5,8 @@
 
 use glam::DVec2;
 
-use crate::views::figure::{Anchor, Figure};
-use crate::views::pen::palette;
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::pen::palette;
 
 /// One frame: its image and its two lines of text.
 #[derive(Clone, Debug, PartialEq)]

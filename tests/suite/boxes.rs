@@ -8,9 +8,9 @@ use glam::DVec3;
 use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
 use raytree::tree::ray_tree::BoxRecord;
-use raytree::views::diagram::draw_with_labels;
-use raytree::views::diagram_layout::Options;
-use raytree::views::projection::View;
+use raytree::views::diagram::draw::draw_with_labels;
+use raytree::views::diagram::options::Options;
+use raytree::views::diagram::projection::View;
 
 fn spheres() -> raytree::scene::Scene {
     raytree::scene::loader::load(std::path::Path::new(concat!(

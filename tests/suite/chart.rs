@@ -151,7 +151,7 @@ fn chart_labels_touch_their_dots_and_never_overlap() {
         // Touching its dot, or led to it: a label at a corner of its dot sits
         // the clearance (at most 7) and a gap of 2 plus a pixel of padding away
         // on both axes, (7 + 2 + 1)·√2 ≈ 14.1 from the dot's center.
-        let touching = |p: &raytree::views::labels::Placed| p.rect.distance(p.anchor) <= 14.2;
+        let touching = |p: &raytree::figure::labels::Placed| p.rect.distance(p.anchor) <= 14.2;
         assert!(
             touching(a) || a.leader.is_some(),
             "{} floats away from its dot",

@@ -150,7 +150,7 @@ pub fn worst_difference(a: &[u8], b: &[u8]) -> u8 {
 /// Checks `fig` against the PNG at `path` within [`FIGURE_TOLERANCE`]; with
 /// `RAYTREE_BLESS` set, writes it there instead. `bless` names the test
 /// filter that remakes it.
-pub fn matches_golden(fig: &raytree::views::figure::Figure, path: &std::path::Path, bless: &str) {
+pub fn matches_golden(fig: &raytree::figure::canvas::Figure, path: &std::path::Path, bless: &str) {
     if std::env::var_os("RAYTREE_BLESS").is_some() {
         std::fs::create_dir_all(path.parent().unwrap()).unwrap();
         std::fs::write(path, fig.png()).unwrap();

@@ -5,16 +5,18 @@
 //! `RAYTREE_BLESS=1 cargo test --release diagram`, and look at them.
 
 use glam::DVec2;
+use raytree::figure::canvas::Figure;
+use raytree::figure::labels::Target;
+use raytree::figure::pen::palette;
 use raytree::geometry::object::Shape;
 use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
-use raytree::views::diagram::{draw, draw_with_labels};
-use raytree::views::diagram_layout::{Fit, Labels, Options, Stroke, layout};
-use raytree::views::figure::Figure;
-use raytree::views::labels::Target;
+use raytree::views::diagram::arrange::layout;
+use raytree::views::diagram::draw::{draw, draw_with_labels};
+use raytree::views::diagram::options::{Fit, Labels, Options};
+use raytree::views::diagram::projection::{Outline, Projection, View};
+use raytree::views::diagram::style::Stroke;
 use raytree::views::numbers::degrees;
-use raytree::views::pen::palette;
-use raytree::views::projection::{Outline, Projection, View};
 
 fn whitted_figure(
     x: u32,
@@ -181,7 +183,7 @@ fn golden_figures() {
     };
     let camera = || {
         let (_, trace) = traced("whitted.json", 416, 209);
-        raytree::views::camera_view::draw(&trace, 1200, 800).unwrap()
+        raytree::views::diagram::camera_view::draw(&trace, 1200, 800).unwrap()
     };
     let boxes = || {
         let (scene, trace) = traced("spheres.json", 300, 200);
@@ -192,7 +194,7 @@ fn golden_figures() {
             boxes: true,
             ..Options::default()
         };
-        raytree::views::diagram::draw(&trace, &scene, &options).unwrap()
+        raytree::views::diagram::draw::draw(&trace, &scene, &options).unwrap()
     };
     let cases: [(&str, Drawer); 5] = [
         ("whitted-mirror", Box::new(plain(264, 200, small))),
@@ -506,11 +508,11 @@ fn ticks_and_step_numbers_follow_the_trace() {
 #[test]
 fn the_camera_and_object_space_views() {
     let (scene, trace) = traced("whitted.json", 416, 209);
-    let cam = raytree::views::camera_view::draw(&trace, 1200, 800).unwrap();
+    let cam = raytree::views::diagram::camera_view::draw(&trace, 1200, 800).unwrap();
     assert_eq!(cam.size(), (1200, 800));
     assert!(
         cam.png()
-            == raytree::views::camera_view::draw(&trace, 1200, 800)
+            == raytree::views::diagram::camera_view::draw(&trace, 1200, 800)
                 .unwrap()
                 .png()
     );
@@ -520,13 +522,15 @@ fn the_camera_and_object_space_views() {
         raytree::math::ray::Ray::new(glam::DVec3::new(0.0, 1.0, 5.0), glam::DVec3::NEG_Z),
     )
     .unwrap();
-    assert!(raytree::views::camera_view::draw(&ray, 1200, 800).is_err());
+    assert!(raytree::views::diagram::camera_view::draw(&ray, 1200, 800).is_err());
     // The object view needs a transformed sphere: the Whitted scene has none.
-    let Err(err) = raytree::views::object_view::draw(&trace, &scene, &Options::default()) else {
+    let Err(err) = raytree::views::diagram::object_view::draw(&trace, &scene, &Options::default())
+    else {
         panic!("the Whitted scene has no transformed sphere to draw in its own space");
     };
     assert!(err.contains("transformed sphere"), "{err}");
     let (scene, trace) = traced("ellipsoids.json", 320, 240);
-    let fig = raytree::views::object_view::draw(&trace, &scene, &Options::default()).unwrap();
+    let fig =
+        raytree::views::diagram::object_view::draw(&trace, &scene, &Options::default()).unwrap();
     assert_eq!(fig.size(), (1200, 800));
 }

@@ -21,7 +21,7 @@ use std::time::{Duration, Instant};
 use arbitrary::Unstructured;
 use raytree::scene::source::SceneSource;
 use raytree::scene::{generate, loader, obj};
-use raytree::tree::document;
+use raytree::tree::reading;
 use serde_json::{Value, json};
 
 /// Longest a case may take before it counts as a hang.
@@ -359,7 +359,7 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
         }
         Target::Trace => {
             let text = mutated(&mut u, &seeds.traces);
-            match document::parse(&text) {
+            match reading::parse(&text) {
                 Ok(trace) => trace_works(&trace)?,
                 Err(e) => one_line(&e)?,
             }
@@ -574,7 +574,7 @@ fn mutations_reach_the_interesting_places() {
                     &dir.path().join("f.json").display().to_string(),
                 )
                 .is_ok(),
-                Target::Trace => document::parse(&mutated(&mut u, &seeds.traces)).is_ok(),
+                Target::Trace => reading::parse(&mutated(&mut u, &seeds.traces)).is_ok(),
             };
             if accepted { ok += 1 } else { err += 1 }
         }

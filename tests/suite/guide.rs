@@ -2,9 +2,9 @@
 
 use std::path::Path;
 
+use raytree::course::guide::{narrate, parse};
 use raytree::tree::ray_tree::Branch;
 use raytree::tree::steps::StepKind;
-use raytree::views::guide::{narrate, parse};
 use raytree::views::numbers::degrees;
 
 #[test]
@@ -98,7 +98,7 @@ fn stops_quote_the_tests_a_search_made_and_the_recent_blocker() {
         at(&|k| matches!(k, StepKind::Test(_))),
         at(&|k| k == StepKind::Hit),
     );
-    let values = |step: usize| raytree::views::guide::values(&trace, 0, step);
+    let values = |step: usize| raytree::course::guide::values(&trace, 0, step);
     // Not while the search runs: only once the hit is chosen.
     assert!(!values(test).contains_key("boxes"));
     let tested = nodes[steps[hit].node].tested;
@@ -143,8 +143,8 @@ fn stops_quote_the_tests_a_search_made_and_the_recent_blocker() {
 
 #[test]
 fn shadow_and_object_space_stops_quote_what_the_trace_recorded() {
+    use raytree::course::guide::values;
     use raytree::tree::ray_tree::ShadowOutcomeRecord;
-    use raytree::views::guide::values;
     use raytree::views::numbers::{num, vec3};
     let source = || raytree::scene::source::SceneSource::new("test", "");
     // Floor pixel 440,376 of the Whitted scene is lit through the glass ball by both lights.

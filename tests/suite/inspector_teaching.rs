@@ -248,7 +248,7 @@ fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
                     .is_some_and(|b| b.outcome == Branch::TotalInternalReflection)
         })
         .unwrap();
-    let script = raytree::views::guide::parse(
+    let script = raytree::course::guide::parse(
         Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/tir.toml")),
         &format!(
             "title = \"TIR\"\nscene = \"../scenes/whitted.json\"\npixel = [416, 209]\n\

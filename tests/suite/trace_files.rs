@@ -6,7 +6,8 @@
 use std::path::Path;
 
 use raytree::scene::source::SceneSource;
-use raytree::tree::document::{self, TraceDocument};
+use raytree::tree::document::TraceDocument;
+use raytree::tree::reading;
 use raytree::tree::record;
 use serde_json::{Value, json};
 
@@ -140,7 +141,7 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
     let trace = dir.path().join("saved/t.json");
     std::fs::write(&trace, &text).unwrap();
     // Not found anywhere: the trace alone, saying so.
-    let opened = document::open(&trace, None).unwrap();
+    let opened = reading::open(&trace, None).unwrap();
     assert!(opened.scene.is_none());
     assert_eq!(
         opened.note.as_deref(),
@@ -148,7 +149,7 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
     );
     // Beside the trace.
     std::fs::write(dir.path().join("saved/s.json"), whitted_text()).unwrap();
-    let opened = document::open(&trace, None).unwrap();
+    let opened = reading::open(&trace, None).unwrap();
     assert!(
         opened.scene.is_some() && opened.note.is_none(),
         "{:?}",
@@ -157,7 +158,7 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
     // Changed since (objects deleted): the trace alone, never indexing past the end.
     let edited = whitted_text().replacen("\"name\": \"cavity\"", "\"name\": \"hole\"", 1);
     std::fs::write(dir.path().join("saved/s.json"), &edited).unwrap();
-    let opened = document::open(&trace, None).unwrap();
+    let opened = reading::open(&trace, None).unwrap();
     assert!(opened.scene.is_none());
     assert!(
         opened
@@ -168,7 +169,7 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
     // Given explicitly: used when its objects and lights fit, refused when not.
     let fits = dir.path().join("fits.json");
     std::fs::write(&fits, whitted_text().replace("\"fov\"", " \"fov\"")).unwrap();
-    let opened = document::open(&trace, Some(&fits)).unwrap();
+    let opened = reading::open(&trace, Some(&fits)).unwrap();
     assert!(opened.scene.is_some());
     assert!(
         opened
@@ -176,7 +177,7 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
             .unwrap()
             .contains("is not the scene the trace was made from")
     );
-    let e = document::open(&trace, Some(&dir.path().join("saved/s.json"))).unwrap_err();
+    let e = reading::open(&trace, Some(&dir.path().join("saved/s.json"))).unwrap_err();
     assert!(
         e.to_string()
             .contains("object 3 is 'cavity' (sphere of 'air') in the trace, 'hole'"),

@@ -4,9 +4,9 @@ use std::path::PathBuf;
 
 use anyhow::Result;
 use glam::DVec2;
-use raytree::views::diagram_layout::{Fit, Labels, Options};
-use raytree::views::projection::View;
-use raytree::views::{camera_view, diagram, object_view};
+use raytree::views::diagram::options::{Fit, Labels, Options};
+use raytree::views::diagram::projection::View;
+use raytree::views::diagram::{self, camera_view, object_view};
 
 use crate::args::{SceneArgs, TargetArgs, parse_size};
 use crate::output;
@@ -127,7 +127,7 @@ pub fn run(args: &Args) -> Result<()> {
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
         (_, Space::Object) => object_view::draw(&trace, &scene, &options),
-        (_, Space::World) => diagram::draw(&trace, &scene, &options),
+        (_, Space::World) => diagram::draw::draw(&trace, &scene, &options),
     }
     .map_err(anyhow::Error::msg)?;
     pending.commit(&figure.png())?;

@@ -6,11 +6,11 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
 use glam::DVec3;
+use raytree::figure::canvas::Figure;
 use raytree::io::image::{rgb8, to_rgb8};
 use raytree::trace::forward::{self, Forward};
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
-use raytree::views::figure::Figure;
 use raytree::views::filmstrip::{self, Frame};
 use raytree::views::numbers::{num, thousands};
 

@@ -4,10 +4,10 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
+use raytree::course::guide;
 use raytree::inspector::{self, App};
 use raytree::scene::source;
-use raytree::tree::document;
-use raytree::views::guide;
+use raytree::tree::reading;
 
 use crate::args::{SceneArgs, parse_pixel};
 
@@ -72,7 +72,7 @@ pub fn run(args: &Args) -> Result<()> {
             App::new(scene, source, args.pixel, true)
         }
         (Some(path), _) => {
-            let opened = document::open(path, args.scene.scene.as_deref())?;
+            let opened = reading::open(path, args.scene.scene.as_deref())?;
             let mut app = App::from_trace(opened.trace, opened.scene, true);
             if let Some(note) = opened.note {
                 app.message = note;

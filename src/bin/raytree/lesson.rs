@@ -5,8 +5,8 @@ use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
+use raytree::course::lesson;
 use raytree::inspector::{self, App};
-use raytree::views::lesson;
 
 use crate::output;
 

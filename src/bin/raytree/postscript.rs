@@ -10,10 +10,10 @@ use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
 use anyhow::{Context, Result, bail};
+use raytree::figure::canvas::Figure;
 use raytree::io::image::linear_to_srgb8;
 use raytree::io::input::read_text;
 use raytree::io::postscript::{self, SLIPS};
-use raytree::views::figure::Figure;
 
 use crate::output;
 

@@ -6,7 +6,7 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use raytree::views::{lesson, lesson_spec};
+use raytree::course::{lesson, lesson_spec};
 
 use super::page::{self, Input, Quoted};
 use super::run;

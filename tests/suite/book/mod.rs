@@ -14,7 +14,7 @@ mod run;
 
 use std::process::Command;
 
-use raytree::views::lesson;
+use raytree::course::lesson;
 
 #[test]
 fn book_is_current() {

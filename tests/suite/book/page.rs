@@ -7,8 +7,8 @@ use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write;
 use std::path::Path;
 
-use raytree::views::lesson::StepThrough;
-use raytree::views::lesson_spec::{Source, Spec};
+use raytree::course::lesson::StepThrough;
+use raytree::course::lesson_spec::{Source, Spec};
 
 use super::run::{self, Output};
 
@@ -109,7 +109,7 @@ impl Page<'_> {
         while let Some(i) = rest.find("{{") {
             out.push_str(&rest[..i]);
             let line = text.len() - rest.len() + i;
-            let line = raytree::views::teacher_file::line_of(text, line);
+            let line = raytree::course::teacher_file::line_of(text, line);
             let fail = |e: String| format!("{at}: line {line}: {e}");
             let end = rest[i..]
                 .find("}}")
@@ -318,7 +318,7 @@ impl Page<'_> {
 }
 
 /// Where a number came from, in words a learner can retrace.
-fn origin(spec: &Spec, n: &raytree::views::lesson_spec::Number) -> String {
+fn origin(spec: &Spec, n: &raytree::course::lesson_spec::Number) -> String {
     let command = &spec.runs[&n.run].command.text;
     match &n.source {
         Source::Step { step, value } => format!("`{command}`, step {step}, `{value}`"),

@@ -6,9 +6,9 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command as Process;
 
+use raytree::course::guide;
+use raytree::course::lesson_spec::{Command, Number, Run, Source, Spec};
 use raytree::tree::document::TraceDocument;
-use raytree::views::guide;
-use raytree::views::lesson_spec::{Command, Number, Run, Source, Spec};
 use raytree::views::numbers::{num, vec3};
 use raytree::views::text;
 use serde_json::Value;

@@ -9,7 +9,8 @@
 
 use glam::DVec2;
 
-use crate::views::figure::{Figure, Rgb};
+use crate::figure::canvas::Figure;
+use crate::figure::pen::Rgb;
 
 /// An axis-aligned box in pixels (y down).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -46,7 +47,7 @@ impl PxRect {
 
     /// Whether the segment `a → b` crosses the box (Liang–Barsky).
     pub fn crossed_by(&self, a: DVec2, b: DVec2) -> bool {
-        crate::views::clip::clip_segment(a, b, self.min, self.max).is_some()
+        crate::figure::clip::clip_segment(a, b, self.min, self.max).is_some()
     }
 }
 

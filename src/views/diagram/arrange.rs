@@ -1,230 +1,21 @@
-//! A ray diagram's layout: a pixel's rays, hits and the scene's objects
-//! projected onto the drawing plane, honestly (each object's cut solid, its
-//! silhouette a ghost, a ray's passes in front of or behind objects marked),
-//! with the window worth framing. The PNG figure ([`crate::views::diagram`])
-//! and the inspector's diagram pane both draw from it.
+//! Laying a recorded tree out on the drawing plane, honestly: each object's
+//! cut solid, its silhouette a ghost, a ray's passes in front of or behind
+//! objects marked, and the window worth framing.
 
 use glam::{DVec2, DVec3};
 
 use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::{RayKind, RayNode, ShadowOutcomeRecord};
+use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
-use crate::views::boxes::{self, BoxMark};
-use crate::views::diagram_frame;
-use crate::views::marks::{self, Marks};
-use crate::views::pen::{Pen, palette};
-use crate::views::projection::{Outline, Projection, View};
-use crate::views::section::{cross_section, passing};
-
-/// Which labels to write.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
-pub enum Labels {
-    /// None: only the legend and caption.
-    None,
-    /// Objects, lights and the eye.
-    Objects,
-    /// Also hit points (P1, P2, … in the order they were found), normals and angles.
-    All,
-}
-
-/// What the figure frames.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, clap::ValueEnum)]
-pub enum Fit {
-    /// The hits and the objects they are on, large: where the optics happen.
-    #[default]
-    Hits,
-    /// The whole tree: the eye, the image plane, every ray near them.
-    Tree,
-    /// Every bounded object, the eye and the lights.
-    Scene,
-}
-
-/// What to draw, and how big.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Options {
-    /// Figure width in pixels.
-    pub width: u32,
-    /// Figure height in pixels.
-    pub height: u32,
-    /// The projection.
-    pub view: View,
-    /// Draw only rays up to this depth (1: the primary ray).
-    pub depth: Option<u32>,
-    /// Draw shadow rays.
-    pub shadows: bool,
-    /// Which labels.
-    pub labels: Labels,
-    /// Which of the trace's samples to draw.
-    pub sample: usize,
-    /// What to frame.
-    pub fit: Fit,
-    /// An explicit window in drawing-plane coordinates (`lo`, `hi`), over `fit`.
-    pub window: Option<(DVec2, DVec2)>,
-    /// Tick marks along the rays at whole steps of `t`.
-    pub ticks: bool,
-    /// Step numbers, as `raytree trace --steps` numbers them.
-    pub steps: bool,
-    /// Show the algorithm only up to this step (0-based), as a step-through does.
-    pub until_step: Option<usize>,
-    /// Draw the hierarchy's boxes the drawn rays were tested against.
-    pub boxes: bool,
-}
-
-impl Default for Options {
-    fn default() -> Self {
-        Self {
-            width: 1200,
-            height: 800,
-            view: View::Auto,
-            depth: None,
-            shadows: true,
-            labels: Labels::All,
-            sample: 0,
-            fit: Fit::default(),
-            window: None,
-            ticks: false,
-            steps: false,
-            until_step: None,
-            boxes: false,
-        }
-    }
-}
-
-/// What a drawn line is; each kind differs by dash pattern as well as color.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Stroke {
-    /// A ray of this kind.
-    Ray(RayKind),
-    /// A shadow ray that reaches its light.
-    ShadowReaches,
-    /// A shadow ray up to its blocker.
-    ShadowBlocked,
-    /// The rest of a blocked shadow ray, from the blocker to the light.
-    ShadowPastBlocker,
-}
-
-impl Stroke {
-    /// How it is drawn.
-    pub fn pen(self) -> Pen {
-        match self {
-            Stroke::Ray(kind) => ray_pen(kind),
-            Stroke::ShadowReaches => Pen::solid(palette::SHADOW_REACHES, 1.0),
-            Stroke::ShadowBlocked => Pen::solid(palette::SHADOW_BLOCKED, 1.3),
-            Stroke::ShadowPastBlocker => Pen::pattern(palette::SHADOW_BLOCKED, 1.0, &[2.0, 4.0]),
-        }
-    }
-
-    /// Whether it ends in an arrowhead.
-    pub fn arrow(self) -> bool {
-        matches!(self, Stroke::Ray(_))
-    }
-}
-
-/// The pen a ray of this kind is drawn with: color and dash pattern both differ,
-/// so the kinds read apart in gray and for color-blind readers.
-pub fn ray_pen(kind: RayKind) -> Pen {
-    match kind {
-        RayKind::Primary => Pen::solid(palette::PRIMARY, 2.5),
-        RayKind::Reflected => Pen::pattern(palette::REFLECTED, 2.5, &[12.0, 5.0]),
-        RayKind::Refracted => Pen::pattern(palette::REFRACTED, 2.5, &[12.0, 4.0, 2.5, 4.0]),
-        RayKind::Shadow => Pen::solid(palette::SHADOW_REACHES, 1.0),
-    }
-}
-
-/// The pen of surface normals.
-pub const NORMAL: Pen = Pen::solid(palette::NORMAL, 2.0);
-
-/// One drawn line, in diagram coordinates.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Segment {
-    /// Where it starts.
-    pub from: DVec2,
-    /// Where it ends: its hit, its light, or far out for a ray that leaves the scene.
-    pub to: DVec2,
-    /// The ray leaves the scene: it runs on to the frame's edge.
-    pub leaves: bool,
-    /// What it is.
-    pub stroke: Stroke,
-    /// The tree node it belongs to.
-    pub node: usize,
-    /// Parameter intervals of `from → to` where it only passes in front of or
-    /// behind an object's silhouette: drawn faded and dotted.
-    pub passing: Vec<[f64; 2]>,
-    /// The 3D ends, for marks along it.
-    pub ends: (DVec3, DVec3),
-}
-
-impl Segment {
-    /// The line in pieces, in order: `(from, to, passing, last)`, where a
-    /// piece is `passing` (drawn faint and dotted) inside one of the
-    /// [`passing`](Self::passing) intervals and `last` when it ends the line.
-    pub fn pieces(&self) -> impl Iterator<Item = (DVec2, DVec2, bool, bool)> + '_ {
-        let at = |t: f64| self.from + (self.to - self.from) * t;
-        let cuts: Vec<f64> = std::iter::once(0.0)
-            .chain(self.passing.iter().flatten().copied())
-            .chain(std::iter::once(1.0))
-            .collect();
-        (0..cuts.len() - 1)
-            .map(move |k| (at(cuts[k]), at(cuts[k + 1]), k % 2 == 1, cuts[k + 1] == 1.0))
-    }
-}
-
-/// A hit point, drawn as a dot with its normal.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct HitMark {
-    /// The tree node whose hit it is.
-    pub node: usize,
-    /// That node's depth.
-    pub depth: u32,
-    /// The object hit.
-    pub object: usize,
-    /// Where.
-    pub at: DVec2,
-    /// The normal the formulas use, in the drawing.
-    pub normal: DVec2,
-    /// The kind of the ray that hit.
-    pub kind: RayKind,
-}
-
-/// An object as drawn: its silhouette (a ghost) and what the drawing plane cuts of it.
-#[derive(Clone, Debug, PartialEq)]
-pub struct ObjectShape {
-    /// The outline of everything it hides.
-    pub silhouette: Outline,
-    /// Its cross-section with the drawing plane; `None` when the plane misses it.
-    pub section: Option<Outline>,
-    /// A ray hit it or it blocked a shadow ray.
-    pub touched: bool,
-}
-
-/// Everything a diagram shows, projected, with the window to fit.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Layout {
-    /// The projection.
-    pub proj: Projection,
-    /// Shadow rays first, then rays.
-    pub segments: Vec<Segment>,
-    /// Hit points in the order they were found.
-    pub hits: Vec<HitMark>,
-    /// Every object, by index.
-    pub objects: Vec<ObjectShape>,
-    /// The eye.
-    pub eye: DVec2,
-    /// The image plane's cut (two ends) and the pixel on it.
-    pub image_plane: Option<(DVec2, DVec2, DVec2)>,
-    /// The lights.
-    pub lights: Vec<DVec2>,
-    /// The angles, indices, badges and marks a slide needs.
-    pub marks: Marks,
-    /// The window the drawing should fit: `(lo, hi)`.
-    pub window: (DVec2, DVec2),
-    /// For a ray that hit nothing: the objects it passed nearest, each with its
-    /// gap and the closest approach drawn (from the ray, to the object).
-    pub near_misses: Vec<(usize, f64, DVec2, DVec2)>,
-    /// With `boxes`: the hierarchy's boxes the drawn rays were tested against.
-    pub boxes: Vec<BoxMark>,
-}
+use crate::views::diagram::boxes::{self};
+use crate::views::diagram::frame;
+use crate::views::diagram::layout::{HitMark, Layout, ObjectShape, Segment};
+use crate::views::diagram::marks::{self};
+use crate::views::diagram::options::Options;
+use crate::views::diagram::projection::Projection;
+use crate::views::diagram::section::{cross_section, passing};
+use crate::views::diagram::style::Stroke;
 
 /// Projects sample `options.sample` of `trace` (and `scene`) for drawing.
 pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Layout, String> {
@@ -318,7 +109,7 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
     };
     lay.window = options
         .window
-        .unwrap_or_else(|| diagram_frame::frame(&lay, options.fit));
+        .unwrap_or_else(|| frame::frame(&lay, options.fit));
     Ok(lay)
 }
 
@@ -526,7 +317,7 @@ fn image_plane_segment(
         DVec2::new(rel.dot(camera.u), rel.dot(camera.v)),
         DVec2::new(along.dot(camera.u), along.dot(camera.v)),
     );
-    let (a, b) = crate::views::clip::clip_line(
+    let (a, b) = crate::figure::clip::clip_line(
         p2,
         d2,
         DVec2::new(-camera.half_width, -camera.half_height),

@@ -4,7 +4,8 @@
 
 use glam::DVec2;
 
-use crate::views::diagram_layout::{Fit, Layout};
+use crate::views::diagram::layout::Layout;
+use crate::views::diagram::options::Fit;
 
 /// The window to frame, per `fit`, with a margin; never degenerate.
 pub fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {

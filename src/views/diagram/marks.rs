@@ -11,9 +11,9 @@ use glam::{DVec2, DVec3};
 use crate::scene::Scene;
 use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
-use crate::views::diagram_layout::{Labels, Options};
+use crate::views::diagram::options::{Labels, Options};
+use crate::views::diagram::projection::Projection;
 use crate::views::numbers::{degrees, num};
-use crate::views::projection::Projection;
 
 /// Everything marked, in diagram coordinates.
 #[derive(Clone, Debug, Default, PartialEq)]

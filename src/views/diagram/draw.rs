@@ -1,59 +1,31 @@
 //! Ray diagrams: a pixel's ray tree drawn in 2D over the scene, as a lecture
 //! slide or a book page would show it. Reads the recorded tree (and the scene,
-//! for the objects' shapes); draws with [`crate::views::figure`] what
-//! [`crate::views::diagram_layout`] projected, honestly: what the drawing plane
+//! for the objects' shapes); draws with [`crate::figure::canvas`] what
+//! [`crate::views::diagram::layout`] projected, honestly: what the drawing plane
 //! cuts of an object is solid, the rest of its outline a faint ghost, and a ray
 //! that only passes in front of or behind an object is dotted there. Labels go
-//! through [`crate::views::labels`], so none collides.
+//! through [`crate::figure::labels`], so none collides.
 
-use glam::{DVec2, DVec3};
+use glam::DVec2;
 
+use crate::figure::canvas::Figure;
+use crate::figure::clip::{clip_line, clip_segment};
+use crate::figure::labels::{self, Placed, PxRect};
+use crate::figure::pen::Rgb;
+use crate::figure::pen::{Pen, palette};
 use crate::scene::Scene;
-use crate::shading::material::Pattern;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::RayKind;
-use crate::views::boxes;
-use crate::views::clip::{clip_line, clip_segment};
-use crate::views::diagram_labels::{blocked, draw_label, label_requests, lines_px};
-use crate::views::diagram_layout::{Layout, NORMAL, Options, Stroke, layout, ray_pen};
-use crate::views::figure::{Figure, Rgb};
-use crate::views::labels::{self, Placed, PxRect};
+use crate::views::diagram::arrange::layout;
+use crate::views::diagram::boxes;
+use crate::views::diagram::labels::{blocked, draw_label, label_requests, lines_px};
+use crate::views::diagram::layout::Layout;
+use crate::views::diagram::options::Options;
+use crate::views::diagram::projection::Outline;
+use crate::views::diagram::style::{NORMAL, Stroke, ray_pen};
+use crate::views::diagram::style::{Scale, pale};
 use crate::views::numbers::num;
-use crate::views::pen::{Pen, palette};
-use crate::views::projection::Outline;
 use crate::views::text;
-
-/// Sizes scaled with the figure, so 600×400 reads as well as 1200×800.
-#[derive(Clone, Copy, Debug)]
-pub struct Scale {
-    /// 1 at 1200×800.
-    pub k: f64,
-    /// Label text size.
-    pub text: f32,
-}
-
-impl Scale {
-    /// The scale for a figure of `width × height` pixels.
-    pub fn of(width: u32, height: u32) -> Self {
-        let k = (f64::from(width) / 1200.0)
-            .min(f64::from(height) / 800.0)
-            .clamp(0.5, 2.5);
-        Self {
-            k,
-            text: (15.0 * k as f32).max(10.0),
-        }
-    }
-
-    /// A length of `x` pixels at 1200×800, at this figure's size.
-    pub fn px(&self, x: f64) -> f64 {
-        x * self.k
-    }
-
-    /// The pen widened (and its dashes stretched) to this figure's size.
-    pub fn pen(&self, pen: Pen) -> Pen {
-        pen.scaled(self.k as f32)
-    }
-}
 
 /// What a drawn figure holds, for tests: where each label went.
 pub struct Drawn {
@@ -110,7 +82,7 @@ pub fn draw_with_labels(
     draw_boxes(&mut fig, &lay, &scale);
     draw_eye_and_image_plane(&mut fig, &lay, &scale);
     for &p in &lay.lights {
-        if in_frame(&fig, p) {
+        if fig.shows(p) {
             fig.light(p);
         }
     }
@@ -194,11 +166,6 @@ fn draw_boxes(fig: &mut Figure, lay: &Layout, scale: &Scale) {
 const MET_BOX: Pen = Pen::solid(palette::BOX, 1.2);
 /// A box tested and missed.
 const MISSED_BOX: Pen = Pen::pattern(palette::BOX, 0.9, &[2.0, 3.0]);
-
-pub(super) fn in_frame(fig: &Figure, p: DVec2) -> bool {
-    let (lo, hi) = fig.visible();
-    p.cmpge(lo).all() && p.cmple(hi).all()
-}
 
 fn frame_px(fig: &Figure) -> PxRect {
     let f = fig.frame();
@@ -402,7 +369,7 @@ fn draw_off_frame(
         .zip(lay.lights.iter().copied())
         .chain([("eye".to_owned(), lay.eye)]);
     for (name, p) in named {
-        if in_frame(fig, p) {
+        if fig.shows(p) {
             continue;
         }
         let Some((_, edge)) = clip_segment(center, p, lo, hi) else {
@@ -518,26 +485,6 @@ fn half_plane(lo: DVec2, hi: DVec2, point: DVec2, outward: DVec2) -> Vec<DVec2> 
         }
     }
     out
-}
-
-/// A pale fill that hints at the material: glass blue, mirrors gray, others a
-/// washed-out version of their color.
-pub fn pale(material: &crate::shading::material::Material) -> (Rgb, u8) {
-    if material.transparent > 0.0 {
-        return ([200, 225, 250], 150);
-    }
-    if material.reflective >= 0.5 {
-        return ([215, 215, 220], 200);
-    }
-    let c = match material.pattern {
-        Pattern::Solid(c) => c,
-        Pattern::Checker { colors, .. } => (colors[0] + colors[1]) / 2.0,
-    };
-    let srgb = crate::io::image::rgb8(c.min(DVec3::ONE));
-    (
-        srgb.map(|v| (255 - (255 - u16::from(v)) * 35 / 100) as u8),
-        255,
-    )
 }
 
 #[cfg(test)]

@@ -1,14 +1,15 @@
 //! Colors and pens: what every figure draws with. One palette for all views,
 //! so a ray kind has the same color in a diagram, the inspector and the book.
 
-use crate::views::figure::Rgb;
+/// An sRGB color.
+pub type Rgb = [u8; 3];
 
 /// The colors every ray diagram uses (the inspector's diagram pane too): the
 /// Okabe–Ito palette ("Color Universal Design", 2008), chosen to stay apart
 /// for readers with red–green color blindness; ray kinds also differ by dash
 /// pattern, so a figure reads in gray too.
 pub mod palette {
-    use crate::views::figure::Rgb;
+    use super::Rgb;
     /// Primary rays.
     pub const PRIMARY: Rgb = [0, 114, 178];
     /// Reflected rays.
@@ -93,8 +94,8 @@ impl Pen {
 
 #[cfg(test)]
 mod tests {
+    use super::Rgb;
     use super::palette::*;
-    use crate::views::figure::Rgb;
 
     /// sRGB (0–255) to linear RGB (IEC 61966-2-1).
     fn linear(c: Rgb) -> [f64; 3] {

@@ -1,19 +1,19 @@
 //! The lessons: one folder per lecture topic, `lessons/NN-topic/`, holding the
-//! text (`lesson.md`), its spec ([`crate::views::lesson_spec`]: the commands
+//! text (`lesson.md`), its spec ([`crate::course::lesson_spec`]: the commands
 //! behind its figures and numbers, its exercises) and a guided step-through
-//! ([`crate::views::guide`], `steps.toml`). This module finds them, loads one
+//! ([`crate::course::guide`], `steps.toml`). This module finds them, loads one
 //! with its scene, and narrates its step-through against a fresh trace: what
 //! `raytree lesson N` shows and the book prints.
 
 use std::fmt::Write;
 use std::path::{Component, Path, PathBuf};
 
+use crate::course::guide::{self, Narration, Script};
+use crate::course::lesson_spec::{self, Spec};
 use crate::scene::Scene;
 use crate::scene::source::{self, SceneSource};
 use crate::tree::document::TraceDocument;
 use crate::tree::record;
-use crate::views::guide::{self, Narration, Script};
-use crate::views::lesson_spec::{self, Spec};
 use crate::views::text;
 
 /// The spec file in a lesson's folder.

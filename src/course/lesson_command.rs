@@ -1,8 +1,6 @@
-//! The commands of a lesson's spec ([`crate::views::lesson_spec`]): a command
+//! The commands of a lesson's spec ([`crate::course::lesson_spec`]): a command
 //! line split into arguments, and which of the spec's images and figures
 //! each one reads (an argument `NAME.png`), so the book can make those first.
-
-use crate::views::lesson_spec::Spec;
 
 /// A raytree command line, as written in the spec and as arguments.
 #[derive(Clone, Debug, PartialEq)]
@@ -75,97 +73,11 @@ pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
     })
 }
 
-/// Finds the files each command reads (an argument `NAME.png` naming an image
-/// or a figure of the spec), and refuses a name that is neither, a command
-/// that reads itself through others, and an image nothing reads.
-pub(crate) fn resolve_reads(spec: &mut Spec) -> Result<(), (usize, String)> {
-    let files: Vec<String> = spec
-        .images
-        .keys()
-        .chain(spec.figures.keys())
-        .cloned()
-        .collect();
-    let commands = spec
-        .runs
-        .iter_mut()
-        .map(|(n, r)| (format!("run {n}"), r.line, &mut r.command))
-        .chain(
-            spec.figures
-                .iter_mut()
-                .map(|(n, f)| (format!("figure {n}"), f.line, &mut f.command)),
-        )
-        .chain(
-            spec.images
-                .iter_mut()
-                .map(|(n, i)| (format!("image {n}"), i.line, &mut i.command)),
-        );
-    for (what, line, command) in commands {
-        for arg in &command.args {
-            let Some(name) = arg.strip_suffix(".png").filter(|n| !n.contains('/')) else {
-                continue;
-            };
-            if !files.iter().any(|f| f == name) {
-                return Err((
-                    line,
-                    format!("{what}: reads {arg}, but the spec makes no image or figure '{name}'"),
-                ));
-            }
-            command.reads.push(name.to_owned());
-        }
-    }
-    let reads = |name: &str| -> &[String] {
-        spec.images
-            .get(name)
-            .map(|i| &i.command)
-            .or(spec.figures.get(name).map(|f| &f.command))
-            .map_or(&[], |c| &c.reads)
-    };
-    for name in &files {
-        // Without a cycle, no chain of reads from `name` is longer than there are files.
-        let mut frontier = vec![name.as_str()];
-        for _ in 0..=files.len() {
-            frontier = frontier
-                .iter()
-                .flat_map(|n| reads(n))
-                .map(String::as_str)
-                .collect();
-            frontier.sort_unstable();
-            frontier.dedup();
-        }
-        if !frontier.is_empty() {
-            let line = spec
-                .images
-                .get(name)
-                .map_or_else(|| spec.figures[name].line, |i| i.line);
-            return Err((
-                line,
-                format!("{name} reads a file that is made from itself (a cycle of reads)"),
-            ));
-        }
-    }
-    for (name, image) in &spec.images {
-        let read = spec
-            .runs
-            .values()
-            .map(|r| &r.command)
-            .chain(spec.figures.values().map(|f| &f.command))
-            .chain(spec.images.values().map(|i| &i.command))
-            .any(|c| c.reads.contains(name));
-        if !read {
-            return Err((
-                image.line,
-                format!("image {name} is read by no command (as {name}.png)"),
-            ));
-        }
-    }
-    Ok(())
-}
-
 #[cfg(test)]
 mod tests {
     use std::path::Path;
 
-    use crate::views::lesson_spec::{Spec, parse};
+    use crate::course::lesson_spec::{Spec, parse};
 
     fn spec(text: &str) -> Result<Spec, String> {
         parse(Path::new("lessons/03-x/lesson.toml"), text)

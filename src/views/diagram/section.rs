@@ -12,7 +12,7 @@ use glam::{DMat3, DVec2, DVec3};
 
 use crate::geometry::object::{Object, Shape};
 use crate::math::ray::Ray;
-use crate::views::projection::{Outline, Projection};
+use crate::views::diagram::projection::{Outline, Projection};
 
 /// The cross-section of `object` with the drawing plane of `proj`: an ellipse
 /// for a sphere or ellipsoid, a convex polygon for a box, the segments where
@@ -231,7 +231,7 @@ fn inside_3d(object: &Object, a: DVec3, b: DVec3) -> Vec<[f64; 2]> {
 mod tests {
     use super::*;
     use crate::geometry::sphere::Sphere;
-    use crate::views::projection::View;
+    use crate::views::diagram::projection::View;
 
     fn front() -> Projection {
         Projection {

@@ -1,18 +1,21 @@
 //! The labels of a ray diagram: what each wants to name (points, objects,
 //! angles, badges), what they must not cover, and drawing them once placed by
-//! [`crate::views::labels`].
+//! [`crate::figure::labels`].
 
 use glam::DVec2;
 
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::clip::clip_line;
+use crate::figure::labels::{Label, Placed, PxRect, Target};
+use crate::figure::pen::Rgb;
+use crate::figure::pen::{Pen, palette};
 use crate::scene::Scene;
-use crate::views::clip::clip_line;
-use crate::views::diagram::{Scale, in_frame};
-use crate::views::diagram_layout::{Labels, Layout, Options, Stroke};
-use crate::views::figure::{Anchor, Figure, Rgb};
-use crate::views::labels::{Label, Placed, PxRect, Target};
+use crate::views::diagram::layout::Layout;
+use crate::views::diagram::options::{Labels, Options};
+use crate::views::diagram::projection::Outline;
+use crate::views::diagram::style::Scale;
+use crate::views::diagram::style::Stroke;
 use crate::views::numbers::num;
-use crate::views::pen::{Pen, palette};
-use crate::views::projection::Outline;
 
 /// Every label the figure wants, most important first.
 pub(super) fn label_requests(
@@ -49,7 +52,7 @@ pub(super) fn label_requests(
     }
     if options.labels == Labels::All {
         for (k, h) in lay.hits.iter().enumerate() {
-            if in_frame(fig, h.at) {
+            if fig.shows(h.at) {
                 out.push(text(format!("P{}", k + 1), palette::INK, point(h.at, 5.0)));
             }
         }
@@ -91,7 +94,7 @@ pub(super) fn label_requests(
         }
     }
     for (light, &p) in scene.lights.iter().zip(&lay.lights) {
-        if in_frame(fig, p) {
+        if fig.shows(p) {
             out.push(text(light.name.clone(), palette::INK, point(p, 14.0)));
         }
     }
@@ -105,12 +108,12 @@ pub(super) fn label_requests(
             },
         ));
     }
-    if in_frame(fig, lay.eye) {
+    if fig.shows(lay.eye) {
         out.push(text("eye".to_owned(), palette::INK, point(lay.eye, 6.0)));
     }
     if let Some((a, b, _)) = lay.image_plane {
-        let end = if in_frame(fig, a) { a } else { b };
-        if in_frame(fig, end) {
+        let end = if fig.shows(a) { a } else { b };
+        if fig.shows(end) {
             out.push(Label {
                 size: size - 2.0,
                 ..text("image plane".to_owned(), palette::INK, point(end, 3.0))

@@ -10,7 +10,7 @@
 
 use glam::DVec3;
 
-use crate::geometry::bvh::{Child, MAX_LEAF, MAX_PRIMITIVES, Node, WIDTH, set_lane};
+use crate::geometry::bvh::node::{Child, MAX_LEAF, MAX_PRIMITIVES, Node, WIDTH, set_lane};
 use crate::math::bounds::Bounds;
 
 /// Candidate split planes per split.

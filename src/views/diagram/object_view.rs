@@ -7,16 +7,17 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::labels::{self, Label, PxRect, Target};
+use crate::figure::pen::{Pen, palette};
 use crate::geometry::object::Shape;
 use crate::scene::Scene;
 use crate::tree::arithmetic::Fate;
 use crate::tree::document::TraceDocument;
-use crate::views::diagram::{Scale, draw_with_labels};
-use crate::views::diagram_layout::Options;
-use crate::views::figure::{Anchor, Figure};
-use crate::views::labels::{self, Label, PxRect, Target};
+use crate::views::diagram::draw::draw_with_labels;
+use crate::views::diagram::options::Options;
+use crate::views::diagram::style::Scale;
 use crate::views::numbers::{num, vec3};
-use crate::views::pen::{Pen, palette};
 
 /// The world view of `trace` beside the first hit on a transformed sphere, in
 /// that sphere's own space.
@@ -112,7 +113,8 @@ fn own_space(
     let start = if near_s {
         at(s)
     } else {
-        crate::views::clip::clip_segment(at(s), at(s + t_h * c), vlo, vhi).map_or(at(s), |(a, _)| a)
+        crate::figure::clip::clip_segment(at(s), at(s + t_h * c), vlo, vhi)
+            .map_or(at(s), |(a, _)| a)
     };
     fig.ellipse(
         DVec2::ZERO,

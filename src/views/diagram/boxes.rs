@@ -8,7 +8,7 @@
 use glam::{DVec2, DVec3};
 
 use crate::tree::ray_tree::BoxRecord;
-use crate::views::projection::Projection;
+use crate::views::diagram::projection::Projection;
 
 /// One box, projected.
 #[derive(Clone, Debug, PartialEq)]

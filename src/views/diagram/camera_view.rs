@@ -8,13 +8,13 @@
 
 use glam::DVec2;
 
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::labels::{self, Label, PxRect, Target};
+use crate::figure::pen::{Pen, palette};
 use crate::tree::arithmetic::{CameraRecord, CameraStage};
 use crate::tree::document::TraceDocument;
-use crate::views::diagram::Scale;
-use crate::views::figure::{Anchor, Figure};
-use crate::views::labels::{self, Label, PxRect, Target};
+use crate::views::diagram::style::Scale;
 use crate::views::numbers::num;
-use crate::views::pen::{Pen, palette};
 
 /// The camera view of `trace`'s pixel, `width × height` pixels.
 pub fn draw(trace: &TraceDocument, width: u32, height: u32) -> Result<Figure, String> {

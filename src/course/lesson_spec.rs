@@ -37,12 +37,11 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
-use serde::Deserialize;
-use toml::Spanned;
+use crate::course::spec_file::{NumberFile, SpecFile};
 
-pub use crate::views::lesson_command::Command;
-use crate::views::lesson_command::{command, resolve_reads};
-use crate::views::teacher_file::{self, line_of};
+pub use crate::course::lesson_command::Command;
+use crate::course::lesson_command::command;
+use crate::course::teacher_file::{self, line_of};
 
 /// A spec file, read and checked: every name it refers to exists.
 #[derive(Clone, Debug, PartialEq)]
@@ -109,7 +108,7 @@ pub struct Excerpt {
 /// Where a number comes from.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Source {
-    /// A name the step-through scripts use (`views::guide::values`) at a step of a trace.
+    /// A name the step-through scripts use (`course::guide::values`) at a step of a trace.
     Step {
         /// The step, 1-based.
         step: usize,
@@ -144,64 +143,6 @@ pub struct Exercise {
     pub answer: String,
     /// Line of the spec file.
     pub line: usize,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct SpecFile {
-    title: Option<String>,
-    summary: Option<String>,
-    #[serde(default)]
-    run: BTreeMap<String, Spanned<RunFile>>,
-    #[serde(default)]
-    figure: BTreeMap<String, Spanned<FigureFile>>,
-    #[serde(default)]
-    image: BTreeMap<String, Spanned<RunFile>>,
-    #[serde(default)]
-    excerpt: BTreeMap<String, Spanned<ExcerptFile>>,
-    #[serde(default)]
-    number: BTreeMap<String, Spanned<NumberFile>>,
-    #[serde(default)]
-    exercise: Vec<Spanned<ExerciseFile>>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct RunFile {
-    command: String,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct FigureFile {
-    command: String,
-    caption: String,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ExcerptFile {
-    run: String,
-    steps: Option<[usize; 2]>,
-    lines: Option<[usize; 2]>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct NumberFile {
-    run: String,
-    step: Option<usize>,
-    value: Option<String>,
-    json: Option<String>,
-    after: Option<String>,
-    before: Option<String>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct ExerciseFile {
-    task: String,
-    answer: String,
 }
 
 /// Words a text uses for its own directives, so no number may take them.
@@ -395,6 +336,92 @@ fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
                 .to_owned(),
         ),
     }
+}
+
+/// Finds the files each command reads (an argument `NAME.png` naming an image
+/// or a figure of the spec), and refuses a name that is neither, a command
+/// that reads itself through others, and an image nothing reads.
+fn resolve_reads(spec: &mut Spec) -> Result<(), (usize, String)> {
+    let files: Vec<String> = spec
+        .images
+        .keys()
+        .chain(spec.figures.keys())
+        .cloned()
+        .collect();
+    let commands = spec
+        .runs
+        .iter_mut()
+        .map(|(n, r)| (format!("run {n}"), r.line, &mut r.command))
+        .chain(
+            spec.figures
+                .iter_mut()
+                .map(|(n, f)| (format!("figure {n}"), f.line, &mut f.command)),
+        )
+        .chain(
+            spec.images
+                .iter_mut()
+                .map(|(n, i)| (format!("image {n}"), i.line, &mut i.command)),
+        );
+    for (what, line, command) in commands {
+        for arg in &command.args {
+            let Some(name) = arg.strip_suffix(".png").filter(|n| !n.contains('/')) else {
+                continue;
+            };
+            if !files.iter().any(|f| f == name) {
+                return Err((
+                    line,
+                    format!("{what}: reads {arg}, but the spec makes no image or figure '{name}'"),
+                ));
+            }
+            command.reads.push(name.to_owned());
+        }
+    }
+    let reads = |name: &str| -> &[String] {
+        spec.images
+            .get(name)
+            .map(|i| &i.command)
+            .or(spec.figures.get(name).map(|f| &f.command))
+            .map_or(&[], |c| &c.reads)
+    };
+    for name in &files {
+        // Without a cycle, no chain of reads from `name` is longer than there are files.
+        let mut frontier = vec![name.as_str()];
+        for _ in 0..=files.len() {
+            frontier = frontier
+                .iter()
+                .flat_map(|n| reads(n))
+                .map(String::as_str)
+                .collect();
+            frontier.sort_unstable();
+            frontier.dedup();
+        }
+        if !frontier.is_empty() {
+            let line = spec
+                .images
+                .get(name)
+                .map_or_else(|| spec.figures[name].line, |i| i.line);
+            return Err((
+                line,
+                format!("{name} reads a file that is made from itself (a cycle of reads)"),
+            ));
+        }
+    }
+    for (name, image) in &spec.images {
+        let read = spec
+            .runs
+            .values()
+            .map(|r| &r.command)
+            .chain(spec.figures.values().map(|f| &f.command))
+            .chain(spec.images.values().map(|i| &i.command))
+            .any(|c| c.reads.contains(name));
+        if !read {
+            return Err((
+                image.line,
+                format!("image {name} is read by no command (as {name}.png)"),
+            ));
+        }
+    }
+    Ok(())
 }
 
 #[cfg(test)]

@@ -3,8 +3,8 @@
 
 use glam::DVec2;
 
-use crate::views::figure::{Anchor, Figure};
-use crate::views::pen::{Pen, palette};
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::pen::{Pen, palette};
 
 /// The length of a pen's sample line in the legend, in pixels.
 const LEGEND_SAMPLE: f64 = 36.0;

@@ -21,11 +21,11 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
+use crate::course::teacher_file;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
 use crate::tree::steps::StepKind;
 use crate::views::numbers::{color, degrees, num, vec3};
-use crate::views::teacher_file;
 
 /// A guided step-through, read and checked.
 #[derive(Clone, Debug, PartialEq)]

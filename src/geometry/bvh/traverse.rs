@@ -1,0 +1,212 @@
+//! Walking the hierarchy: nearer boxes first, four boxes a visit with SIMD,
+//! each single-precision box test widened by its rounding bound so that a ray
+//! that meets a box in exact arithmetic is never culled ([`RayBox4`]).
+
+use std::ops::ControlFlow;
+
+use wide::f32x4;
+
+use crate::geometry::bvh::Bvh;
+use crate::geometry::bvh::build::SAH_MAX_DEPTH;
+use crate::geometry::bvh::node::{Child, Node, WIDTH, round_down};
+use crate::geometry::hit::TestCounts;
+use crate::math::bounds::{Bounds, RayBox};
+
+/// Room on the traversal stack: up to `WIDTH - 1` entries per level, and a tree
+/// is at most `SAH_MAX_DEPTH` + log₄(2²⁸) levels deep.
+const STACK: usize = (WIDTH - 1) * (SAH_MAX_DEPTH as usize + 16);
+
+impl Bvh {
+    /// Calls `visit(primitive, t_max)` for every primitive in a leaf whose box the
+    /// ray meets within `(t_min, *t_max)`, nearer boxes first. `visit` may shrink
+    /// `t_max` (a closest-hit search) or break (a shadow ray's any-hit). Every box
+    /// tested is counted in `tested` (four to a node, less in a node not full).
+    #[inline]
+    pub fn traverse(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    }
+
+    /// [`Bvh::traverse`], also calling `seen(bounds, met)` for every box tested
+    /// (as stored, rounded outward) and whether the ray met it: what a recorded
+    /// ray keeps so a diagram can draw the boxes it visited. With a `seen` that
+    /// does nothing, this is `traverse` exactly.
+    #[inline]
+    pub fn traverse_seeing(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        mut seen: impl FnMut(Bounds, bool),
+        mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        if self.nodes.is_empty() {
+            return ControlFlow::Continue(());
+        }
+        let ray = RayBox4::new(ray);
+        let t_min = round_down(t_min);
+        // Boxes still to visit, with where the ray enters them: a box entered
+        // beyond a closer hit found meanwhile is skipped when it comes up.
+        let mut stack = arrayvec::ArrayVec::<(Child, f32), STACK>::new();
+        let mut at = Child::inner(0);
+        let mut reach = RayBox4::reach(*t_max);
+        loop {
+            if at.is_leaf() {
+                for &p in &self.order[at.primitives()] {
+                    visit(p as usize, t_max)?;
+                }
+                reach = RayBox4::reach(*t_max);
+            } else {
+                let node = &self.nodes[at.0 as usize];
+                tested.boxes += u32::from(node.len);
+                let (mask, enter) = ray.hits(node, t_min, reach);
+                for lane in 0..usize::from(node.len) {
+                    seen(node.lane(lane), mask & (1 << lane) != 0);
+                }
+                let mut near = [(0.0f32, Child(0)); WIDTH];
+                let mut n = 0;
+                for (lane, entry) in enter.iter().enumerate() {
+                    if mask & (1 << lane) != 0 {
+                        near[n] = (*entry, node.children[lane]);
+                        n += 1;
+                    }
+                }
+                if n > 0 {
+                    // Farthest first onto the stack; go on with the nearest.
+                    sort_descending(&mut near[..n]);
+                    for &(entry, child) in &near[..n - 1] {
+                        stack.push((child, entry));
+                    }
+                    at = near[n - 1].1;
+                    continue;
+                }
+            }
+            loop {
+                let Some((child, entry)) = stack.pop() else {
+                    return ControlFlow::Continue(());
+                };
+                if entry <= reach {
+                    at = child;
+                    break;
+                }
+            }
+        }
+    }
+}
+
+/// Up to four (entry, child) pairs sorted by entry, farthest first (insertion sort).
+#[inline]
+fn sort_descending(hits: &mut [(f32, Child)]) {
+    for i in 1..hits.len() {
+        let mut j = i;
+        while j > 0 && hits[j - 1].0 < hits[j].0 {
+            hits.swap(j - 1, j);
+            j -= 1;
+        }
+    }
+}
+
+/// A ray prepared for testing four single-precision boxes at once.
+///
+/// In exact arithmetic the slab test with the origin moved toward the box by up
+/// to the origin's rounding (`origin_near` for the entering planes, `origin_far`
+/// for the leaving ones) only widens the interval, so the ray's rounding to
+/// `f32` loses no box. What remains is the rounding of the test itself: each
+/// slab distance `(plane − origin) · (1/dir)` is off by at most three roundings,
+/// a relative γ(3) (the reciprocal, the subtraction, the product), so a box is
+/// kept when the entering distance is at most the leaving one (or the ray's
+/// `t_max`) times `1 + 2γ(4)` (Ize, JCGT 2013; pbrt-v4 §6.1.2), the fourth
+/// rounding being that product's own.
+#[derive(Clone, Copy, Debug)]
+pub struct RayBox4 {
+    origin_near: [f32x4; 3],
+    origin_far: [f32x4; 3],
+    inv_dir: [f32x4; 3],
+    /// Per axis: which row of a node's bounds holds the entering planes.
+    near: [usize; 3],
+}
+
+impl RayBox4 {
+    /// Prepares `ray`.
+    #[inline]
+    pub fn new(ray: &RayBox) -> RayBox4 {
+        let (o, inv) = (ray.origin(), ray.inv_dir());
+        // The origin rounded to f32, then moved at least one ULP down and up
+        // (|f|·2⁻²³ is one to two ULPs of f; 2⁻¹²⁶ covers zero and subnormals):
+        // the true origin lies between `lo` and `hi`.
+        let f = f32x4::new([o.x as f32, o.y as f32, o.z as f32, 0.0]);
+        let step = f.abs() * f32x4::splat(f32::EPSILON) + f32x4::splat(f32::MIN_POSITIVE);
+        let (lo, hi) = ((f - step).to_array(), (f + step).to_array());
+        let axis = |i: usize| {
+            let neg = ray.dir_is_neg(i);
+            // Entering planes: moving the origin toward the box can only lower the
+            // entering distance; leaving planes: away from it, raising the leaving one.
+            let (o_near, o_far) = if neg { (lo[i], hi[i]) } else { (hi[i], lo[i]) };
+            (
+                f32x4::splat(o_near),
+                f32x4::splat(o_far),
+                f32x4::splat(reciprocal(inv[i])),
+                usize::from(neg),
+            )
+        };
+        let (x, y, z) = (axis(0), axis(1), axis(2));
+        RayBox4 {
+            origin_near: [x.0, y.0, z.0],
+            origin_far: [x.1, y.1, z.1],
+            inv_dir: [x.2, y.2, z.2],
+            near: [x.3, y.3, z.3],
+        }
+    }
+
+    /// How far a box may be entered and still count, for a ray whose interval
+    /// ends at `t_max`: `t_max` rounded up to f32 (at least it: one rounding of
+    /// 2⁻²⁴ made up by 2⁻²²), grown by the test's rounding bound.
+    #[inline]
+    pub(super) fn reach(t_max: f64) -> f32 {
+        const GAMMA4: f32 = 4.0 * f32::EPSILON * 0.5 / (1.0 - 4.0 * f32::EPSILON * 0.5);
+        (t_max as f32) * (1.0 + 4.0 * f32::EPSILON) * (1.0 + 2.0 * GAMMA4)
+    }
+
+    /// Which of the node's four boxes the ray meets within `(t_min, t_max)` (bit
+    /// `i` for lane `i`), and where it enters each; `reach` is [`RayBox4::reach`]
+    /// of `t_max`. A NaN distance (a ray lying in a slab's plane) is skipped by
+    /// `max` and `min`, so that slab keeps the box.
+    #[inline]
+    pub(super) fn hits(&self, node: &Node, t_min: f32, reach: f32) -> (u32, [f32; WIDTH]) {
+        const GAMMA4: f32 = 4.0 * f32::EPSILON * 0.5 / (1.0 - 4.0 * f32::EPSILON * 0.5);
+        let mut enter = f32x4::splat(t_min);
+        let mut leave = f32x4::splat(f32::INFINITY);
+        for axis in 0..3 {
+            let near = node.bounds[self.near[axis]][axis];
+            let far = node.bounds[1 - self.near[axis]][axis];
+            let t0 = (near - self.origin_near[axis]) * self.inv_dir[axis];
+            let t1 = (far - self.origin_far[axis]) * self.inv_dir[axis];
+            enter = enter.max(t0);
+            leave = leave.min(t1);
+        }
+        let leave = (leave * f32x4::splat(1.0 + 2.0 * GAMMA4)).min(f32x4::splat(reach));
+        (enter.simd_le(leave).to_bitmask(), enter.to_array())
+    }
+}
+
+/// A reciprocal direction component in `f32`. One too large for `f32` (the
+/// direction's component is below 2⁻¹²⁸ but not zero) becomes NaN, which the box
+/// test skips: that axis then culls nothing, where an infinity would cull boxes
+/// the ray reaches after all. A true infinity (a zero component) stays: the ray
+/// is parallel to those slabs, and infinite arithmetic gets that right.
+#[inline]
+fn reciprocal(inv: f64) -> f32 {
+    let f = inv as f32;
+    if f.is_infinite() && inv.is_finite() {
+        f32::NAN
+    } else {
+        f
+    }
+}
