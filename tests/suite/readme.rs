@@ -1,15 +1,20 @@
-//! The README's example output is what the program prints today.
-//! `RAYTREE_BLESS=1 cargo test --release readme` rewrites it.
+//! The README and the page it sends readers to for each command,
+//! `docs/commands.md`, show what the program prints and draws today.
+//! `RAYTREE_BLESS=1 cargo test --release readme` rewrites the example output
+//! and figures.
 
 use std::process::Command;
 
+/// The page explaining each command, where the README's long examples live.
+const COMMANDS_PAGE: &str = "docs/commands.md";
+
 #[test]
-fn readme_trace_example_is_current() {
+fn trace_example_is_current() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let path = format!("{root}/README.md");
+    let path = format!("{root}/{COMMANDS_PAGE}");
     let readme = std::fs::read_to_string(&path).unwrap();
     let marker = "<!-- trace: ";
-    let start = readme.find(marker).expect("the README shows a trace");
+    let start = readme.find(marker).expect("docs/commands.md shows a trace");
     let args_end = readme[start..].find(" -->").unwrap() + start;
     let args: Vec<&str> = readme[start + marker.len()..args_end]
         .split_whitespace()
@@ -36,7 +41,7 @@ fn readme_trace_example_is_current() {
     assert_eq!(
         &readme[block_start..block_end],
         now,
-        "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --release readme"
+        "docs/commands.md's trace example is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
 }
 
@@ -63,23 +68,23 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
 }
 
 #[test]
-fn readme_lists_the_inspectors_keys_as_the_help_does() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+fn commands_page_lists_the_inspectors_keys_as_the_help_does() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let readme = std::fs::read_to_string(format!("{root}/{COMMANDS_PAGE}")).unwrap();
     for (key, what) in raytree::inspector::KEYS {
         let row = format!("| {key} | {what} |");
-        assert!(readme.contains(&row), "README.md lacks the row {row}");
+        assert!(readme.contains(&row), "{COMMANDS_PAGE} lacks the row {row}");
     }
 }
 
 #[test]
-fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
+fn inspector_capture_is_the_snapshot_the_tests_check() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let readme = std::fs::read_to_string(format!("{root}/{COMMANDS_PAGE}")).unwrap();
     let marker = "<!-- inspector: ";
     let at = readme
         .find(marker)
-        .expect("README.md has an inspector capture");
+        .expect("docs/commands.md has an inspector capture");
     let rest = &readme[at + marker.len()..];
     let file = &rest[..rest.find(" -->").unwrap()];
     let block = rest.split("```text\n").nth(1).unwrap();
@@ -87,7 +92,7 @@ fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
     let snapshot = std::fs::read_to_string(format!("{root}/{file}")).unwrap();
     assert!(
         block == snapshot,
-        "README.md's inspector capture differs from {file} (copy it in after re-blessing)"
+        "{COMMANDS_PAGE}'s inspector capture differs from {file} (copy it in after re-blessing)"
     );
 }
 
@@ -108,7 +113,7 @@ fn run_in_root(args: &[&str]) -> String {
 }
 
 #[test]
-fn readme_figures_are_what_the_commands_draw_today() {
+fn figures_are_what_the_commands_draw_today() {
     let root = env!("CARGO_MANIFEST_DIR");
     let dir = std::env::temp_dir().join(format!("raytree-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -153,13 +158,13 @@ fn readme_figures_are_what_the_commands_draw_today() {
 }
 
 #[test]
-fn readme_forward_report_is_current() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+fn forward_report_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/commands.md");
     let readme = std::fs::read_to_string(path).unwrap();
     let marker = "$ raytree forward scenes/whitted.json --photons 1000000\n";
     let start = readme
         .find(marker)
-        .expect("the README shows a forward report")
+        .expect("docs/commands.md shows a forward report")
         + marker.len();
     let end = readme[start..].find("```").unwrap() + start;
     let out =
@@ -180,6 +185,6 @@ fn readme_forward_report_is_current() {
     assert_eq!(
         &readme[start..end],
         now,
-        "README.md's forward report is stale: RAYTREE_BLESS=1 cargo test --release readme"
+        "docs/commands.md's forward report is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
 }
