@@ -1,15 +1,21 @@
-//! The README's example output is what the program prints today.
-//! `RAYTREE_BLESS=1 cargo test --release readme` rewrites it.
+//! The README and the page it sends readers to for each command,
+//! `docs/commands.md`, show what the program prints and draws today, and every
+//! command the README shows runs. `RAYTREE_BLESS=1 cargo test --release readme`
+//! rewrites the example output and figures.
 
+use std::path::Path;
 use std::process::Command;
 
+/// The page explaining each command, where the README's long examples live.
+const COMMANDS_PAGE: &str = "docs/commands.md";
+
 #[test]
-fn readme_trace_example_is_current() {
+fn trace_example_is_current() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let path = format!("{root}/README.md");
+    let path = format!("{root}/{COMMANDS_PAGE}");
     let readme = std::fs::read_to_string(&path).unwrap();
     let marker = "<!-- trace: ";
-    let start = readme.find(marker).expect("the README shows a trace");
+    let start = readme.find(marker).expect("docs/commands.md shows a trace");
     let args_end = readme[start..].find(" -->").unwrap() + start;
     let args: Vec<&str> = readme[start + marker.len()..args_end]
         .split_whitespace()
@@ -36,7 +42,7 @@ fn readme_trace_example_is_current() {
     assert_eq!(
         &readme[block_start..block_end],
         now,
-        "README.md's trace example is stale: RAYTREE_BLESS=1 cargo test --release readme"
+        "docs/commands.md's trace example is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
 }
 
@@ -63,23 +69,23 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
 }
 
 #[test]
-fn readme_lists_the_inspectors_keys_as_the_help_does() {
-    let readme =
-        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+fn commands_page_lists_the_inspectors_keys_as_the_help_does() {
+    let root = env!("CARGO_MANIFEST_DIR");
+    let readme = std::fs::read_to_string(format!("{root}/{COMMANDS_PAGE}")).unwrap();
     for (key, what) in raytree::inspector::KEYS {
         let row = format!("| {key} | {what} |");
-        assert!(readme.contains(&row), "README.md lacks the row {row}");
+        assert!(readme.contains(&row), "{COMMANDS_PAGE} lacks the row {row}");
     }
 }
 
 #[test]
-fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
+fn inspector_capture_is_the_snapshot_the_tests_check() {
     let root = env!("CARGO_MANIFEST_DIR");
-    let readme = std::fs::read_to_string(format!("{root}/README.md")).unwrap();
+    let readme = std::fs::read_to_string(format!("{root}/{COMMANDS_PAGE}")).unwrap();
     let marker = "<!-- inspector: ";
     let at = readme
         .find(marker)
-        .expect("README.md has an inspector capture");
+        .expect("docs/commands.md has an inspector capture");
     let rest = &readme[at + marker.len()..];
     let file = &rest[..rest.find(" -->").unwrap()];
     let block = rest.split("```text\n").nth(1).unwrap();
@@ -87,7 +93,7 @@ fn readme_inspector_capture_is_the_snapshot_the_tests_check() {
     let snapshot = std::fs::read_to_string(format!("{root}/{file}")).unwrap();
     assert!(
         block == snapshot,
-        "README.md's inspector capture differs from {file} (copy it in after re-blessing)"
+        "{COMMANDS_PAGE}'s inspector capture differs from {file} (copy it in after re-blessing)"
     );
 }
 
@@ -108,7 +114,7 @@ fn run_in_root(args: &[&str]) -> String {
 }
 
 #[test]
-fn readme_figures_are_what_the_commands_draw_today() {
+fn figures_are_what_the_commands_draw_today() {
     let root = env!("CARGO_MANIFEST_DIR");
     let dir = std::env::temp_dir().join(format!("raytree-readme-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
@@ -153,13 +159,13 @@ fn readme_figures_are_what_the_commands_draw_today() {
 }
 
 #[test]
-fn readme_forward_report_is_current() {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/README.md");
+fn forward_report_is_current() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/commands.md");
     let readme = std::fs::read_to_string(path).unwrap();
     let marker = "$ raytree forward scenes/whitted.json --photons 1000000\n";
     let start = readme
         .find(marker)
-        .expect("the README shows a forward report")
+        .expect("docs/commands.md shows a forward report")
         + marker.len();
     let end = readme[start..].find("```").unwrap() + start;
     let out =
@@ -180,6 +186,181 @@ fn readme_forward_report_is_current() {
     assert_eq!(
         &readme[start..end],
         now,
-        "README.md's forward report is stale: RAYTREE_BLESS=1 cargo test --release readme"
+        "docs/commands.md's forward report is stale: RAYTREE_BLESS=1 cargo test --release readme"
     );
+}
+
+/// The program's arguments on each command line of the README's code blocks,
+/// in order: lines starting `raytree ` or `cargo run --release -- ` (the same
+/// program), an optional `$ ` prompt and a trailing `# comment` left out.
+fn readme_commands(readme: &str) -> Vec<Vec<String>> {
+    let mut commands = Vec::new();
+    let mut in_block = false;
+    for line in readme.lines() {
+        if line.trim_start().starts_with("```") {
+            in_block = !in_block;
+            continue;
+        }
+        if !in_block {
+            continue;
+        }
+        let line = line.trim().trim_start_matches("$ ");
+        let line = line.split(" #").next().unwrap();
+        let Some(args) = line
+            .strip_prefix("raytree ")
+            .or_else(|| line.strip_prefix("cargo run --release -- "))
+        else {
+            continue;
+        };
+        // Split on spaces as a shell would only when nothing is quoted,
+        // substituted or redirected.
+        assert!(
+            !args.contains(['\'', '"', '`', '$', '|', '>', '<', ';', '&', '\\']),
+            "README.md: split this command by hand in the test: {line}"
+        );
+        let args: Vec<String> = args.split_whitespace().map(str::to_owned).collect();
+        // Outputs land in the copy the test runs in, never in the repository.
+        assert!(
+            args.iter()
+                .all(|a| !a.starts_with('/') && !a.split('/').any(|part| part == "..")),
+            "README.md: a command that reaches outside the repository: {line}"
+        );
+        commands.push(args);
+    }
+    commands
+}
+
+/// Copies the folder `from` into `to`, files and subfolders.
+fn copy_folder(from: &Path, to: &Path) {
+    std::fs::create_dir_all(to).unwrap();
+    for entry in std::fs::read_dir(from).unwrap() {
+        let entry = entry.unwrap();
+        let target = to.join(entry.file_name());
+        if entry.file_type().unwrap().is_dir() {
+            copy_folder(&entry.path(), &target);
+        } else {
+            std::fs::copy(entry.path(), &target).unwrap();
+        }
+    }
+}
+
+/// What a README command needs that this machine may lack, if anything.
+fn missing_for(args: &[String], lecture: Option<&Path>) -> Option<&'static str> {
+    if args[0] != "postscript" {
+        return None;
+    }
+    let slips_only = args.iter().any(|a| a == "--slips");
+    if !slips_only && Command::new("gs").arg("--version").output().is_err() {
+        return Some("Ghostscript (gs) is not installed (.ci/run installs it)");
+    }
+    // Without a SOURCE, the command reads the lecture.
+    let takes_value = ["-o", "--output", "--timeout"];
+    let source = args[1..]
+        .iter()
+        .enumerate()
+        .any(|(k, a)| !a.starts_with('-') && (k == 0 || !takes_value.contains(&args[k].as_str())));
+    if !source && lecture.is_none() {
+        return Some("the lecture is not beside the repository (../shared/lecture-raytracing.md)");
+    }
+    None
+}
+
+#[test]
+fn every_command_in_the_readme_runs() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let readme = std::fs::read_to_string(root.join("README.md")).unwrap();
+    let commands = readme_commands(&readme);
+    assert!(commands.len() >= 12, "{commands:?}");
+
+    // A copy of what the commands read, run from as from the repository's root:
+    // the scenes, the lessons (`raytree lesson` reads ./lessons), any other
+    // top-level folder an argument names, and the lecture beside it as
+    // `postscript` looks for it.
+    let tmp = tempfile::tempdir().unwrap();
+    let copy = tmp.path().join("raytree");
+    let mut folders = vec!["scenes".to_owned(), "lessons".to_owned()];
+    for arg in commands.iter().flatten() {
+        let first = arg.split('/').next().unwrap();
+        if arg.contains('/') && root.join(first).is_dir() && !folders.iter().any(|f| f == first) {
+            folders.push(first.to_owned());
+        }
+    }
+    for folder in &folders {
+        copy_folder(&root.join(folder), &copy.join(folder));
+    }
+    let lecture = root
+        .ancestors()
+        .map(|d| d.join("shared/lecture-raytracing.md"))
+        .find(|p| p.is_file());
+    if let Some(lecture) = &lecture {
+        std::fs::create_dir_all(tmp.path().join("shared")).unwrap();
+        std::fs::copy(lecture, tmp.path().join("shared/lecture-raytracing.md")).unwrap();
+    }
+
+    for args in &commands {
+        let shown = format!("raytree {}", args.join(" "));
+        if let Some(why) = missing_for(args, lecture.as_deref()) {
+            println!("skipped `{shown}`: {why}");
+            continue;
+        }
+        let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(args)
+            .current_dir(&copy)
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        if args[0] == "inspect" {
+            // The inspector needs a terminal, and the test has none: it reads
+            // its arguments, the scene and the pixel first, so this refusal
+            // means all of them were accepted. inspector_tmux.rs drives it in
+            // a real terminal.
+            assert_eq!(
+                (out.status.code(), stderr.as_ref()),
+                (
+                    Some(1),
+                    "error: raytree inspect needs a terminal (standard output is not one)\n"
+                ),
+                "README.md: `{shown}`"
+            );
+            continue;
+        }
+        // `raytree lesson N` prints its step-through when the output is not a
+        // terminal, as here; the other commands run as they would for a reader.
+        assert!(
+            out.status.success(),
+            "README.md: `{shown}` failed: {stderr}"
+        );
+    }
+}
+
+#[test]
+fn the_readme_shows_every_command() {
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .arg("--help")
+        .output()
+        .unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    let names: Vec<&str> = help
+        .lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        // A command's line is indented two spaces; a wrapped description, more.
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|n| *n != "help")
+        .collect();
+    assert!(
+        !names.is_empty(),
+        "raytree --help lists no commands: {help}"
+    );
+    let readme =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
+    let commands = readme_commands(&readme);
+    for name in names {
+        assert!(
+            commands.iter().any(|args| args[0] == name),
+            "README.md has no example of `raytree {name}`"
+        );
+    }
 }
