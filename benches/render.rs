@@ -7,7 +7,6 @@
 use divan::Bencher;
 use divan::counter::ItemsCount;
 use glam::DVec3;
-use indicatif::ProgressBar;
 use raytree::geometry::plane::Plane;
 use raytree::geometry::sphere::Sphere;
 use raytree::math::ray::Ray;

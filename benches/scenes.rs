@@ -16,7 +16,6 @@
 use std::path::Path;
 use std::time::Instant;
 
-use indicatif::ProgressBar;
 use raytree::methods::Accel;
 use raytree::scene::Scene;
 use raytree::trace::render::render_counting_with;
@@ -29,7 +28,9 @@ fn time_render(scene: &Scene, runs: usize) -> (f64, u64) {
     let mut rays = 0;
     for _ in 0..runs {
         let start = Instant::now();
-        let (_, counted) = render_counting_with(&tracer, &ProgressBar::hidden()).expect("memory");
+        let (_, counted) =
+            render_counting_with(&tracer, &raytree::trace::progress::Progress::QUIET)
+                .expect("memory");
         times.push(start.elapsed().as_secs_f64());
         rays = counted.total();
     }

@@ -1,18 +1,14 @@
 //! What happens in each pixel, in a few numbers: whether its tree holds a
 //! total internal reflection, a blocked shadow ray, a refraction, a branch cut
 //! by the weight cutoff, a missed primary ray, how deep it goes, how many rays
-//! and tests it costs. A recorder that only counts (no tree is built), so the
-//! whole image is scanned in about a second; the inspector finds pixels and
-//! colors its overlays from it.
+//! and tests it costs. Read from the per-pixel record that `render --aov`
+//! reads too (no tree is built), so an overlay shows the AOV's numbers; the
+//! inspector finds pixels and colors its overlays from it.
 
-use rayon::prelude::*;
-
-use crate::geometry::hit::TestCounts;
 use crate::scene::Scene;
-use crate::trace::pixel::pixel_color;
-use crate::trace::recorder::{
-    Branch, BranchEvent, RayKind, RayStart, Recorder, ShadowEvent, ShadowOutcome, SumEvent,
-};
+use crate::trace::pixel_record::{SampleRecord, record_pixel};
+use crate::trace::progress::Progress;
+use crate::trace::render::{Pixels, trace_pixels};
 use crate::trace::tracer::Tracer;
 
 /// One pixel's features.
@@ -36,83 +32,47 @@ pub struct Features {
     pub tests: u32,
 }
 
-/// Counts into [`Features`] as the tracer runs.
-#[derive(Default)]
-struct Counter {
-    features: Features,
-    depths: Vec<u32>,
-}
-
-impl Recorder for Counter {
-    // Test counts come only with the detailed events.
-    const ENABLED: bool = true;
-
-    fn ray_started(&mut self, start: &RayStart) {
-        self.features.rays += 1;
-        self.features.depth = self.features.depth.max(start.depth);
-        self.depths.push(start.depth);
-    }
-
-    fn tested(&mut self, tested: &TestCounts) {
-        self.features.tests += tested.boxes + tested.primitives;
-    }
-
-    fn missed(&mut self) {
-        if self.depths.last() == Some(&1) {
-            self.features.miss = true;
+impl Features {
+    /// A pixel's features from its record: what any of its samples met.
+    pub fn of(samples: &[SampleRecord]) -> Features {
+        let count = |n: u64| u32::try_from(n).unwrap_or(u32::MAX);
+        Features {
+            tir: samples.iter().any(|s| s.tir),
+            blocked: samples.iter().any(|s| s.blocked),
+            refraction: samples.iter().any(|s| s.refraction),
+            cutoff: samples.iter().any(|s| s.cutoff),
+            miss: samples.iter().any(|s| s.hit.is_none()),
+            depth: samples.iter().map(|s| s.depth).max().unwrap_or(0),
+            rays: count(samples.iter().map(|s| s.rays.total()).sum()),
+            tests: count(samples.iter().map(|s| s.tests).sum()),
         }
-    }
-
-    fn shadow_ray(&mut self, shadow: &ShadowEvent) {
-        if !matches!(shadow.outcome, ShadowOutcome::FacesAway) {
-            self.features.rays += 1;
-            self.features.tests += shadow.tested.boxes + shadow.tested.primitives;
-        }
-        if matches!(shadow.outcome, ShadowOutcome::Blocked { .. }) {
-            self.features.blocked = true;
-        }
-    }
-
-    fn branch(&mut self, branch: &BranchEvent) {
-        match branch.branch {
-            Branch::TotalInternalReflection => self.features.tir = true,
-            Branch::WeightCutoff => self.features.cutoff = true,
-            Branch::Traced if branch.kind == RayKind::Refracted => self.features.refraction = true,
-            _ => {}
-        }
-    }
-
-    fn ray_finished(&mut self, _sum: &SumEvent) {
-        self.depths.pop();
     }
 }
 
-/// The features of pixel `(x, y)`.
+/// The features of pixel `(x, y)`, recorded on its own (as `raytree trace`
+/// and `render --aov` record it).
 pub fn of_pixel(tracer: &Tracer, scene: &Scene, x: u32, y: u32) -> Features {
-    let mut counter = Counter::default();
-    pixel_color(tracer, &scene.camera(), x, y, &mut counter);
-    counter.features
+    Features::of(&record_pixel(tracer, &scene.camera(), x, y, None).samples)
 }
 
-/// The features of every `stride`-th pixel across and down, row by row, on all
-/// cores: `(columns, rows, features)`.
+/// The features of every `stride`-th pixel across and down, row by row,
+/// through the one pixel loop: `(columns, rows, features)`.
 pub fn scan(scene: &Scene, stride: u32) -> FeatureMap {
     let stride = stride.max(1);
     let tracer = Tracer::new(scene);
-    let (w, h) = (scene.settings.width, scene.settings.height);
-    let (cols, rows) = (w.div_ceil(stride), h.div_ceil(stride));
-    let cells: Vec<Features> = (0..rows)
-        .into_par_iter()
-        .flat_map_iter(|j| {
-            let tracer = &tracer;
-            (0..cols).map(move |i| of_pixel(tracer, scene, i * stride, j * stride))
-        })
-        .collect();
+    let traced = trace_pixels(
+        scene,
+        Pixels::Every(stride),
+        || (),
+        |_, x, y| of_pixel(&tracer, scene, x, y),
+        &Progress::QUIET,
+    )
+    .expect("the scene's size is capped on loading, so a cell per pixel fits in memory");
     FeatureMap {
         stride,
-        cols,
-        rows,
-        cells,
+        cols: traced.cols,
+        rows: traced.rows,
+        cells: traced.cells,
     }
 }
 

@@ -6,12 +6,12 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
 
-use rayon::prelude::*;
-
 use crate::io::image::rgb8;
 use crate::scene::Scene;
 use crate::trace::pixel::pixel_color;
+use crate::trace::progress::Progress;
 use crate::trace::recorder::NoRecorder;
+use crate::trace::render::{Pixels, trace_pixels};
 use crate::trace::tracer::Tracer;
 
 /// Which image pixels the pane's dots show: dot `(i, j)` shows the image pixel
@@ -72,28 +72,28 @@ pub fn render_picture(
     let tracer = Tracer::new(scene);
     let camera = scene.camera();
     let step: u16 = if pass == 0 { 4 } else { 1 };
-    let color = |i: u16, j: u16| {
-        window
-            .pixel_at(i, j, w, h)
-            .map(|(x, y)| rgb8(pixel_color(&tracer, &camera, x, y, &mut NoRecorder)))
+    let pixels = Pixels::Window {
+        left: window.left,
+        top: window.top,
+        scale: window.scale,
+        cols: u32::from(window.cols),
+        rows: u32::from(window.rows),
+        step: u32::from(step),
     };
-    let rows: Vec<Option<Vec<Option<[u8; 3]>>>> = (0..window.rows.div_ceil(step))
-        .into_par_iter()
-        .map(|bj| {
-            if cancelled() {
-                return None;
-            }
-            let j = bj * step;
-            Some(
-                (0..window.cols.div_ceil(step))
-                    .map(|bi| color(bi * step, j))
-                    .collect(),
-            )
-        })
-        .collect();
+    let traced = trace_pixels(
+        scene,
+        pixels,
+        || NoRecorder,
+        |rec, x, y| Some(rgb8(pixel_color(&tracer, &camera, x, y, rec))),
+        &Progress::cancellable(cancelled),
+    )
+    .ok()?;
+    let rows = traced
+        .cells
+        .chunks(traced.cols.max(1) as usize)
+        .map(<[Option<[u8; 3]>]>::to_vec);
     let mut dots = vec![None; usize::from(window.cols) * usize::from(window.rows)];
-    for (bj, row) in rows.into_iter().enumerate() {
-        let row = row?;
+    for (bj, row) in rows.enumerate() {
         for (bi, c) in row.into_iter().enumerate() {
             for j in (bj * usize::from(step))
                 ..((bj + 1) * usize::from(step)).min(usize::from(window.rows))

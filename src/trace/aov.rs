@@ -111,7 +111,7 @@ pub enum Key {
 }
 
 /// One pixel's value.
-#[derive(Clone, Copy, Debug, PartialEq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub enum Value {
     /// A linear RGB color, or a unit normal.
     Color(DVec3),
@@ -120,6 +120,7 @@ pub enum Value {
     /// The index of a category of the key.
     Category(u32),
     /// The quantity has no value here: the primary ray hit nothing.
+    #[default]
     Undefined,
 }
 

@@ -1,5 +1,6 @@
 //! Rendering a per-pixel quantity ([`crate::trace::aov`]): every pixel traced
-//! exactly as the renderer traces it, through a recorder that keeps, for each
+//! exactly as the renderer traces it, through the one pixel loop, with the
+//! per-pixel record ([`crate::trace::pixel_record`]) that keeps, for each
 //! primary ray, what the quantities are made of. The plain renderer keeps its
 //! no-op recorder and pays nothing for this.
 //!
@@ -11,199 +12,46 @@
 //! the pixel's center (the center itself with an odd grid).
 
 use glam::DVec3;
-use indicatif::ProgressBar;
-use rayon::prelude::*;
 
-use crate::geometry::hit::TestCounts;
-use crate::geometry::object::Shape;
-use crate::math::ray::Ray;
 use crate::scene::Scene;
 use crate::trace::aov::{Aov, AovImage, MAX_COMBINED_LIGHTS, Value};
-use crate::trace::pixel::pixel_color_at;
-use crate::trace::recorder::{
-    Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, RayCounter, RayKind, RayStart, Recorder,
-    ShadowEvent, ShadowOutcome, SumEvent,
-};
+use crate::trace::pixel_record::{SampleRecord, record_pixel};
+use crate::trace::progress::Progress;
+use crate::trace::recorder::{RayCounter, RayKind, ShadowOutcome};
+use crate::trace::render::{Pixels, Stopped, trace_pixels};
 use crate::trace::tracer::Tracer;
 
-/// What one primary ray's tree was made of, as far as any quantity needs.
-#[derive(Clone, Debug, Default)]
-pub struct SampleRecord {
-    /// Rays open now: the primary ray's own events come while this is 1.
-    open: u32,
-    /// The deepest ray started.
-    pub depth: u32,
-    /// Rays cast, by kind.
-    pub rays: RayCounter,
-    /// Box and primitive tests of every ray, shadow rays too.
-    pub tests: u64,
-    /// The primary ray.
-    pub primary: Option<Ray>,
-    /// The primary ray's hit.
-    pub hit: Option<HitEvent>,
-    /// The ambient term at that hit.
-    pub ambient: DVec3,
-    /// The diffuse terms there, summed over the lights.
-    pub diffuse: DVec3,
-    /// The specular terms there, summed over the lights.
-    pub specular: DVec3,
-    /// Each light's shadow ray from that hit, in the scene's order.
-    pub shadows: Vec<ShadowOutcome>,
-    /// Whether a total internal reflection happened anywhere in the tree.
-    pub tir: bool,
-    /// The primary ray's sum.
-    pub sum: SumEvent,
-    /// `B² − AC` against the chosen sphere.
-    pub discriminant: f64,
-}
-
-/// Keeps a [`SampleRecord`] per primary ray.
-#[derive(Debug)]
-pub struct AovRecorder<'s> {
-    scene: &'s Scene,
-    /// The sphere whose discriminant is wanted.
-    sphere: Option<usize>,
-    /// One per primary ray, in the order traced.
-    pub samples: Vec<SampleRecord>,
-}
-
-impl<'s> AovRecorder<'s> {
-    /// A recorder for `aov` in `scene`.
-    pub fn new(scene: &'s Scene, aov: Aov) -> Self {
-        let sphere = match aov {
-            Aov::Discriminant(i) => Some(i),
-            _ => None,
-        };
-        Self {
-            scene,
-            sphere,
-            samples: Vec::new(),
-        }
-    }
-
-    fn now(&mut self) -> &mut SampleRecord {
-        self.samples.last_mut().expect("a primary ray was started")
-    }
-
-    /// Whether the events now belong to the primary ray itself.
-    fn at_primary(&mut self) -> bool {
-        self.now().open == 1
-    }
-
-    /// The lecture's `B² − AC` for `ray` against the chosen sphere, through
-    /// the inverse-transformed ray when the sphere is transformed.
-    fn discriminant(&self, ray: &Ray) -> f64 {
-        let Some(object) = self.sphere.map(|i| &self.scene.objects[i]) else {
-            return 0.0;
-        };
-        let Shape::Sphere(sphere) = &object.shape else {
-            return 0.0;
-        };
-        let own = object
-            .transform
-            .as_ref()
-            .map_or(*ray, |t| t.ray_to_object(ray));
-        sphere.unit_quadratic(&own).discriminant
-    }
-}
-
-impl Recorder for AovRecorder<'_> {
-    const ENABLED: bool = true;
-
-    fn ray_started(&mut self, start: &RayStart) {
-        if start.kind == RayKind::Primary {
-            let discriminant = self.discriminant(&start.ray);
-            self.samples.push(SampleRecord {
-                primary: Some(start.ray),
-                discriminant,
-                ..SampleRecord::default()
-            });
-        }
-        let now = self.now();
-        now.open += 1;
-        now.depth = now.depth.max(start.depth);
-        now.rays.ray_started(start);
-    }
-
-    fn tested(&mut self, tested: &TestCounts) {
-        self.now().tests += u64::from(tested.boxes) + u64::from(tested.primitives);
-    }
-
-    fn hit(&mut self, hit: &HitEvent) {
-        if self.at_primary() {
-            self.now().hit = Some(*hit);
-        }
-    }
-
-    fn shadow_ray(&mut self, shadow: &ShadowEvent) {
-        let now = self.now();
-        now.rays.shadow_ray(shadow);
-        now.tests += u64::from(shadow.tested.boxes) + u64::from(shadow.tested.primitives);
-        if now.open == 1 {
-            now.shadows.push(shadow.outcome);
-        }
-    }
-
-    fn local(&mut self, local: &LocalEvent) {
-        if self.at_primary() {
-            self.now().ambient = local.ambient;
-        }
-    }
-
-    fn light_term(&mut self, term: &LightEvent) {
-        if let (true, Some(phong)) = (self.at_primary(), term.phong) {
-            let now = self.now();
-            now.diffuse += phong.diffuse;
-            now.specular += phong.specular;
-        }
-    }
-
-    fn branch(&mut self, branch: &BranchEvent) {
-        if branch.branch == Branch::TotalInternalReflection {
-            self.now().tir = true;
-        }
-    }
-
-    fn ray_finished(&mut self, sum: &SumEvent) {
-        let now = self.now();
-        if now.open == 1 {
-            now.sum = *sum;
-        }
-        now.open -= 1;
-    }
-}
-
-/// Renders `aov` for every pixel of `scene` at its settings, on all cores of
-/// the current thread pool, reporting finished rows to `progress`. The values
-/// are the same whatever the number of threads: each pixel is its own.
+/// Renders `aov` for every pixel of `scene` at its settings through the one
+/// pixel loop, each pixel recorded on its own ([`record_pixel`]), reporting
+/// rows done to `progress`. The values are the same whatever the number of
+/// threads.
 pub fn render_aov(
     scene: &Scene,
     aov: Aov,
-    progress: &ProgressBar,
+    progress: &Progress,
 ) -> Result<AovImage, std::collections::TryReserveError> {
     let tracer = Tracer::new(scene);
     let camera = scene.camera();
     let (width, height) = (scene.settings.width, scene.settings.height);
-    let mut values = Vec::new();
-    values.try_reserve_exact(width as usize * height as usize)?;
-    values.resize(width as usize * height as usize, Value::Undefined);
-    progress.set_length(u64::from(height));
-    values
-        .par_chunks_mut(width as usize)
-        .enumerate()
-        .for_each(|(y, row)| {
-            for (x, value) in row.iter_mut().enumerate() {
-                let mut rec = AovRecorder::new(scene, aov);
-                let mut at = Vec::new();
-                let (x, y) = (x as u32, y as u32);
-                // Each pixel starts with no remembered blocker, as `raytree
-                // trace` does: its counts are its own, whatever the threads.
-                tracer.forget_recent();
-                pixel_color_at(&tracer, &camera, x, y, &mut rec, Some(&mut at));
-                *value = pixel_value(aov, &rec.samples, &at, (x, y));
-            }
-            progress.inc(1);
-        });
+    let sphere = match aov {
+        Aov::Discriminant(i) => Some(i),
+        _ => None,
+    };
+    let traced = trace_pixels(
+        scene,
+        Pixels::All,
+        || (),
+        |_, x, y| {
+            let record = record_pixel(&tracer, &camera, x, y, sphere);
+            pixel_value(aov, &record.samples, &record.at, (x, y))
+        },
+        &Progress::reporting(&|done, total| progress.report(done, total)),
+    )
+    .map_err(|stopped| match stopped {
+        Stopped::NoMemory(e) => e,
+        Stopped::Cancelled => unreachable!("an AOV render reports but is never cancelled"),
+    })?;
+    let values = traced.cells;
     Ok(AovImage {
         aov,
         name: aov.name(scene),

@@ -22,14 +22,16 @@
 //! Each ray draws its random numbers from its own generator, seeded by the
 //! seed and its index, so the result is the same on any number of threads.
 
+use std::sync::atomic::{AtomicU64, Ordering};
+
 use glam::DVec3;
-use indicatif::ProgressBar;
 use rayon::prelude::*;
 
 use crate::math::ray::Ray;
 use crate::scene::Scene;
 use crate::scene::camera::Camera;
 use crate::shading::optics;
+use crate::trace::progress::Progress;
 use crate::trace::tracer::Tracer;
 
 /// How a light ray ended.
@@ -127,16 +129,10 @@ const CHUNK: u64 = 1 << 14;
 
 /// Shoots `photons` rays from the scene's lights (an equal share each, in
 /// uniformly random directions) and follows them; `pupil` is the eye's radius.
-pub fn trace(
-    scene: &Scene,
-    photons: u64,
-    seed: u64,
-    pupil: f64,
-    progress: &ProgressBar,
-) -> Forward {
+pub fn trace(scene: &Scene, photons: u64, seed: u64, pupil: f64, progress: &Progress) -> Forward {
     let tracer = Tracer::new(scene);
     let camera = scene.camera();
-    progress.set_length(photons);
+    let done = AtomicU64::new(0);
     let chunks: Vec<Forward> = (0..photons.div_ceil(CHUNK))
         .into_par_iter()
         .map(|chunk| {
@@ -151,7 +147,8 @@ pub fn trace(
                 }
                 counts.add(fate, segments);
             }
-            progress.inc(end - start);
+            let finished = done.fetch_add(end - start, Ordering::Relaxed) + (end - start);
+            progress.report(finished, photons);
             Forward { counts, arrivals }
         })
         .collect();

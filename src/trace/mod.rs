@@ -7,7 +7,9 @@ pub mod tracer; // the lecture's raytrace(): closest hit, shadow rays, reflectio
 pub mod accelerator; // which objects a ray is tested against
 pub mod recent; // try the recent hit first: the last blocker of each light's shadow rays
 pub mod pixel; // one pixel's rays: its center, a grid, or adaptive subdivision
-pub mod render; // every pixel, on all cores
+pub mod progress; // how far long work got, and whether to stop: closures, no terminal
+pub mod render; // the one pixel loop: every pixel (or every n-th, or a window), on all cores
+pub mod pixel_record; // one pixel's record: what its rays' trees were made of
 pub mod aov; // per-pixel quantities that explain an image: what each is and how it reads
 pub mod aov_render; // rendering one, through a recorder
 pub mod forward; // rays from the lights to the eye, counted

@@ -10,12 +10,11 @@
 
 use std::time::Instant;
 
-use indicatif::ProgressBar;
-
 use crate::io::image::{Image, to_rgb8};
 use crate::methods::{Antialiasing, Offset, SphereMethod};
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
+use crate::trace::progress::Progress;
 use crate::trace::render::{render_counting_with, render_with_tracer};
 use crate::trace::tracer::Tracer;
 
@@ -149,9 +148,9 @@ pub fn reference_settings(base: &RenderSettings) -> RenderSettings {
 /// [`Cost::Time`], once, counting its tests, for [`Cost::Tests`]. The scene's
 /// hierarchy is built once and shared by every setting (none of them changes
 /// the objects), so only tracing is timed.
-pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &ProgressBar) -> Vec<Point> {
+pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &Progress) -> Vec<Point> {
     let points = sweep(&scene.settings);
-    progress.set_length(points.len() as u64 + 1);
+    let total = points.len() as u64 + 1;
     let base = Tracer::new(scene);
     let pixels = f64::from(scene.settings.width) * f64::from(scene.settings.height);
     let one_thread = (cost == Cost::Tests).then(|| {
@@ -166,10 +165,10 @@ pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &ProgressBar) -
         let tracer = base.with_settings(&s);
         let started = Instant::now();
         let (image, tests) = match cost {
-            Cost::Time => (render_with_tracer(&tracer, &ProgressBar::hidden()), None),
+            Cost::Time => (render_with_tracer(&tracer, &Progress::QUIET), None),
             Cost::Tests => match one_thread
                 .as_ref()
-                .map(|pool| pool.install(|| render_counting_with(&tracer, &ProgressBar::hidden())))
+                .map(|pool| pool.install(|| render_counting_with(&tracer, &Progress::QUIET)))
                 .expect("built for counting")
             {
                 Ok((image, counts)) => (Ok(image), Some(counts.tests() as f64 / pixels)),
@@ -180,7 +179,7 @@ pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &ProgressBar) -
         (image, started.elapsed().as_secs_f64(), tests)
     };
     let (reference, _, _) = render(reference_settings(&scene.settings));
-    progress.inc(1);
+    progress.report(1, total);
     let reference8 = to_rgb8(&reference);
     let runs = if cost == Cost::Tests { 1 } else { runs.max(1) };
     // Runs alternate over the settings, so a machine that slows down or speeds up
@@ -195,7 +194,7 @@ pub fn measure(scene: &Scene, runs: usize, cost: Cost, progress: &ProgressBar) -
             images[k] = Some(image);
             tests[k] = counted;
         }
-        progress.set_position(1 + (points.len() * (run + 1) / runs) as u64);
+        progress.report(1 + (points.len() * (run + 1) / runs) as u64, total);
     }
     points
         .into_iter()

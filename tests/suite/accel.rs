@@ -117,8 +117,10 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
         }
         // Whole images, shadows and recursion included, agree bit for bit.
         let none =
-            raytree::trace::render::render(&brute, &indicatif::ProgressBar::hidden()).unwrap();
-        let with = raytree::trace::render::render(&bvh, &indicatif::ProgressBar::hidden()).unwrap();
+            raytree::trace::render::render(&brute, &raytree::trace::progress::Progress::QUIET)
+                .unwrap();
+        let with = raytree::trace::render::render(&bvh, &raytree::trace::progress::Progress::QUIET)
+            .unwrap();
         assert!(none == with, "seed {seed}: the images differ");
     }
     println!(

@@ -41,7 +41,7 @@ const TRACING: &[&str] = &[
 
 /// Crates that own a terminal: progress bars, raw mode, a TUI. The library
 /// reports progress through a closure instead.
-const TERMINAL: &[&str] = &["crossterm", "ratatui"];
+const TERMINAL: &[&str] = &["indicatif", "crossterm", "ratatui"];
 
 /// The deliberate exceptions, each with its reason.
 const EXCEPTIONS: &[(&str, &str, &str)] = &[
@@ -295,7 +295,7 @@ fn the_rules_catch_a_view_that_records_and_a_toolkit_that_reaches_in() {
     );
     let course = breaches_in("src/course/lesson.rs", &line("use crate::tree::record;"));
     assert!(course.is_empty(), "{course:?}");
-    let progress = breaches_in("src/trace/render.rs", &line("use ratatui::Frame;"));
+    let progress = breaches_in("src/trace/render.rs", &line("use indicatif::ProgressBar;"));
     assert_eq!(progress.len(), 1, "{progress:?}");
     // A unit test below `#[cfg(test)]` may record what it checks.
     let shipped =

@@ -1,7 +1,6 @@
 //! `raytree forward`: deterministic for a seed on any number of threads, every
 //! ray shot accounted for once, and the binary's report adding up.
 
-use indicatif::ProgressBar;
 use raytree::trace::forward;
 
 #[test]
@@ -13,7 +12,15 @@ fn the_same_seed_gives_the_same_rays_on_one_and_two_threads() {
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| forward::trace(&scene, 300_000, seed, pupil, &ProgressBar::hidden()))
+            .install(|| {
+                forward::trace(
+                    &scene,
+                    300_000,
+                    seed,
+                    pupil,
+                    &raytree::trace::progress::Progress::QUIET,
+                )
+            })
     };
     let one = on(1, 7);
     assert_eq!(one, on(2, 7));

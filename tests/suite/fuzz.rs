@@ -399,7 +399,7 @@ fn scene_works(mut scene: raytree::scene::Scene, text: &str) -> Result<(), Strin
     if scene.objects.len() > 64 {
         return Ok(());
     }
-    let image = raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden())
+    let image = raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET)
         .map_err(|e| e.to_string())?;
     if let Some(p) = image.pixels.iter().find(|p| !p.is_finite()) {
         return Err(format!("a pixel is {p}"));

@@ -245,7 +245,8 @@ const EXTREME: &str = r#"{
 #[test]
 fn the_most_extreme_valid_scene_renders_and_traces_finite_numbers() {
     let scene = loader::parse(EXTREME, "extreme.json").unwrap();
-    let image = raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+    let image =
+        raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
     assert!(
         image.pixels.iter().all(|p| p.is_finite()),
         "every pixel finite"

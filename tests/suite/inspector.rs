@@ -248,7 +248,7 @@ fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     // Every dot shows the 8-bit color the renderer gives its pixel.
     let scene = raytree::scene::loader::whitted();
     let rendered =
-        raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+        raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
     let (ci, cj) = window.dot_of(416, 209).unwrap();
     for (i, j) in [(5u16, 5u16), (40, 33), (ci, cj + 2)] {
         let (x, y) = window.pixel_at(i, j, 640, 480).unwrap();

@@ -7,7 +7,6 @@ use crate::common;
 use std::collections::BTreeSet;
 
 use glam::DVec3;
-use indicatif::ProgressBar;
 use raytree::math::ray::Ray;
 use raytree::methods::Antialiasing;
 use raytree::scene::Scene;
@@ -161,7 +160,7 @@ fn traced_color_equals_rendered_color_bit_for_bit() {
             scene.settings.height = height;
             scene.settings.spp = spp;
             scene.settings.aa = aa;
-            let image = render(&scene, &ProgressBar::hidden()).unwrap();
+            let image = render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
             for y in 0..height {
                 for x in 0..width {
                     let trace =

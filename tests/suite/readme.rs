@@ -50,7 +50,8 @@ fn trace_example_is_current() {
 fn readme_image_is_the_builtin_scene_as_rendered_today() {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/whitted.png");
     let scene = raytree::scene::loader::whitted();
-    let image = raytree::trace::render::render(&scene, &indicatif::ProgressBar::hidden()).unwrap();
+    let image =
+        raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
     let now = raytree::io::image::to_rgb8(&image);
     if std::env::var_os("RAYTREE_BLESS").is_some() {
         std::fs::write(

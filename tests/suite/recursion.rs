@@ -4,7 +4,6 @@
 
 use crate::common;
 
-use indicatif::ProgressBar;
 use raytree::io::image::to_rgb8;
 use raytree::scene::settings::RenderSettings;
 use raytree::trace::render::render_counting;
@@ -17,9 +16,11 @@ fn default_cutoff_changes_no_pixel_by_more_than_one_level() {
         scene.settings.height = 240;
         scene.settings.max_depth = 32;
         scene.settings.cutoff = 0.0;
-        let (fixed, fixed_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
+        let (fixed, fixed_rays) =
+            render_counting(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
         scene.settings.cutoff = RenderSettings::DEFAULT_CUTOFF;
-        let (adaptive, adaptive_rays) = render_counting(&scene, &ProgressBar::hidden()).unwrap();
+        let (adaptive, adaptive_rays) =
+            render_counting(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
         let worst = common::worst_difference(&to_rgb8(&fixed), &to_rgb8(&adaptive));
         println!(
             "{name}: fixed depth 32 traces {} rays, cutoff {} traces {} ({:.1}%); worst 8-bit difference {worst}",

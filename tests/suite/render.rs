@@ -2,7 +2,6 @@
 
 use crate::common;
 
-use indicatif::ProgressBar;
 use raytree::trace::render::render;
 
 #[test]
@@ -16,7 +15,7 @@ fn same_image_bit_for_bit_on_one_two_and_three_threads() {
             .num_threads(threads)
             .build()
             .unwrap()
-            .install(|| render(&scene, &ProgressBar::hidden()).unwrap())
+            .install(|| render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap())
     };
     let one = on(1);
     assert_eq!(one, on(2));
@@ -28,7 +27,7 @@ fn shipped_scenes_render_finite_colors() {
     for (name, mut scene) in common::shipped() {
         scene.settings.width = 160;
         scene.settings.height = 120;
-        let image = render(&scene, &ProgressBar::hidden()).unwrap();
+        let image = render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
         let bad = image.pixels.iter().filter(|c| !c.is_finite()).count();
         assert_eq!(bad, 0, "{name}: {bad} non-finite pixels");
     }
@@ -102,7 +101,12 @@ fn the_ray_counter_counts_the_tests_the_tests_image_shows() {
                 pixel_color(&tracer, &camera, x, y, &mut counted);
             }
         }
-        let image = render_aov(&scene, Aov::Tests, &ProgressBar::hidden()).unwrap();
+        let image = render_aov(
+            &scene,
+            Aov::Tests,
+            &raytree::trace::progress::Progress::QUIET,
+        )
+        .unwrap();
         let shown: f64 = image
             .values
             .iter()

@@ -504,7 +504,6 @@ fn ellipsoid_normals_follow_the_inverse_transpose_at_axis_ratio_1e4() {
 
 #[test]
 fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
-    use indicatif::ProgressBar;
     use raytree::io::image::to_rgb8;
     use raytree::trace::render::render_counting;
     let mut s = scene(
@@ -517,7 +516,8 @@ fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
                     {"plane": {"point": [0, 0, 1], "normal": [0, 0, -1]}, "material": "mirror"}] }"#,
     );
     s.settings.cutoff = 0.0;
-    let (fixed, fixed_rays) = render_counting(&s, &ProgressBar::hidden()).unwrap();
+    let (fixed, fixed_rays) =
+        render_counting(&s, &raytree::trace::progress::Progress::QUIET).unwrap();
     let mut log = common::Log::default();
     Tracer::new(&s).trace_primary(s.camera().pixel_ray(32.0, 24.0), &mut log);
     let deepest = log.rays.iter().map(|r| r.depth).max().unwrap();
@@ -533,7 +533,8 @@ fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
         (1e-6, true),
     ] {
         s.settings.cutoff = cutoff;
-        let (adaptive, rays) = render_counting(&s, &ProgressBar::hidden()).unwrap();
+        let (adaptive, rays) =
+            render_counting(&s, &raytree::trace::progress::Progress::QUIET).unwrap();
         let adaptive8 = to_rgb8(&adaptive);
         let worst = common::worst_difference(&fixed8, &adaptive8);
         let differ = fixed8
@@ -564,7 +565,6 @@ fn facing_mirrors_stop_at_the_maximum_depth_and_the_cutoff_saves_rays() {
 
 #[test]
 fn no_nan_or_infinity_reaches_an_image() {
-    use indicatif::ProgressBar;
     use raytree::methods::{SphereMethod, Weights};
     let mut renders = 0;
     for (name, mut s) in common::shipped() {
@@ -576,7 +576,11 @@ fn no_nan_or_infinity_reaches_an_image() {
                     s.settings.sphere = sphere;
                     s.settings.offset = offset;
                     s.settings.weights = weights;
-                    let image = raytree::trace::render::render(&s, &ProgressBar::hidden()).unwrap();
+                    let image = raytree::trace::render::render(
+                        &s,
+                        &raytree::trace::progress::Progress::QUIET,
+                    )
+                    .unwrap();
                     let bad = image.pixels.iter().filter(|c| !c.is_finite()).count();
                     assert_eq!(bad, 0, "{name} {sphere:?} {offset:?} {weights:?}");
                     renders += 1;

@@ -6,6 +6,7 @@ use std::time::Instant;
 use anyhow::{Result, anyhow};
 use raytree::trace::aov::Aov;
 use raytree::trace::aov_render;
+use raytree::trace::progress::Progress;
 use raytree::views::aov_figure;
 
 use crate::output;
@@ -28,7 +29,13 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
     let s = &scene.settings;
     let started = Instant::now();
     let image = pool
-        .install(|| aov_render::render_aov(&scene, aov, &progress))
+        .install(|| {
+            aov_render::render_aov(
+                &scene,
+                aov,
+                &Progress::reporting(&output::on_bar(&progress)),
+            )
+        })
         .map_err(|_| anyhow!("not enough memory for a {}×{} image", s.width, s.height))?;
     progress.finish_and_clear();
     let caption = format!(

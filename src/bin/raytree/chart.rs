@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result, bail};
 use raytree::io::output::same_file;
+use raytree::trace::progress::Progress;
 use raytree::trace::sweep::{self, Cost};
 use raytree::views::chart;
 use raytree::views::numbers::num;
@@ -61,7 +62,12 @@ pub fn run(args: &Args) -> Result<()> {
         false,
         "{spinner} charting [{bar:40}] {pos}/{len} settings, {elapsed}",
     );
-    let points = sweep::measure(&scene, args.runs as usize, args.cost, &progress);
+    let points = sweep::measure(
+        &scene,
+        args.runs as usize,
+        args.cost,
+        &Progress::reporting(&output::on_bar(&progress)),
+    );
     progress.finish_and_clear();
     let s = &scene.settings;
     let how = match args.cost {

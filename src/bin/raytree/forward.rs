@@ -9,6 +9,7 @@ use glam::DVec3;
 use raytree::figure::canvas::Figure;
 use raytree::io::image::{rgb8, to_rgb8};
 use raytree::trace::forward::{self, Forward};
+use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
 use raytree::views::filmstrip::{self, Frame};
@@ -68,12 +69,19 @@ pub fn run(args: &Args) -> Result<()> {
         args.quiet,
         "{spinner} shooting [{bar:40}] {pos}/{len} rays, {elapsed} (eta {eta})",
     );
-    let traced = pool.install(|| forward::trace(&scene, args.photons, args.seed, pupil, &progress));
+    let traced = pool.install(|| {
+        forward::trace(
+            &scene,
+            args.photons,
+            args.seed,
+            pupil,
+            &Progress::reporting(&output::on_bar(&progress)),
+        )
+    });
     progress.finish_and_clear();
     let s = &scene.settings;
-    let hidden = indicatif::ProgressBar::hidden();
     let (backward, rays) = pool
-        .install(|| render::render_counting(&scene, &hidden))
+        .install(|| render::render_counting(&scene, &Progress::QUIET))
         .map_err(|_| anyhow!("not enough memory for a {}×{} image", s.width, s.height))?;
     let summary = report(&traced, &rays, args.seed, pupil, (s.width, s.height));
     if !args.quiet {

@@ -84,6 +84,14 @@ pub fn write_stdout(bytes: &[u8]) -> Result<()> {
     }
 }
 
+/// The library's `(done, total)` reports, drawn on `bar`.
+pub fn on_bar(bar: &ProgressBar) -> impl Fn(u64, u64) + Sync + '_ {
+    |done, total| {
+        bar.set_length(total);
+        bar.set_position(done);
+    }
+}
+
 /// A bar on stderr, drawn only when stderr is a terminal (hidden when `quiet`),
 /// with `template` as indicatif writes it.
 pub fn progress_bar(quiet: bool, template: &str) -> ProgressBar {

@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 use raytree::io::image_file;
+use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
 use raytree::views::numbers::{num, thousands};
@@ -63,12 +64,14 @@ pub fn run(args: &Args) -> Result<()> {
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
     let (image, rays) = if args.stats {
         let (image, rays) = pool
-            .install(|| render::render_counting(&scene, &progress))
+            .install(|| {
+                render::render_counting(&scene, &Progress::reporting(&output::on_bar(&progress)))
+            })
             .map_err(no_memory)?;
         (image, Some(rays))
     } else {
         let image = pool
-            .install(|| render::render(&scene, &progress))
+            .install(|| render::render(&scene, &Progress::reporting(&output::on_bar(&progress))))
             .map_err(no_memory)?;
         (image, None)
     };

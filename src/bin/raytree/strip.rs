@@ -7,6 +7,7 @@ use anyhow::{Context, Result, anyhow, bail};
 use raytree::io::{image, image_diff};
 use raytree::scene::loader;
 use raytree::scene::vary::{self, Variation};
+use raytree::trace::progress::Progress;
 use raytree::trace::render;
 use raytree::views::filmstrip::{self, Frame};
 use raytree::views::numbers::num;
@@ -101,9 +102,8 @@ pub fn run(args: &Args) -> Result<()> {
     let mut previous: Option<::image::RgbImage> = None;
     let (width, height) = (scenes[0].settings.width, scenes[0].settings.height);
     for (scene, &value) in scenes.iter().zip(values) {
-        let hidden = indicatif::ProgressBar::hidden();
         let rendered = pool
-            .install(|| render::render(scene, &hidden))
+            .install(|| render::render(scene, &Progress::QUIET))
             .map_err(|_| anyhow!("not enough memory for a {width}×{height} image"))?;
         let rgb = image::to_rgb8(&rendered);
         let now = ::image::RgbImage::from_raw(width, height, rgb.clone()).context("frame size")?;
