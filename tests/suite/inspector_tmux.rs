@@ -1,21 +1,21 @@
 //! The real binary in a real terminal: tmux runs `raytree inspect`, keys are
 //! typed, the screen is read back, and the exit status is checked.
-//! Skipped, saying so, when tmux is not installed (`.ci/run` installs it).
+//! Skipped, saying so, when tmux is not installed ([`crate::tools`]).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-/// Whether tmux is missing, in which case the test says it is skipped.
-pub fn tmux_missing() -> bool {
-    let missing = Command::new("tmux").arg("-V").output().is_err();
-    if missing {
-        println!(
-            "skipped: tmux is not installed, so the inspector cannot be driven in a real terminal here (.ci/run installs it)"
-        );
-    }
-    missing
+use crate::tools::{Need, available};
+
+/// Whether tmux is here; if not, the test says it is skipped (and fails under CI=true).
+pub fn has_tmux() -> bool {
+    available(
+        "",
+        &[Need::Tmux],
+        "it drives the inspector in a real terminal",
+    )
 }
 
 /// A detached tmux session of `width` × `height` running `command` in a
@@ -142,7 +142,7 @@ fn quit(session: &Session, exit_file: &Path) -> (String, String) {
 
 #[test]
 fn inspect_in_a_real_terminal() {
-    if tmux_missing() {
+    if !has_tmux() {
         return;
     }
     let (session, exit_file) = inspector("test", 160, 48, "", "scenes/whitted.json");
@@ -183,7 +183,7 @@ fn inspect_in_a_real_terminal() {
 /// the full color sum, ask what if the glass had index 1.0, quit.
 #[test]
 fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection() {
-    if tmux_missing() {
+    if !has_tmux() {
         return;
     }
     let (session, exit_file) = inspector(
