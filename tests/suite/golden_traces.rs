@@ -1,86 +1,75 @@
 //! Golden traces: JSON traces of chosen pixels (and one chosen ray) of the
-//! shipped scenes, in `tests/traces/`. Each is traced again and compared field by
-//! field; the first difference is reported with its path.
+//! shipped scenes, in `tests/traces/`, each exactly what its `raytree trace …
+//! --json` command writes. Each command is run again and its output compared
+//! byte for byte with the committed file; when they differ, the first field
+//! that differs is named with its path.
 //!
 //! Regenerate them after an intended change with
 //! `RAYTREE_BLESS=1 cargo test --release golden_traces`, and read the diff.
 //!
-//! Tolerance: numbers agree to 1e-9 relative (1e-9 absolute near zero). The same
-//! code on the same platform reproduces every bit; another platform's libm may
-//! round `powf` in the Phong highlight differently in the last place (~1e-16), and
-//! the recursion carries that through a handful of additions. 1e-9 is far above
-//! that and far below what any change to a formula would move.
+//! Exact, not within a tolerance: the same code on the same platform
+//! reproduces every bit, and a comparison that forgives anything (a rounding,
+//! a field read back as its default) lets a golden fall behind the code
+//! unnoticed. Another platform's libm may round `powf` in the Phong highlight
+//! differently in the last place; that would show here as a field named with
+//! its two values, to be judged, not hidden.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
+use std::process::Command;
 
-use glam::DVec3;
-use raytree::math::ray::Ray;
-use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
 use serde_json::Value;
 
-const REL_TOL: f64 = 1e-9;
-
-enum Target {
-    Pixel(u32, u32),
-    Ray([f64; 3], [f64; 3]),
-}
-
 struct Golden {
     name: &'static str,
-    scene: &'static str,
-    target: Target,
-    spp: Option<u32>,
+    /// The arguments of `raytree`, run from the repository.
+    args: &'static [&'static str],
 }
 
 const GOLDEN: &[Golden] = &[
     Golden {
         name: "whitted-diffuse",
-        scene: "whitted.json",
-        target: Target::Pixel(120, 420),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "120,420"],
     },
     Golden {
         name: "whitted-glass-shadow",
-        scene: "whitted.json",
-        target: Target::Pixel(440, 376),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "440,376"],
     },
     Golden {
         name: "whitted-shadow",
-        scene: "whitted.json",
-        target: Target::Pixel(168, 296),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "168,296"],
     },
     Golden {
         name: "whitted-mirror",
-        scene: "whitted.json",
-        target: Target::Pixel(264, 200),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "264,200"],
     },
     Golden {
         name: "whitted-glass-tir",
-        scene: "whitted.json",
-        target: Target::Pixel(416, 209),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "416,209"],
     },
     Golden {
         name: "whitted-miss",
-        scene: "whitted.json",
-        target: Target::Pixel(8, 8),
-        spp: None,
+        args: &["trace", "scenes/whitted.json", "--pixel", "8,8"],
     },
     Golden {
         name: "whitted-glass-edge-4spp",
-        scene: "whitted.json",
-        target: Target::Pixel(330, 240),
-        spp: Some(4),
+        args: &[
+            "trace",
+            "scenes/whitted.json",
+            "--pixel",
+            "330,240",
+            "--spp",
+            "4",
+        ],
     },
     Golden {
         name: "nested-ray-to-core",
-        scene: "nested.json",
-        target: Target::Ray([0.0, 2.2, 6.0], [0.05, -0.15, -1.0]),
-        spp: None,
+        args: &[
+            "trace",
+            "scenes/nested.json",
+            "--ray",
+            "0,2.2,6:0.05,-0.15,-1",
+        ],
     },
 ];
 
@@ -88,31 +77,36 @@ fn root() -> PathBuf {
     PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
-fn trace(g: &Golden) -> TraceDocument {
-    let file = format!("scenes/{}", g.scene);
-    let text = std::fs::read_to_string(root().join(&file)).unwrap();
-    let mut scene = raytree::scene::loader::parse(&text, &file).unwrap();
-    if let Some(spp) = g.spp {
-        scene.settings.spp = spp;
-    }
-    let source = SceneSource::new(&file, &text);
-    match g.target {
-        Target::Pixel(x, y) => raytree::tree::record::pixel(&scene, source, x, y, None).unwrap(),
-        Target::Ray(o, d) => {
-            raytree::tree::record::ray(&scene, source, Ray::new(DVec3::from(o), DVec3::from(d)))
-                .unwrap()
-        }
+/// What `raytree ARGS --json` writes today, run from the repository.
+fn traced(g: &Golden) -> String {
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(g.args)
+        .arg("--json")
+        .current_dir(root())
+        .output()
+        .expect("the binary runs");
+    assert!(
+        out.status.success(),
+        "raytree {} --json: {}",
+        g.args.join(" "),
+        String::from_utf8_lossy(&out.stderr)
+    );
+    String::from_utf8(out.stdout).expect("a trace is UTF-8")
+}
+
+/// Writes every golden into `dir`, as a bless does.
+fn bless_into(dir: &Path) {
+    for g in GOLDEN {
+        let path = dir.join(format!("{}.json", g.name));
+        std::fs::write(&path, traced(g)).unwrap();
+        println!("blessed {}", path.display());
     }
 }
 
 /// The first place where `got` differs from `want`, as `path: want vs got`.
+/// Values are compared exactly, every field of both.
 fn difference(want: &Value, got: &Value, path: &str) -> Option<String> {
     match (want, got) {
-        (Value::Number(a), Value::Number(b)) => {
-            let (a, b) = (a.as_f64().unwrap(), b.as_f64().unwrap());
-            let scale = a.abs().max(b.abs()).max(1.0);
-            ((a - b).abs() > REL_TOL * scale).then(|| format!("{path}: {a} in the golden, {b} now"))
-        }
         (Value::Array(a), Value::Array(b)) => {
             if a.len() != b.len() {
                 return Some(format!(
@@ -127,14 +121,11 @@ fn difference(want: &Value, got: &Value, path: &str) -> Option<String> {
                 .find_map(|(i, (x, y))| difference(x, y, &format!("{path}[{i}]")))
         }
         (Value::Object(a), Value::Object(b)) => {
-            if let Some(k) = a
-                .keys()
-                .find(|k| !b.contains_key(*k))
-                .or_else(|| b.keys().find(|k| !a.contains_key(*k)))
-            {
-                return Some(format!(
-                    "{path}.{k}: present in only one of the golden and the new trace"
-                ));
+            if let Some(k) = a.keys().find(|k| !b.contains_key(*k)) {
+                return Some(format!("{path}.{k}: in the golden, not in the new trace"));
+            }
+            if let Some(k) = b.keys().find(|k| !a.contains_key(*k)) {
+                return Some(format!("{path}.{k}: in the new trace, not in the golden"));
             }
             a.iter()
                 .find_map(|(k, v)| difference(v, &b[k], &format!("{path}.{k}")))
@@ -143,38 +134,89 @@ fn difference(want: &Value, got: &Value, path: &str) -> Option<String> {
     }
 }
 
+/// Why the committed text `want` is not `got`, byte for byte: the first field
+/// that differs, or else the first line (the same values written otherwise).
+fn why_differs(want: &str, got: &str) -> String {
+    let parse = |t: &str| serde_json::from_str::<Value>(t);
+    if let (Ok(w), Ok(g)) = (parse(want), parse(got))
+        && let Some(d) = difference(&w, &g, "")
+    {
+        return d;
+    }
+    let line = want
+        .lines()
+        .zip(got.lines())
+        .position(|(a, b)| a != b)
+        .unwrap_or(want.lines().count().min(got.lines().count()));
+    format!(
+        "the same values, written differently from line {}: {:?} in the golden, {:?} now",
+        line + 1,
+        want.lines().nth(line).unwrap_or(""),
+        got.lines().nth(line).unwrap_or("")
+    )
+}
+
 #[test]
 fn golden_traces_still_hold() {
-    let bless = std::env::var_os("RAYTREE_BLESS").is_some();
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        bless_into(&root().join("tests/traces"));
+        return;
+    }
     let mut failures = Vec::new();
     for g in GOLDEN {
         let path = root().join("tests/traces").join(format!("{}.json", g.name));
-        let fresh = trace(g);
-        if bless {
-            std::fs::write(&path, fresh.to_json()).unwrap();
-            println!("blessed {}", path.display());
-            continue;
-        }
-        let text = std::fs::read_to_string(&path)
+        let committed = std::fs::read_to_string(&path)
             .unwrap_or_else(|e| panic!("{}: {e} (make it with RAYTREE_BLESS=1)", path.display()));
-        let golden: TraceDocument = serde_json::from_str(&text)
-            .unwrap_or_else(|e| panic!("{}: not a trace: {e}", path.display()));
-        if golden.scene.hash != fresh.scene.hash {
-            failures.push(format!("{}: scenes/{} changed since the golden was made (re-bless after checking the change)", g.name, g.scene));
-            continue;
-        }
-        if let Some(d) = difference(
-            &serde_json::to_value(&golden).unwrap(),
-            &serde_json::to_value(&fresh).unwrap(),
-            "",
-        ) {
-            failures.push(format!("{}: {d}", g.name));
+        let fresh = traced(g);
+        if committed != fresh {
+            failures.push(format!(
+                "{} (raytree {} --json): {}",
+                g.name,
+                g.args.join(" "),
+                why_differs(&committed, &fresh)
+            ));
         }
     }
     assert!(
         failures.is_empty(),
-        "golden traces differ:\n{}",
+        "golden traces differ (RAYTREE_BLESS=1 cargo test --release golden_traces, then read the diff):\n{}",
         failures.join("\n")
+    );
+}
+
+/// A bless on a clean checkout rewrites nothing: blessed into an empty
+/// folder, the goldens are the committed files byte for byte, and
+/// `tests/traces/` holds no trace that no golden makes.
+#[test]
+fn blessing_a_clean_checkout_changes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    bless_into(dir.path());
+    let jsons = |d: &Path| -> Vec<String> {
+        let mut names: Vec<String> = std::fs::read_dir(d)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .filter(|n| n.ends_with(".json"))
+            .collect();
+        names.sort();
+        names
+    };
+    let committed_dir = root().join("tests/traces");
+    assert_eq!(
+        jsons(dir.path()),
+        jsons(&committed_dir),
+        "tests/traces/ holds exactly the goldens"
+    );
+    let changed: Vec<String> = jsons(dir.path())
+        .into_iter()
+        .filter(|n| {
+            std::fs::read(dir.path().join(n)).unwrap()
+                != std::fs::read(committed_dir.join(n)).unwrap()
+        })
+        .collect();
+    assert!(
+        changed.is_empty(),
+        "a bless would rewrite {} (RAYTREE_BLESS=1 cargo test --release golden_traces, then read the diff)",
+        changed.join(", ")
     );
 }
 

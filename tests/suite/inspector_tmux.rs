@@ -1,41 +1,57 @@
 //! The real binary in a real terminal: tmux runs `raytree inspect`, keys are
 //! typed, the screen is read back, and the exit status is checked.
-//! Skipped, saying so, when tmux is not installed (`.ci/run` installs it).
+//! Skipped, saying so, when tmux is not installed ([`crate::tools`]).
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::{Duration, Instant};
 
-fn tmux(args: &[&str]) -> String {
-    let out = Command::new("tmux").args(args).output().expect("tmux runs");
-    String::from_utf8_lossy(&out.stdout).into_owned()
-}
+use crate::tools::{Need, available};
 
-/// Whether tmux is missing, in which case the test says it is skipped.
-pub fn tmux_missing() -> bool {
-    let missing = Command::new("tmux").arg("-V").output().is_err();
-    if missing {
-        println!(
-            "skipped: tmux is not installed, so the inspector cannot be driven in a real terminal here (.ci/run installs it)"
-        );
-    }
-    missing
+/// Whether tmux is here; if not, the test says it is skipped (and fails under CI=true).
+pub fn has_tmux() -> bool {
+    available(
+        "",
+        &[Need::Tmux],
+        "it drives the inspector in a real terminal",
+    )
 }
 
 /// A detached tmux session of `width` × `height` running `command` in a
-/// shell; killed when dropped, so a failing test leaves none behind.
-pub struct Session(String);
+/// shell, on a tmux server of its own (its own socket, no configuration
+/// file), so tests share nothing with each other or with the user's own
+/// sessions; the server is killed when the session is dropped, so a failing
+/// test leaves nothing behind.
+pub struct Session {
+    /// The name of the server's socket (`tmux -L`), unique to the session.
+    socket: String,
+    /// Where tmux made it, removed with the server.
+    socket_path: Option<PathBuf>,
+}
+
+/// The one session on each server.
+const SESSION: &str = "raytree";
 
 impl Session {
     pub fn start(name: &str, width: u16, height: u16, command: &str) -> Session {
-        let name = format!("raytree-{name}-{}", std::process::id());
+        static STARTED: AtomicUsize = AtomicUsize::new(0);
+        let mut session = Session {
+            socket: format!(
+                "raytree-{name}-{}-{}",
+                std::process::id(),
+                STARTED.fetch_add(1, Ordering::Relaxed)
+            ),
+            socket_path: None,
+        };
         let (w, h) = (width.to_string(), height.to_string());
-        let started = Command::new("tmux")
+        let started = session
+            .tmux()
             .args([
                 "new-session",
                 "-d",
                 "-s",
-                &name,
+                SESSION,
                 "-x",
                 &w,
                 "-y",
@@ -45,15 +61,30 @@ impl Session {
             .status()
             .unwrap();
         assert!(started.success(), "tmux could not start a session");
-        Session(name)
+        let path = session.run(&["display-message", "-p", "#{socket_path}"]);
+        session.socket_path = Some(PathBuf::from(path.trim_end()));
+        session
+    }
+
+    /// `tmux` talking to this session's own server only.
+    fn tmux(&self) -> Command {
+        let mut tmux = Command::new("tmux");
+        tmux.args(["-L", &self.socket, "-f", "/dev/null"])
+            .env_remove("TMUX");
+        tmux
+    }
+
+    fn run(&self, args: &[&str]) -> String {
+        let out = self.tmux().args(args).output().expect("tmux runs");
+        String::from_utf8_lossy(&out.stdout).into_owned()
     }
 
     pub fn send(&self, keys: &[&str]) {
-        tmux(&[&["send-keys", "-t", &self.0][..], keys].concat());
+        self.run(&[&["send-keys", "-t", SESSION][..], keys].concat());
     }
 
     pub fn capture(&self) -> String {
-        tmux(&["capture-pane", "-t", &self.0, "-p"])
+        self.run(&["capture-pane", "-t", SESSION, "-p"])
     }
 
     /// Waits until the captured screen satisfies `ok`, up to 20 s; returns the
@@ -72,9 +103,13 @@ impl Session {
 
 impl Drop for Session {
     fn drop(&mut self) {
-        let _ = Command::new("tmux")
-            .args(["kill-session", "-t", &self.0])
-            .status();
+        let _ = self.tmux().arg("kill-server").status();
+        // tmux leaves the socket file of a server it killed.
+        if let Some(path) = &self.socket_path
+            && path.ends_with(&self.socket)
+        {
+            let _ = std::fs::remove_file(path);
+        }
     }
 }
 
@@ -107,7 +142,7 @@ fn quit(session: &Session, exit_file: &Path) -> (String, String) {
 
 #[test]
 fn inspect_in_a_real_terminal() {
-    if tmux_missing() {
+    if !has_tmux() {
         return;
     }
     let (session, exit_file) = inspector("test", 160, 48, "", "scenes/whitted.json");
@@ -148,7 +183,7 @@ fn inspect_in_a_real_terminal() {
 /// the full color sum, ask what if the glass had index 1.0, quit.
 #[test]
 fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection() {
-    if tmux_missing() {
+    if !has_tmux() {
         return;
     }
     let (session, exit_file) = inspector(

@@ -33,5 +33,6 @@ mod scenes;
 mod signals;
 mod stability;
 mod strip;
+mod tools;
 mod trace_files;
 mod worked;

@@ -1,25 +1,19 @@
 //! `raytree postscript`: a PostScript program drawn by Ghostscript and cropped
 //! to what it painted, the lecture's copy repaired, and every failure (no
 //! Ghostscript, no program, a program that fails or never ends) one line.
-//! The drawing tests are skipped, saying why, where Ghostscript is missing
-//! (.ci/run installs it); lesson 14's figures draw the lecture's own program.
+//! The drawing tests are skipped, saying why, where Ghostscript or the
+//! lecture is missing ([`crate::tools`]); lesson 14's figures draw the
+//! lecture's own program.
 
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::process::Command;
 
 use crate::common::refused;
+use crate::tools::{Need, available};
 
 /// A gray rectangle 20 × 10 points at (100, 100): 20 × 10 pixels at 72 dpi.
 const RECTANGLE: &[u8] =
     b"%!PS\n0.5 setgray 100 100 moveto 20 0 rlineto 0 10 rlineto -20 0 rlineto fill showpage\n";
-
-fn has_ghostscript() -> bool {
-    let found = Command::new("gs").arg("--version").output().is_ok();
-    if !found {
-        println!("skipped: Ghostscript (gs) is not installed (.ci/run installs it)");
-    }
-    found
-}
 
 fn raytree(dir: &Path, args: &[&str]) -> std::process::Output {
     Command::new(env!("CARGO_BIN_EXE_raytree"))
@@ -31,7 +25,7 @@ fn raytree(dir: &Path, args: &[&str]) -> std::process::Output {
 
 #[test]
 fn a_program_is_drawn_cropped_to_what_it_painted() {
-    if !has_ghostscript() {
+    if !available("", &[Need::Ghostscript], "raytree postscript draws with it") {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
@@ -112,7 +106,11 @@ fn failures_are_one_line() {
         "error: Ghostscript is not installed (no gs on the PATH): install it, e.g. apt-get install ghostscript\n"
     );
     assert!(!dir.path().join("r.png").exists(), "no output on failure");
-    if !has_ghostscript() {
+    if !available(
+        "only Ghostscript's own failures",
+        &[Need::Ghostscript],
+        "they are Ghostscript failing on a program",
+    ) {
         return;
     }
     let bad: &[u8] = b"%!PS\n1 2 nosuchoperator showpage\n";
@@ -140,14 +138,6 @@ fn failures_are_one_line() {
     assert_eq!(e, "error: blank.ps: the program painted nothing");
 }
 
-/// The lecture beside the repository (or above it), as the command finds it.
-fn lecture() -> Option<PathBuf> {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-        .ancestors()
-        .map(|d| d.join("shared/lecture-raytracing.md"))
-        .find(|p| p.is_file())
-}
-
 #[test]
 fn the_lectures_copy_has_every_slip_and_the_list_names_them() {
     let out = raytree(
@@ -163,10 +153,14 @@ fn the_lectures_copy_has_every_slip_and_the_list_names_them() {
             "{list}"
         );
     }
-    let Some(path) = lecture() else {
-        println!("skipped: the lecture is not beside the repository");
+    if !available(
+        "only the slips in the lecture's copy",
+        &[Need::Lecture],
+        "the lecture's program is read from it",
+    ) {
         return;
-    };
+    }
+    let path = crate::tools::lecture().expect("available");
     let text = std::fs::read_to_string(path).unwrap();
     let program = raytree::io::postscript::program(&text).expect("the lecture's program");
     let (repaired, done) = raytree::io::postscript::repair(program);

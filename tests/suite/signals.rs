@@ -6,7 +6,7 @@ use std::path::Path;
 use std::process::{Command, Stdio};
 use std::time::{Duration, Instant};
 
-use crate::inspector_tmux::{Session, tmux_missing};
+use crate::inspector_tmux::{Session, has_tmux};
 
 const SIGNALS: [(&str, i32); 3] = [("INT", 2), ("TERM", 15), ("HUP", 1)];
 
@@ -100,7 +100,7 @@ fn inspector_after(signal: &str) -> (String, String, String) {
 
 #[test]
 fn each_signal_gives_the_inspector_s_terminal_back() {
-    if tmux_missing() {
+    if !has_tmux() {
         return;
     }
     for (signal, number) in SIGNALS {

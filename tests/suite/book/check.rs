@@ -20,6 +20,7 @@ pub fn stale(files: &[File]) -> Vec<String> {
         match &f.content {
             Content::Text(fresh) => out.extend(stale_text(f, fresh)),
             Content::Png(fresh) => out.extend(stale_figure(f, fresh)),
+            Content::Unmade => {}
         }
     }
     for orphan in orphans(files) {
@@ -32,14 +33,15 @@ fn stale_text(f: &File, fresh: &str) -> Vec<String> {
     let Ok(committed) = std::fs::read_to_string(root().join(&f.path)) else {
         return vec![format!("{}: missing (made from {})", f.path, f.origin)];
     };
-    if committed == fresh {
+    let around = around_holes(&committed, fresh);
+    if around.is_ok() {
         return Vec::new();
     }
     let was = page::quoted(&committed);
     let mut out: Vec<String> = f
         .numbers
         .iter()
-        .filter(|n| was.get(&n.name) != Some(&n.value))
+        .filter(|n| n.value != page::HOLE && was.get(&n.name) != Some(&n.value))
         .map(|n| {
             let before = was.get(&n.name).map_or("nothing".to_owned(), |v| v.clone());
             format!(
@@ -54,6 +56,21 @@ fn stale_text(f: &File, fresh: &str) -> Vec<String> {
             .filter(|(_, block)| !committed.contains(block.as_str()))
             .map(|(what, _)| format!("{}: {what} is stale (made from {})", f.path, f.origin)),
     );
+    if let (true, Err((part, rest))) = (out.is_empty(), around)
+        && fresh.contains(page::HOLE)
+    {
+        // The first line of the part that is not where it should be.
+        let mut lines = part.lines().filter(|l| !l.trim().is_empty());
+        let line = lines
+            .clone()
+            .find(|l| !rest.contains(l))
+            .or(lines.next())
+            .unwrap_or("");
+        out.push(format!(
+            "{}: differs from what {} make now, at {line:?} (the parts not made here aside)",
+            f.path, f.origin
+        ));
+    }
     if out.is_empty() {
         let line = committed
             .lines()
@@ -101,6 +118,37 @@ fn stale_figure(f: &File, fresh: &[u8]) -> Option<String> {
     })
 }
 
+/// Whether `committed` is `fresh` with something in place of each
+/// [`page::HOLE`] (what this machine could not make); else the first part of
+/// `fresh` it does not have where it should, and the rest of `committed`
+/// from where that part should be.
+fn around_holes<'a, 'b>(committed: &'b str, fresh: &'a str) -> Result<(), (&'a str, &'b str)> {
+    let parts: Vec<&str> = fresh.split(page::HOLE).collect();
+    let (first, last) = (parts[0], parts[parts.len() - 1]);
+    if parts.len() == 1 {
+        return if committed == fresh {
+            Ok(())
+        } else {
+            Err((fresh, committed))
+        };
+    }
+    if !committed.starts_with(first) {
+        return Err((first, committed));
+    }
+    let mut at = first.len();
+    for part in &parts[1..parts.len() - 1] {
+        match committed[at..].find(part) {
+            Some(i) => at += i + part.len(),
+            None => return Err((part, &committed[at..])),
+        }
+    }
+    if committed.len() - at >= last.len() && committed.ends_with(last) {
+        Ok(())
+    } else {
+        Err((last, &committed[at..]))
+    }
+}
+
 /// Files in the folders the book owns that nothing made.
 fn orphans(files: &[File]) -> Vec<String> {
     let made: BTreeSet<&str> = files.iter().map(|f| f.path.as_str()).collect();
@@ -135,16 +183,18 @@ fn walk(dir: &Path, f: &mut dyn FnMut(&Path)) {
 pub fn bless(files: &[File]) {
     for f in files {
         let path = root().join(&f.path);
+        // What this machine could not make stays as committed.
+        let bytes = match &f.content {
+            Content::Text(t) if !t.contains(page::HOLE) => t.as_bytes(),
+            Content::Png(p) => p.as_slice(),
+            Content::Text(_) | Content::Unmade => continue,
+        };
         let write = match &f.content {
-            Content::Text(t) => std::fs::read_to_string(&path).ok().as_deref() != Some(t.as_str()),
             Content::Png(png) => stale_figure(f, png).is_some(),
+            _ => std::fs::read(&path).ok().as_deref() != Some(bytes),
         };
         if write {
             std::fs::create_dir_all(path.parent().unwrap()).unwrap();
-            let bytes = match &f.content {
-                Content::Text(t) => t.as_bytes(),
-                Content::Png(p) => p.as_slice(),
-            };
             std::fs::write(&path, bytes).unwrap();
             println!("wrote {}", f.path);
         }

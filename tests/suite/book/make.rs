@@ -10,6 +10,7 @@ use raytree::course::{lesson, lesson_spec};
 
 use super::page::{self, Input, Quoted};
 use super::run;
+use crate::tools::Need;
 
 /// A file the book is made of.
 pub struct File {
@@ -23,11 +24,17 @@ pub struct File {
     pub numbers: Vec<Quoted>,
     /// The blocks a chapter shows, named.
     pub blocks: Vec<(String, String)>,
+    /// The parts of a chapter this machine could not make (each a
+    /// [`page::HOLE`] in its text), and what it lacks for them.
+    pub unmade: Vec<String>,
+    pub missing: Vec<Need>,
 }
 
 pub enum Content {
     Text(String),
     Png(Vec<u8>),
+    /// A figure this machine cannot draw: the committed one stays as it is.
+    Unmade,
 }
 
 /// The folders the book's generation owns: every file in them is made by it.
@@ -43,6 +50,8 @@ fn text(path: &str, text: String, origin: &str) -> File {
         origin: origin.to_owned(),
         numbers: Vec::new(),
         blocks: Vec::new(),
+        unmade: Vec::new(),
+        missing: Vec::new(),
     }
 }
 
@@ -132,10 +141,12 @@ fn chapter(
     for (name, png, command) in made.figures {
         files.push(File {
             path: format!("{figure_dir}/{name}"),
-            content: Content::Png(png),
+            content: png.map_or(Content::Unmade, Content::Png),
             origin: format!("`{command}`"),
             numbers: Vec::new(),
             blocks: Vec::new(),
+            unmade: Vec::new(),
+            missing: Vec::new(),
         });
     }
     files.push(File {
@@ -148,6 +159,8 @@ fn chapter(
         origin,
         numbers: made.numbers,
         blocks: made.blocks,
+        unmade: made.unmade,
+        missing: made.missing,
     });
     Ok(())
 }

@@ -11,6 +11,11 @@ use raytree::course::lesson::StepThrough;
 use raytree::course::lesson_spec::{Source, Spec};
 
 use super::run::{self, Output};
+use crate::tools::Need;
+
+/// Stands in a made chapter for what this machine could not make (a number,
+/// an excerpt): the check compares the text around it.
+pub const HOLE: &str = "\u{0}not made here\u{0}";
 
 /// What a page is made from.
 pub struct Input<'a> {
@@ -35,14 +40,19 @@ pub struct Quoted {
 
 /// A made chapter.
 pub struct Made {
-    /// The Markdown.
+    /// The Markdown, with a [`HOLE`] for each part in `unmade`.
     pub text: String,
-    /// Figures: file name and PNG, with the command that drew it.
-    pub figures: Vec<(String, Vec<u8>, String)>,
+    /// Figures: file name and PNG (`None` if it could not be made here),
+    /// with the command that drew it.
+    pub figures: Vec<(String, Option<Vec<u8>>, String)>,
     /// The numbers it quotes.
     pub numbers: Vec<Quoted>,
     /// Blocks it shows (excerpts, stops), named, to say which one went stale.
     pub blocks: Vec<(String, String)>,
+    /// What could not be made on this machine (`number mean`, `excerpt
+    /// compare`, `figure compare.png`), and what it lacks for them.
+    pub unmade: Vec<String>,
+    pub missing: Vec<Need>,
 }
 
 /// The title row of the table of numbers, which the check reads back.
@@ -54,9 +64,18 @@ pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
     let files = run::Files::new(spec, scratch)?;
     let outputs = run::runs(spec, &files).map_err(|e| format!("{}: {e}", src.spec_path))?;
     let mut numbers = BTreeMap::new();
+    let mut unmade = Vec::new();
+    let mut missing = Vec::new();
     for (name, n) in &spec.numbers {
-        let value = run::number(n, &outputs[&n.run])
-            .map_err(|e| format!("{}: line {}: number {name}: {e}", src.spec_path, n.line))?;
+        let value = match &outputs[&n.run] {
+            Output::Unmade => {
+                unmade.push(format!("number {name}"));
+                missing.extend(files.missing(&spec.runs[&n.run].command));
+                HOLE.to_owned()
+            }
+            out => run::number(n, out)
+                .map_err(|e| format!("{}: line {}: number {name}: {e}", src.spec_path, n.line))?,
+        };
         numbers.insert(name.clone(), value);
     }
     let text_path = run::root().join(src.text);
@@ -69,6 +88,8 @@ pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
         figures: Vec::new(),
         blocks: Vec::new(),
         files: &files,
+        unmade,
+        missing,
     };
     let mut body = page.fill(&text, src.text, true)?;
     page.check_used()?;
@@ -82,11 +103,17 @@ pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
             from: origin(spec, n),
         })
         .collect();
+    let mut seen = BTreeSet::new();
+    page.unmade.retain(|u| seen.insert(u.clone()));
+    page.missing.sort();
+    page.missing.dedup();
     Ok(Made {
         text: body,
         figures: page.figures,
         numbers: quoted,
         blocks: page.blocks,
+        unmade: page.unmade,
+        missing: page.missing,
     })
 }
 
@@ -95,9 +122,11 @@ struct Page<'a> {
     outputs: &'a BTreeMap<String, Output>,
     numbers: &'a BTreeMap<String, String>,
     used: BTreeSet<String>,
-    figures: Vec<(String, Vec<u8>, String)>,
+    figures: Vec<(String, Option<Vec<u8>>, String)>,
     blocks: Vec<(String, String)>,
     files: &'a run::Files<'a>,
+    unmade: Vec<String>,
+    missing: Vec<Need>,
 }
 
 impl Page<'_> {
@@ -160,7 +189,14 @@ impl Page<'_> {
                     &format!("{} (figure {name})", self.src.spec_path),
                     false,
                 )?;
-                let png = self.files.png(name)?;
+                let lacks = self.files.missing_for(name);
+                let png = if lacks.is_empty() {
+                    Some(self.files.png(name)?)
+                } else {
+                    self.unmade.push(format!("figure {name}.png"));
+                    self.missing.extend(lacks);
+                    None
+                };
                 let command = format!("{} -o {name}.png", figure.command.text);
                 self.figures
                     .push((format!("{name}.png"), png, command.clone()));
@@ -193,9 +229,15 @@ impl Page<'_> {
                         run::trace_steps(text, x.range),
                     ),
                     Output::Text(text) => (command.clone(), run::text_lines(text, x.range)),
+                    Output::Unmade => (command.clone(), Ok(HOLE.to_owned())),
                 };
                 let body = body.map_err(|e| format!("excerpt {name}: {e}"))?;
-                self.blocks.push((format!("excerpt {name}"), body.clone()));
+                if body == HOLE {
+                    self.unmade.push(format!("excerpt {name}"));
+                    self.missing.extend(self.files.missing(run));
+                } else {
+                    self.blocks.push((format!("excerpt {name}"), body.clone()));
+                }
                 let making: String = self
                     .files
                     .making(run)

@@ -13,6 +13,8 @@ use raytree::views::numbers::{num, vec3};
 use raytree::views::text;
 use serde_json::Value;
 
+use crate::tools::Need;
+
 /// The repository: commands run here, paths are relative to it.
 pub fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
@@ -39,10 +41,27 @@ pub fn raytree(args: &[String]) -> Result<Vec<u8>, String> {
 }
 
 /// What a run gave: a trace document (and its text, as `trace --steps` prints
-/// it), or plain text.
+/// it), or plain text; or nothing, because this machine lacks what it needs.
 pub enum Output {
     Trace(Box<TraceDocument>, String),
     Text(String),
+    Unmade,
+}
+
+/// What `command` itself needs beyond raytree: `raytree postscript` draws
+/// with Ghostscript and, given no program file, reads the lecture (`--slips`
+/// only prints the list).
+pub fn needs(command: &Command) -> Vec<Need> {
+    let args = &command.args;
+    if args[0] != "postscript" || args.iter().any(|a| a == "--slips") {
+        return Vec::new();
+    }
+    let names_a_file = args[1..].iter().any(|a| root().join(a).is_file());
+    if names_a_file {
+        vec![Need::Ghostscript]
+    } else {
+        vec![Need::Ghostscript, Need::Lecture]
+    }
 }
 
 /// The images and figures of one chapter, each made once into a folder of
@@ -60,6 +79,29 @@ impl<'a> Files<'a> {
             dir: tempfile::tempdir_in(scratch).map_err(|e| e.to_string())?,
             made: RefCell::default(),
         })
+    }
+
+    /// What this machine lacks to run `command`: its own needs and those of
+    /// every image it reads.
+    pub fn missing(&self, command: &Command) -> Vec<Need> {
+        let mut out: Vec<Need> = needs(command)
+            .into_iter()
+            .chain(
+                command
+                    .reads
+                    .iter()
+                    .flat_map(|name| self.missing(self.command(name))),
+            )
+            .filter(|n| !n.present())
+            .collect();
+        out.sort();
+        out.dedup();
+        out
+    }
+
+    /// [`Self::missing`] for image or figure `name`.
+    pub fn missing_for(&self, name: &str) -> Vec<Need> {
+        self.missing(self.command(name))
     }
 
     fn command(&self, name: &str) -> &'a Command {
@@ -125,7 +167,8 @@ impl<'a> Files<'a> {
 
 /// Runs every run of a spec. A command that writes an image (a render whose
 /// `--stats` the text quotes, a strip's printed changes) writes it into the
-/// chapter's folder, never into the repository.
+/// chapter's folder, never into the repository. A run this machine lacks
+/// something for is [`Output::Unmade`].
 pub fn runs(spec: &Spec, files: &Files) -> Result<BTreeMap<String, Output>, String> {
     spec.runs
         .iter()
@@ -134,6 +177,9 @@ pub fn runs(spec: &Spec, files: &Files) -> Result<BTreeMap<String, Output>, Stri
 }
 
 fn output(run: &Run, name: &str, files: &Files) -> Result<Output, String> {
+    if !files.missing(&run.command).is_empty() {
+        return Ok(Output::Unmade);
+    }
     let mut args = files.args(&run.command)?;
     if run.command.is_trace() {
         let mut with_json = args;
