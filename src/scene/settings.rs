@@ -43,7 +43,7 @@ impl RenderSettings {
     pub const MAX_PIXELS: u64 = 1 << 26;
     /// Default cutoff: a branch that can change the pixel by less than this is
     /// dropped. Chosen so no 8-bit pixel of the shipped scenes moves by more than
-    /// one level against a fixed depth of 32 (see `tests/suite/recursion.rs`).
+    /// one level against a fixed depth of 32 (see `tests/suite/tracer/recursion.rs`).
     pub const DEFAULT_CUTOFF: f64 = 1.0 / 1024.0;
 
     /// The intersection methods.

@@ -4,7 +4,7 @@
 
 use std::process::Command;
 
-use crate::cli::{fails_in, succeeds};
+use crate::commands::cli::{fails_in, succeeds};
 
 #[test]
 fn a_strip_has_a_frame_per_value_and_the_changes_raytree_diff_measures() {

@@ -89,7 +89,7 @@ fn the_report_adds_up_and_the_figure_is_written() {
 
 #[test]
 fn a_bad_pupil_is_a_one_line_error() {
-    let e = crate::cli::fails_in(
+    let e = crate::commands::cli::fails_in(
         "forward",
         "forward-pupil",
         None,

@@ -212,7 +212,7 @@ fn golden_figures() {
 
 #[test]
 fn bad_names_are_one_line_errors() {
-    use crate::cli::fails_in;
+    use crate::commands::cli::fails_in;
     let e = fails_in("render", "aov-name", None, &["--aov", "colour"]);
     assert!(
         e.starts_with("error: --aov: unknown quantity 'colour' (known: local"),
@@ -252,7 +252,7 @@ fn the_command_writes_the_figure_or_the_bare_image() {
             extra,
         ]
         .concat();
-        crate::cli::succeeds(&args, &dir);
+        crate::commands::cli::succeeds(&args, &dir);
     };
     run(&[]);
     let figure = image::open(dir.join("whitted-depth.png")).unwrap();

@@ -12,7 +12,7 @@ fn root() -> PathBuf {
 /// same name (and the glass interior for glass).
 fn spheres_inc(scene: &serde_json::Value) -> String {
     let mut out = String::from(
-        "// The spheres of scenes/spheres.json, one per line, for spheres.pov.\n// Written by tests/suite/povray.rs (RAYTREE_BLESS=1 cargo test --release povray).\n",
+        "// The spheres of scenes/spheres.json, one per line, for spheres.pov.\n// Written by tests/suite/tracer/povray.rs (RAYTREE_BLESS=1 cargo test --release povray).\n",
     );
     for o in scene["objects"].as_array().unwrap() {
         let Some(s) = o.get("sphere") else { continue };

@@ -2,7 +2,7 @@
 //! the figures behaving as they must (more samples come closer to the converged
 //! reference; no origin offset is worse than the robust one).
 
-use crate::cli::succeeds;
+use crate::commands::cli::succeeds;
 
 #[test]
 fn chart_writes_a_png_and_a_csv_whose_figures_make_sense() {

@@ -313,7 +313,7 @@ fn every_command_in_the_readme_runs() {
         if args[0] == "inspect" {
             // The inspector needs a terminal, and the test has none: it reads
             // its arguments, the scene and the pixel first, so this refusal
-            // means all of them were accepted. inspector_tmux.rs drives it in
+            // means all of them were accepted. inspector/tmux.rs drives it in
             // a real terminal.
             assert_eq!(
                 (out.status.code(), stderr.as_ref()),

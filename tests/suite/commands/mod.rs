@@ -1,0 +1,12 @@
+//! The command-line contract: what each command writes, how every bad input
+//! or signal ends (one line, exit 1 or 2, nothing half-written), fuzzed inputs.
+
+pub mod cli;
+mod chart;
+mod fuzz;
+mod inputs;
+mod outputs;
+mod postscript;
+mod signals;
+mod strip;
+mod trace_files;

@@ -1,0 +1,7 @@
+//! What a reader sees is true: the book and its lessons, the README and the
+//! pages it points to, guided step-throughs, and the shape of the house.
+
+mod architecture;
+mod book;
+mod guide;
+mod readme;

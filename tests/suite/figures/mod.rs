@@ -1,0 +1,6 @@
+//! Figures: ray diagrams, the hierarchy's boxes, per-pixel quantities, each
+//! probed at worked-out pixels and held to golden images.
+
+mod aov;
+mod boxes;
+mod diagram;

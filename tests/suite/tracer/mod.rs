@@ -1,0 +1,16 @@
+//! The tracer is right: against the lecture's formulas, hand-worked colors,
+//! every object tested, golden traces, and the renderer's own invariants.
+
+mod accel;
+mod arithmetic;
+mod forward;
+mod golden_traces;
+mod media;
+mod povray;
+mod ray_tree;
+mod recent;
+mod recursion;
+mod render;
+mod scenes;
+mod stability;
+mod worked;
