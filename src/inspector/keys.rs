@@ -1,14 +1,15 @@
-//! What keys, clicks and the mouse wheel do to the inspector's state.
+//! What keys, clicks and the mouse wheel do to the inspector's state: a key
+//! press is looked up in the key table (`keymap.rs`) and its action done here.
 
-use ratatui::crossterm::event::{
-    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
-};
+use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, MouseEventKind};
 
 use super::app::{App, Focus, Item, Pane, Prompt};
 use super::find::Seek;
+use super::keymap::{self, Action};
 
 impl App {
-    /// Handles one key press.
+    /// Handles one key press: the prompt or the help take it while open,
+    /// else it is looked up in the key table.
     pub fn on_key(&mut self, key: KeyEvent) {
         // A message answers the key before; the next key clears it.
         self.message.clear();
@@ -16,74 +17,81 @@ impl App {
             self.prompt_key(key.code);
             return;
         }
+        let action = keymap::action(&key);
         if self.help {
-            match key.code {
-                KeyCode::Down | KeyCode::Char('j') => self.help_scroll += 1,
-                KeyCode::PageDown => self.help_scroll += 10,
-                KeyCode::Up | KeyCode::Char('k') => {
-                    self.help_scroll = self.help_scroll.saturating_sub(1)
-                }
-                KeyCode::PageUp => self.help_scroll = self.help_scroll.saturating_sub(10),
-                KeyCode::Char('q') => self.quit = true,
+            match action {
+                Some(Action::Down) => self.help_scroll += 1,
+                Some(Action::ScrollDown) => self.help_scroll += 10,
+                Some(Action::Up) => self.help_scroll = self.help_scroll.saturating_sub(1),
+                Some(Action::ScrollUp) => self.help_scroll = self.help_scroll.saturating_sub(10),
+                // q still quits; any other key (Esc too) closes the help.
+                _ if key.code == KeyCode::Char('q') => self.quit = true,
                 _ => self.help = false,
             }
             return;
         }
-        let ctrl = key.modifiers.contains(KeyModifiers::CONTROL);
-        match key.code {
-            KeyCode::Char('q') | KeyCode::Esc => self.quit = true,
-            KeyCode::Char('c') if ctrl => self.quit = true,
-            KeyCode::Char('?') => {
+        if let Some(action) = action {
+            self.act(action);
+        }
+    }
+
+    /// Does what a key asks for.
+    fn act(&mut self, action: Action) {
+        match action {
+            Action::Quit => self.quit = true,
+            Action::Help => {
                 self.help = true;
                 self.help_scroll = 0;
             }
-            KeyCode::Tab | KeyCode::BackTab => {
+            Action::SwitchFocus => {
                 self.focus = if self.focus == Focus::Image {
                     Focus::Tree
                 } else {
                     Focus::Image
                 }
             }
-            KeyCode::Char('n') | KeyCode::Char(' ') => match self.guide {
+            Action::Next => match self.guide {
                 Some(_) => self.stop_by(1),
                 None => self.step_by(1),
             },
-            KeyCode::Char('p') | KeyCode::Backspace => match self.guide {
+            Action::Previous => match self.guide {
                 Some(_) => self.stop_by(-1),
                 None => self.step_by(-1),
             },
-            KeyCode::Char(']') => self.step_by(1),
-            KeyCode::Char('[') => self.step_by(-1),
-            KeyCode::Char('x') => self.step = None,
-            KeyCode::Char('+') | KeyCode::Char('=') => self.zoom_by(1),
-            KeyCode::Char('-') | KeyCode::Char('_') => self.zoom_by(-1),
-            KeyCode::Char('g') => self.prompt = Some(Prompt::GoTo(String::new())),
-            KeyCode::Char('m') => self.prompt = Some(Prompt::Edit(String::new())),
-            KeyCode::Char('w') => self.prompt = Some(Prompt::Write(self.default_edit_name())),
-            KeyCode::Char('u') => self.restore_scene(),
-            KeyCode::Char('e') => self.expand_all(),
-            KeyCode::Char('s') => self.next_sample(),
-            KeyCode::Char('f') => self.find(),
-            KeyCode::Char('F') => {
+            Action::StepForward => self.step_by(1),
+            Action::StepBack => self.step_by(-1),
+            Action::LeaveStepping => self.step = None,
+            Action::ZoomIn => self.zoom_by(1),
+            Action::ZoomOut => self.zoom_by(-1),
+            Action::GoTo => self.prompt = Some(Prompt::GoTo(String::new())),
+            Action::Edit => self.prompt = Some(Prompt::Edit(String::new())),
+            Action::Write => self.prompt = Some(Prompt::Write(self.default_edit_name())),
+            Action::Undo => self.restore_scene(),
+            Action::ExpandAll => self.expand_all(),
+            Action::NextSample => self.next_sample(),
+            Action::Find => self.find(),
+            Action::FindOther => {
                 let k = Seek::ALL.iter().position(|&s| s == self.seek).unwrap_or(0);
                 self.seek = Seek::ALL[(k + 1) % Seek::ALL.len()];
                 self.find();
             }
-            KeyCode::Char('o') => self.cycle_overlay(),
-            KeyCode::Char('v') => {
+            Action::Overlay => self.cycle_overlay(),
+            Action::SwitchPane => {
                 self.pane = match self.pane {
                     Pane::Details => Pane::Diagram,
                     Pane::Diagram => Pane::Details,
                 }
             }
-            KeyCode::PageDown => self.scroll_details(10),
-            KeyCode::PageUp => self.scroll_details(-10),
-            KeyCode::Char('t') => self.focus = Focus::Tree,
-            KeyCode::Char('i') => self.focus = Focus::Image,
-            code => match self.focus {
-                Focus::Image => self.image_key(code),
-                Focus::Tree => self.tree_key(code),
-            },
+            Action::ScrollDown => self.scroll_details(10),
+            Action::ScrollUp => self.scroll_details(-10),
+            Action::FocusTree => self.focus = Focus::Tree,
+            Action::FocusImage => self.focus = Focus::Image,
+            Action::Left | Action::Right | Action::Up | Action::Down | Action::Enter => {
+                match self.focus {
+                    Focus::Image => self.image_key(action),
+                    Focus::Tree => self.tree_key(action),
+                }
+            }
         }
     }
 
@@ -110,15 +118,16 @@ impl App {
         }
     }
 
-    fn image_key(&mut self, code: KeyCode) {
+    /// The arrows and Enter in the image pane.
+    fn image_key(&mut self, action: Action) {
         let step = self.cursor_step();
         let (x, y) = (i64::from(self.cursor.0), i64::from(self.cursor.1));
-        let to = match code {
-            KeyCode::Left | KeyCode::Char('h') => (x - step, y),
-            KeyCode::Right | KeyCode::Char('l') => (x + step, y),
-            KeyCode::Up | KeyCode::Char('k') => (x, y - step),
-            KeyCode::Down | KeyCode::Char('j') => (x, y + step),
-            KeyCode::Enter => {
+        let to = match action {
+            Action::Left => (x - step, y),
+            Action::Right => (x + step, y),
+            Action::Up => (x, y - step),
+            Action::Down => (x, y + step),
+            Action::Enter => {
                 self.focus = Focus::Tree;
                 return;
             }
@@ -131,26 +140,27 @@ impl App {
         ));
     }
 
-    fn tree_key(&mut self, code: KeyCode) {
+    /// The arrows and Enter in the tree pane.
+    fn tree_key(&mut self, action: Action) {
         let items = self.items();
         let Some(&(item, _)) = items.get(self.selected) else {
             return;
         };
-        match code {
-            KeyCode::Up | KeyCode::Char('k') => {
+        match action {
+            Action::Up => {
                 self.selected = self.selected.saturating_sub(1);
                 self.detail_scroll = 0;
             }
-            KeyCode::Down | KeyCode::Char('j') => {
+            Action::Down => {
                 self.selected = (self.selected + 1).min(items.len().saturating_sub(1));
                 self.detail_scroll = 0;
             }
-            KeyCode::Enter | KeyCode::Right | KeyCode::Char('l') => {
+            Action::Enter | Action::Right => {
                 if let Item::Ray(n) = item {
                     self.expanded.insert(n);
                 }
             }
-            KeyCode::Left | KeyCode::Char('h') => match item {
+            Action::Left => match item {
                 Item::Ray(n) if self.expanded.contains(&n) => {
                     self.expanded.remove(&n);
                 }

@@ -13,6 +13,7 @@ mod features;
 mod find;
 mod fit;
 mod image_pane;
+mod keymap;
 mod keys;
 mod preview;
 mod reveal;
@@ -39,9 +40,10 @@ pub use app::{App, Areas, Before, Focus, Guided, Item, Pane, Prompt};
 pub use colors::detect as color_support;
 pub use features::{FeatureMap, Features, scan as scan_features};
 pub use find::{Overlay, Seek};
+pub use keymap::{Action, Binding, KEYS, Key};
 pub use preview::{Picture, Window, render_picture};
 pub use reveal::{Progress, Revealed, call_stack};
-pub use ui::{GLYPHS, KEYS, draw};
+pub use ui::{GLYPHS, draw};
 
 static ACTIVE: AtomicBool = AtomicBool::new(false);
 

@@ -13,75 +13,10 @@ use super::app::{App, Areas, Focus, Pane, Prompt};
 use super::diagram_pane::draw_diagram;
 use super::fit::{cut, wrap};
 use super::image_pane::{ImagePane, legend};
+use super::keymap::KEYS;
 use super::reveal::call_stack;
 use super::tree_pane::draw_tree;
 use crate::views::text::describe;
-
-/// Every key, for the help overlay and the README.
-pub const KEYS: &[(&str, &str)] = &[
-    (
-        "←↑↓→ / hjkl",
-        "move the pixel cursor (image pane) or through the tree (tree pane)",
-    ),
-    ("click", "select a pixel (image pane) or a line (tree pane)"),
-    (
-        "Tab",
-        "switch between the image and the tree pane (also i: image, t: tree)",
-    ),
-    (
-        "Enter / →",
-        "expand the selected ray (tree pane); from the image, go to the tree",
-    ),
-    ("←", "collapse the selected ray, or go to its parent"),
-    ("e", "expand the whole tree"),
-    ("+ / -", "zoom in / out around the cursor"),
-    ("g", "go to a pixel: type x,y and Enter"),
-    (
-        "f",
-        "find the next pixel with a total internal reflection (or what F chose)",
-    ),
-    (
-        "F",
-        "find something else: blocked shadow, refraction, depth ≥ 4, cutoff, miss",
-    ),
-    (
-        "o",
-        "overlay: marks of what f finds, depth, rays or tests per pixel, none",
-    ),
-    (
-        "n / space",
-        "next step of the algorithm (in a guided step-through: next stop)",
-    ),
-    ("p / Backspace", "previous step (guided: previous stop)"),
-    (
-        "] / [",
-        "next / previous step, also in a guided step-through",
-    ),
-    ("x", "leave stepping: show the whole tree"),
-    (
-        "s",
-        "show the pixel's next sample (with several samples per pixel)",
-    ),
-    (
-        "PgUp / PgDn",
-        "scroll the numbers (or the mouse wheel over them)",
-    ),
-    (
-        "v",
-        "small terminals: show the diagram or the numbers on the right",
-    ),
-    (
-        "m",
-        "what if: edit the selected hit's material or a method, e.g. ior=1.0",
-    ),
-    ("u", "undo every edit: the scene as loaded"),
-    ("w", "write the edited scene to a new file"),
-    (
-        "?",
-        "this help (↑↓ PgUp PgDn scroll it, any other key closes)",
-    ),
-    ("q / Esc", "quit"),
-];
 
 /// What the glyphs and colors mean, for the help.
 pub const GLYPHS: &[(&str, &str)] = &[
@@ -369,7 +304,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
     };
     let key_w = KEYS
         .iter()
-        .map(|(k, _)| k.chars().count())
+        .map(|b| b.keys.chars().count())
         .max()
         .unwrap_or(0);
     let glyph_w = GLYPHS
@@ -377,7 +312,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
         .map(|(k, _)| k.chars().count())
         .max()
         .unwrap_or(0);
-    let mut lines: Vec<Line<'static>> = KEYS.iter().map(|(k, w)| row(k, w, key_w)).collect();
+    let mut lines: Vec<Line<'static>> = KEYS.iter().map(|b| row(b.keys, b.what, key_w)).collect();
     lines.push(Line::from(""));
     lines.push(Line::from(Span::styled(
         "what you see",

@@ -66,8 +66,8 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
 fn readme_lists_the_inspectors_keys_as_the_help_does() {
     let readme =
         std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md")).unwrap();
-    for (key, what) in raytree::inspector::KEYS {
-        let row = format!("| {key} | {what} |");
+    for b in raytree::inspector::KEYS {
+        let row = format!("| {} | {} |", b.keys, b.what);
         assert!(readme.contains(&row), "README.md lacks the row {row}");
     }
 }
