@@ -119,8 +119,9 @@ fn inspector_select_pixel(bencher: Bencher) {
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
     bencher.bench_local(|| {
         app.select((416, 209));
+        app.tick(ratatui::layout::Rect::new(0, 0, 160, 48));
         terminal
-            .draw(|f| raytree::inspector::draw(f, &mut app))
+            .draw(|f| raytree::inspector::draw(f, &app))
             .unwrap();
     });
 }
@@ -136,8 +137,9 @@ fn inspector_first_frame(bencher: Bencher) {
         app.picture =
             raytree::inspector::render_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);
         let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+        app.tick(ratatui::layout::Rect::new(0, 0, 160, 48));
         terminal
-            .draw(|f| raytree::inspector::draw(f, &mut app))
+            .draw(|f| raytree::inspector::draw(f, &app))
             .unwrap();
     });
 }

@@ -5,13 +5,12 @@ use std::collections::BTreeSet;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use ratatui::layout::Rect;
-
 use glam::DVec3;
 use serde_json::Value;
 
 use super::features::FeatureMap;
 use super::find::{Overlay, Seek};
+use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
 use crate::scene::Scene;
@@ -59,16 +58,6 @@ pub enum Prompt {
     Write(String),
 }
 
-/// Which pane a small terminal shows on the right.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Pane {
-    /// The selected ray's numbers.
-    #[default]
-    Details,
-    /// The diagram.
-    Diagram,
-}
-
 /// A guided step-through being followed.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Guided {
@@ -89,17 +78,6 @@ pub struct Before {
     pub color: DVec3,
     /// Rays in its first sample's tree.
     pub rays: usize,
-}
-
-/// Where the panes were last drawn, for mouse clicks and the picture's size.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Areas {
-    /// The image pane's inside.
-    pub image: Rect,
-    /// The tree pane's inside.
-    pub tree: Rect,
-    /// The selected ray's pane, border included.
-    pub details: Rect,
 }
 
 /// The inspector's state.

@@ -3,9 +3,10 @@
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, MouseEventKind};
 
-use super::app::{App, Focus, Item, Pane, Prompt};
+use super::app::{App, Focus, Item, Prompt};
 use super::find::Seek;
 use super::keymap::{self, Action};
+use super::layout::Pane;
 
 impl App {
     /// Handles one key press: the prompt or the help take it while open,

@@ -1,19 +1,19 @@
-//! Drawing the inspector: the panes laid out for the terminal's size, the
-//! guide, step and status lines, and the help. A terminal of 120×36 or more
-//! shows all four panes; a smaller one (down to 80×24) shows the image and the
-//! tree on the left and, on the right, the numbers or the diagram (`v`).
+//! Drawing the inspector, reading its state and changing none of it: the
+//! panes where `layout.rs` puts them, the guide, step and status lines, and
+//! the help.
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
-use super::app::{App, Areas, Focus, Pane, Prompt};
+use super::app::{App, Focus, Prompt};
 use super::diagram_pane::draw_diagram;
 use super::fit::{cut, wrap};
 use super::image_pane::{ImagePane, legend};
 use super::keymap::KEYS;
+use super::layout::Panes;
 use super::reveal::call_stack;
 use super::tree_pane::draw_tree;
 use crate::views::text::describe;
@@ -43,40 +43,19 @@ pub const GLYPHS: &[(&str, &str)] = &[
     ),
 ];
 
-/// Draws the whole inspector.
-pub fn draw(frame: &mut Frame, app: &mut App) {
+/// Draws the whole inspector: a pure function of the state (the update step,
+/// [`App::tick`], changes what must change before a frame).
+pub fn draw(frame: &mut Frame, app: &App) {
     let tc = app.truecolor;
     let area = frame.area();
     let guide_lines = guide_text(app, area.width);
     let step_lines = step_text(app, area.width);
-    let [main, guide_area, step_area, status_area] = Layout::vertical([
-        Constraint::Min(6),
-        Constraint::Length(guide_lines.len() as u16),
-        Constraint::Length(step_lines.len() as u16),
-        Constraint::Length(1),
-    ])
-    .areas(area);
-    let wide = area.width >= 120 && area.height >= 36;
-    let (image_area, tree_area, detail_area, diagram_area) = if wide {
-        let [left, right] =
-            Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)])
-                .areas(main);
-        let [image, diagram] =
-            Layout::vertical([Constraint::Percentage(60), Constraint::Percentage(40)]).areas(left);
-        let [tree, details] =
-            Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(right);
-        (image, tree, Some(details), Some(diagram))
-    } else {
-        let [left, right] =
-            Layout::horizontal([Constraint::Percentage(45), Constraint::Percentage(55)])
-                .areas(main);
-        let [image, tree] =
-            Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(left);
-        match app.pane {
-            Pane::Details => (image, tree, Some(right), None),
-            Pane::Diagram => (image, tree, None, Some(right)),
-        }
-    };
+    let panes = Panes::new(
+        area,
+        guide_lines.len() as u16,
+        step_lines.len() as u16,
+        app.pane,
+    );
     let focused = |f: Focus| {
         if app.focus == f {
             Style::default()
@@ -94,29 +73,33 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
         .borders(Borders::ALL)
         .title(" ray tree ")
         .border_style(focused(Focus::Tree));
-    app.areas = Areas {
-        image: image_block.inner(image_area),
-        tree: tree_block.inner(tree_area),
-        details: detail_area.unwrap_or_default(),
-    };
-    app.request_picture();
-
-    frame.render_widget(image_block, image_area);
-    frame.render_widget(ImagePane { app, truecolor: tc }, app.areas.image);
-    draw_tree(frame, app, tree_block, tree_area, tc);
-    let other = if wide { "" } else { " · v: diagram" };
-    if let Some(d) = detail_area {
-        app.detail_scroll = draw_details(frame, app, d, tc, other);
+    let image_inside = image_block.inner(panes.image);
+    frame.render_widget(image_block, panes.image);
+    frame.render_widget(ImagePane { app, truecolor: tc }, image_inside);
+    draw_tree(frame, app, tree_block, panes.tree, tc);
+    let other = if panes.wide { "" } else { " · v: diagram" };
+    if let Some(d) = panes.details {
+        draw_details(frame, app, d, tc, other);
     }
-    if let Some(d) = diagram_area {
+    if let Some(d) = panes.diagram {
         draw_diagram(frame, app, d, tc);
     }
-    frame.render_widget(Paragraph::new(guide_lines), guide_area);
-    frame.render_widget(Paragraph::new(step_lines), step_area);
-    frame.render_widget(Paragraph::new(status_text(app, area.width)), status_area);
+    frame.render_widget(Paragraph::new(guide_lines), panes.guide);
+    frame.render_widget(Paragraph::new(step_lines), panes.step);
+    frame.render_widget(Paragraph::new(status_text(app, area.width)), panes.status);
     if app.help {
         draw_help(frame, app);
     }
+}
+
+/// Where the panes go for `app` on `area`, as [`draw`] lays them out.
+pub(super) fn panes(app: &App, area: Rect) -> Panes {
+    Panes::new(
+        area,
+        guide_text(app, area.width).len() as u16,
+        step_text(app, area.width).len() as u16,
+        app.pane,
+    )
 }
 
 /// The guided step-through's current stop, wrapped (nothing when not guided).
@@ -242,13 +225,26 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     )
 }
 
-/// Draws the selected ray's numbers; returns the first line shown (the
-/// scroll, kept in range). Stepping, the newest lines are at the bottom, so a
-/// scroll past the end shows the end.
-fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) -> u16 {
+/// The selected ray's numbers, wrapped to the pane `area` (border included),
+/// and how many lines fit.
+fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) {
     let inner_width = usize::from(area.width.saturating_sub(2));
     let lines = wrap(super::details::details(app, tc), inner_width);
-    let visible = usize::from(area.height.saturating_sub(2));
+    (lines, usize::from(area.height.saturating_sub(2)))
+}
+
+/// The first line of the numbers shown in `area`: the scroll, kept in range.
+/// Stepping, the newest lines are at the bottom, so a scroll past the end
+/// shows the end.
+pub(super) fn details_top(app: &App, area: Rect) -> usize {
+    let (lines, visible) = detail_lines(app, area, app.truecolor);
+    usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible))
+}
+
+/// Draws the selected ray's numbers from the first line [`details_top`] gives.
+fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) {
+    let inner_width = usize::from(area.width.saturating_sub(2));
+    let (lines, visible) = detail_lines(app, area, tc);
     let top = usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible));
     let below = lines.len().saturating_sub(top + visible);
     let title = if lines.len() > visible {
@@ -272,7 +268,6 @@ fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str)
     let block = Block::default().borders(Borders::ALL).title(title);
     let shown: Vec<Line> = lines.into_iter().skip(top).take(visible).collect();
     frame.render_widget(Paragraph::new(shown).block(block), area);
-    top as u16
 }
 
 /// The first of `titles` that fits `width` columns, else the last one cut with a marker.

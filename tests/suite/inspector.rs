@@ -39,6 +39,7 @@ fn app_at(pixel: Option<(u32, u32)>) -> App {
 fn screen(app: &mut App) -> String {
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
     app.render_picture_now();
+    app.tick(Rect::new(0, 0, 160, 48));
     terminal.draw(|f| draw(f, app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
     (0..buffer.area.height)
@@ -239,9 +240,11 @@ fn panes_show_the_tree_the_numbers_and_the_steps() {
 fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     let mut app = app_at(Some((416, 209)));
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
-    terminal.draw(|f| draw(f, &mut app)).unwrap();
+    app.tick(Rect::new(0, 0, 160, 48));
+    terminal.draw(|f| draw(f, &app)).unwrap();
     app.render_picture_now();
-    terminal.draw(|f| draw(f, &mut app)).unwrap();
+    app.tick(Rect::new(0, 0, 160, 48));
+    terminal.draw(|f| draw(f, &app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
     let image = app.areas.image;
     let window = app.window();

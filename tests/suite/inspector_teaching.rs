@@ -8,6 +8,7 @@ use std::path::Path;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
 use raytree::inspector::{App, Item, draw};
 use raytree::scene::source::SceneSource;
 use raytree::tree::ray_tree::Branch;
@@ -39,8 +40,10 @@ fn screen(app: &mut App, w: u16, h: u16) -> String {
     // The time to trace differs from run to run: hold it still for snapshots.
     app.trace_time = std::time::Duration::ZERO;
     // Lay out once so the picture is rendered for the pane's real size.
+    app.tick(Rect::new(0, 0, w, h));
     terminal.draw(|f| draw(f, app)).unwrap();
     app.render_picture_now();
+    app.tick(Rect::new(0, 0, w, h));
     terminal.draw(|f| draw(f, app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
     (0..buffer.area.height)

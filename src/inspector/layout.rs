@@ -1,0 +1,126 @@
+//! Where the panes go on a terminal of a given size, worked out one way for
+//! the update step (which keeps the areas for clicks and the picture's size)
+//! and for drawing (which only reads). A terminal of 120×36 or more shows all
+//! four panes; a smaller one (down to 80×24) shows the image and the tree on
+//! the left and, on the right, the numbers or the diagram (`v`).
+
+use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::widgets::{Block, Borders};
+
+use super::app::App;
+
+/// Which pane a small terminal shows on the right.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Pane {
+    /// The selected ray's numbers.
+    #[default]
+    Details,
+    /// The diagram.
+    Diagram,
+}
+
+/// Where the panes were last laid out, for mouse clicks and the picture's size.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Areas {
+    /// The image pane's inside.
+    pub image: Rect,
+    /// The tree pane's inside.
+    pub tree: Rect,
+    /// The selected ray's pane, border included.
+    pub details: Rect,
+}
+
+/// The whole screen's parts, borders included.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) struct Panes {
+    /// The image pane.
+    pub image: Rect,
+    /// The tree pane.
+    pub tree: Rect,
+    /// The selected ray's numbers, when shown.
+    pub details: Option<Rect>,
+    /// The diagram, when shown.
+    pub diagram: Option<Rect>,
+    /// The guided step-through's lines.
+    pub guide: Rect,
+    /// The step (or prompt) lines.
+    pub step: Rect,
+    /// The status line.
+    pub status: Rect,
+    /// All four panes fit.
+    pub wide: bool,
+}
+
+impl Panes {
+    /// The panes on `area`, with `guide` and `step` lines below them; `pane`
+    /// says what a small terminal shows on the right.
+    pub fn new(area: Rect, guide: u16, step: u16, pane: Pane) -> Self {
+        let [main, guide_area, step_area, status_area] = Layout::vertical([
+            Constraint::Min(6),
+            Constraint::Length(guide),
+            Constraint::Length(step),
+            Constraint::Length(1),
+        ])
+        .areas(area);
+        let wide = area.width >= 120 && area.height >= 36;
+        let (image, tree, details, diagram) = if wide {
+            let [left, right] =
+                Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)])
+                    .areas(main);
+            let [image, diagram] =
+                Layout::vertical([Constraint::Percentage(60), Constraint::Percentage(40)])
+                    .areas(left);
+            let [tree, details] =
+                Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)])
+                    .areas(right);
+            (image, tree, Some(details), Some(diagram))
+        } else {
+            let [left, right] =
+                Layout::horizontal([Constraint::Percentage(45), Constraint::Percentage(55)])
+                    .areas(main);
+            let [image, tree] =
+                Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)])
+                    .areas(left);
+            match pane {
+                Pane::Details => (image, tree, Some(right), None),
+                Pane::Diagram => (image, tree, None, Some(right)),
+            }
+        };
+        Self {
+            image,
+            tree,
+            details,
+            diagram,
+            guide: guide_area,
+            step: step_area,
+            status: status_area,
+            wide,
+        }
+    }
+
+    /// The insides of the bordered panes, as clicks and the picture see them.
+    pub fn areas(&self) -> Areas {
+        let inside = |r: Rect| Block::default().borders(Borders::ALL).inner(r);
+        Areas {
+            image: inside(self.image),
+            tree: inside(self.tree),
+            details: self.details.unwrap_or_default(),
+        }
+    }
+}
+
+impl App {
+    /// The update step before each frame on a terminal of `area`: takes the
+    /// newest picture the worker finished, lays the panes out (kept for
+    /// clicks), asks the worker for the picture of the image pane's window and
+    /// keeps the numbers' scroll in range. Drawing then only reads.
+    pub fn tick(&mut self, area: Rect) {
+        self.receive_picture();
+        let panes = super::ui::panes(self, area);
+        self.areas = panes.areas();
+        self.request_picture();
+        if let Some(details) = panes.details {
+            self.detail_scroll = super::ui::details_top(self, details) as u16;
+        }
+    }
+}
