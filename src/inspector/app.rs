@@ -1,6 +1,8 @@
 //! The inspector's state and what keys and clicks do to it, apart from any
 //! terminal, so it can be tested directly.
 
+mod keys;
+
 use std::collections::BTreeSet;
 use std::sync::Arc;
 use std::time::{Duration, Instant};

@@ -15,7 +15,6 @@ mod find;
 mod fit;
 mod image_pane;
 mod keymap;
-mod keys;
 mod layout;
 mod preview;
 mod reveal;

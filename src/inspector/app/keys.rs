@@ -3,10 +3,10 @@
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, MouseEventKind};
 
-use super::app::{App, Focus, Item, Prompt};
-use super::find::Seek;
-use super::keymap::{self, Action};
-use super::layout::Pane;
+use super::{App, Focus, Item, Prompt};
+use crate::inspector::find::Seek;
+use crate::inspector::keymap::{self, Action};
+use crate::inspector::layout::Pane;
 
 impl App {
     /// Handles one key press: the prompt or the help take it while open,
