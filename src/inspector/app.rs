@@ -8,10 +8,12 @@ use std::sync::Arc;
 use std::time::{Duration, Instant};
 
 use glam::DVec3;
+use ratatui::layout::Rect;
 use serde_json::Value;
 
 use super::features::FeatureMap;
 use super::find::{Overlay, Seek};
+use super::image_view::ImageView;
 use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
@@ -90,8 +92,6 @@ pub struct App {
     pub source: SceneSource,
     /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
     pub cursor: (u32, u32),
-    /// Zoom level: 0 fits the whole image; each level doubles the magnification.
-    pub zoom: u32,
     /// The selected pixel's trace.
     pub trace: Option<TraceDocument>,
     /// Which of the pixel's samples the panes show (0 is the first).
@@ -118,8 +118,6 @@ pub struct App {
     pub message: String,
     /// Where the panes are.
     pub areas: Areas,
-    /// What the image pane shows.
-    pub picture: Option<Picture>,
     /// How long the last pixel's trace took.
     pub trace_time: Duration,
     /// Draw in 24-bit color (else the 256-color palette).
@@ -148,8 +146,7 @@ pub struct App {
     pub edits: Vec<String>,
     /// The pixel before the first edit.
     pub before: Option<Before>,
-    pub(super) worker: Option<Worker>,
-    pub(super) requested: Option<Window>,
+    image: ImageView,
 }
 
 impl App {
@@ -195,7 +192,6 @@ impl App {
             scene,
             source,
             cursor: (0, 0),
-            zoom: 0,
             trace: None,
             sample: 0,
             detail_scroll: 0,
@@ -209,7 +205,6 @@ impl App {
             prompt: None,
             message: String::new(),
             areas: Areas::default(),
-            picture: None,
             trace_time: Duration::ZERO,
             truecolor: true,
             color_note: None,
@@ -224,8 +219,21 @@ impl App {
             loaded: None,
             edits: Vec::new(),
             before: None,
-            worker,
-            requested: None,
+            image: ImageView::new(worker),
+        }
+    }
+
+    /// The update step before each frame on a terminal of `area`: takes the
+    /// newest picture the worker finished, lays the panes out (kept for
+    /// clicks), asks the worker for the picture of the image pane's window and
+    /// keeps the numbers' scroll in range. Drawing then only reads.
+    pub fn tick(&mut self, area: Rect) {
+        self.image.receive();
+        let panes = super::ui::panes(self, area);
+        self.areas = panes.areas();
+        self.image.request(self.window());
+        if let Some(details) = panes.details {
+            self.detail_scroll = super::ui::details_top(self, details) as u16;
         }
     }
 
@@ -356,77 +364,51 @@ impl App {
         self.set_trace(trace);
     }
 
-    /// The deepest zoom: four dots per image pixel.
-    pub fn max_zoom(&self) -> u32 {
-        let fit = self.fit_scale();
-        (0..16)
-            .take_while(|&z| fit / f64::from(1u32 << z) >= 0.25)
-            .last()
-            .unwrap_or(0)
+    /// The zoom level: 0 fits the whole image; each level doubles the magnification.
+    pub fn zoom(&self) -> u32 {
+        self.image.zoom()
     }
 
-    fn fit_scale(&self) -> f64 {
-        let (w, h) = self.image_size();
-        let (cols, rows) = (
-            f64::from(self.areas.image.width.max(1)),
-            f64::from(self.areas.image.height.max(1)) * 2.0,
-        );
-        (f64::from(w) / cols).max(f64::from(h) / rows)
+    pub(super) fn zoom_by(&mut self, by: i32) {
+        self.image.zoom_by(by, self.image_size(), self.areas.image);
     }
 
     /// The part of the image the pane shows: the whole image at zoom 0, else a
     /// window centered on the cursor, kept inside the image.
     pub fn window(&self) -> Window {
-        let (w, h) = self.image_size();
-        let (cols, rows) = (
-            self.areas.image.width.max(1),
-            self.areas.image.height.max(1) * 2,
-        );
-        let scale = self.fit_scale() / f64::from(1u32 << self.zoom.min(15));
-        let (span_x, span_y) = (f64::from(cols) * scale, f64::from(rows) * scale);
-        let place = |cursor: u32, span: f64, size: u32| {
-            if span >= f64::from(size) {
-                (f64::from(size) - span) / 2.0
-            } else {
-                (f64::from(cursor) + 0.5 - span / 2.0).clamp(0.0, f64::from(size) - span)
-            }
-        };
-        Window {
-            left: place(self.cursor.0, span_x, w),
-            top: place(self.cursor.1, span_y, h),
-            scale,
-            cols,
-            rows,
-        }
+        self.image
+            .window(self.image_size(), self.cursor, self.areas.image)
     }
 
-    /// Asks the worker for the picture of the current window, if it changed.
-    pub fn request_picture(&mut self) {
-        let window = self.window();
-        if self.requested != Some(window) {
-            self.requested = Some(window);
-            if let Some(w) = &self.worker {
-                w.request(window);
-            }
-        }
-    }
-
-    /// Takes the newest picture the worker finished.
-    pub fn receive_picture(&mut self) -> bool {
-        match self.worker.as_ref().and_then(Worker::receive) {
-            Some(p) => {
-                self.picture = Some(p);
-                true
-            }
-            None => false,
-        }
+    /// The image pane's picture, once traced.
+    pub(super) fn picture(&self) -> Option<&Picture> {
+        self.image.picture()
     }
 
     /// Traces the picture of the current window here and now (tests, benchmarks).
     pub fn render_picture_now(&mut self) {
         if let Some(scene) = &self.scene {
-            self.picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
+            let picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
+            self.image.set_picture(picture);
         }
+    }
+
+    /// Shows `picture`, traced elsewhere (benchmarks).
+    pub fn set_picture(&mut self, picture: Option<Picture>) {
+        self.image.set_picture(picture);
+    }
+
+    /// Works with `scene` from now on (an edit, or undoing them), the pixel
+    /// traced again with its tree opened as it was.
+    pub(super) fn swap_scene(&mut self, scene: Arc<Scene>) {
+        self.image.restart(&scene);
+        self.scene = Some(scene);
+        self.features = None;
+        let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
+        self.select(self.cursor);
+        self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);
+        self.expanded = expanded;
+        self.selected = selected.min(self.items().len().saturating_sub(1));
     }
 
     /// Why a node's branches stopped, in words ("" when both were traced or it continues).

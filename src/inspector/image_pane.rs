@@ -91,8 +91,7 @@ impl Widget for ImagePane<'_> {
         let dot = |i: u16, j: u16| -> Option<[u8; 3]> {
             let (x, y) = window.pixel_at(i, j, w, h)?;
             let shown = app
-                .picture
-                .as_ref()
+                .picture()
                 .filter(|p| p.window == window)
                 .and_then(|p| p.dots[usize::from(j) * usize::from(window.cols) + usize::from(i)])
                 .unwrap_or(unknown);

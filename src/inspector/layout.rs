@@ -7,8 +7,6 @@
 use ratatui::layout::{Constraint, Layout, Rect};
 use ratatui::widgets::{Block, Borders};
 
-use super::app::App;
-
 /// Which pane a small terminal shows on the right.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Pane {
@@ -105,22 +103,6 @@ impl Panes {
             image: inside(self.image),
             tree: inside(self.tree),
             details: self.details.unwrap_or_default(),
-        }
-    }
-}
-
-impl App {
-    /// The update step before each frame on a terminal of `area`: takes the
-    /// newest picture the worker finished, lays the panes out (kept for
-    /// clicks), asks the worker for the picture of the image pane's window and
-    /// keeps the numbers' scroll in range. Drawing then only reads.
-    pub fn tick(&mut self, area: Rect) {
-        self.receive_picture();
-        let panes = super::ui::panes(self, area);
-        self.areas = panes.areas();
-        self.request_picture();
-        if let Some(details) = panes.details {
-            self.detail_scroll = super::ui::details_top(self, details) as u16;
         }
     }
 }

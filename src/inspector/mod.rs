@@ -14,6 +14,7 @@ mod features;
 mod find;
 mod fit;
 mod image_pane;
+mod image_view;
 mod keymap;
 mod layout;
 mod preview;

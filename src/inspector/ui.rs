@@ -195,7 +195,7 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     };
     let mut parts = vec![
         format!("pixel {},{} of {w}×{h}", app.cursor.0, app.cursor.1),
-        format!("zoom {}×", 1u32 << app.zoom),
+        format!("zoom {}×", 1u32 << app.zoom()),
         app.source.file.clone(),
         timing,
     ];

@@ -10,7 +10,6 @@ use std::sync::Arc;
 use serde_json::Value;
 
 use super::app::{App, Before, Item};
-use super::preview::Worker;
 use crate::io::output::PendingFile;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
@@ -232,21 +231,6 @@ impl App {
             crate::scene::loader::read(Path::new(&self.source.file)).map_err(|e| e.to_string())?
         };
         serde_json::from_str(&text).map_err(|e| format!("{}: {e}", self.source.file))
-    }
-
-    fn swap_scene(&mut self, scene: Arc<Scene>) {
-        if self.worker.is_some() {
-            self.worker = Some(Worker::start(Arc::clone(&scene)));
-        }
-        self.scene = Some(scene);
-        self.features = None;
-        self.picture = None;
-        self.requested = None;
-        let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
-        self.select(self.cursor);
-        self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);
-        self.expanded = expanded;
-        self.selected = selected.min(self.items().len().saturating_sub(1));
     }
 }
 

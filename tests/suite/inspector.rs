@@ -89,19 +89,19 @@ fn zoom_reaches_every_pixel() {
     let mut app = app_at(Some((416, 209)));
     assert_eq!(app.window().scale, 8.0);
     keys(&mut app, "++");
-    assert_eq!((app.zoom, app.window().scale), (2, 2.0));
+    assert_eq!((app.zoom(), app.window().scale), (2, 2.0));
     // Deepest zoom: four dots per pixel, so a press moves exactly one pixel.
     for _ in 0..10 {
         key(&mut app, KeyCode::Char('+'));
     }
-    assert_eq!((app.zoom, app.window().scale), (5, 0.25));
+    assert_eq!((app.zoom(), app.window().scale), (5, 0.25));
     key(&mut app, KeyCode::Right);
     assert_eq!(app.cursor, (417, 209));
     // The window follows the cursor and keeps it in view.
     let w = app.window();
     assert!(w.dot_of(417, 209).is_some());
     keys(&mut app, "------");
-    assert_eq!(app.zoom, 0);
+    assert_eq!(app.zoom(), 0);
 }
 
 #[test]

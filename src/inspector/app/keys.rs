@@ -183,11 +183,6 @@ impl App {
         }
     }
 
-    fn zoom_by(&mut self, by: i32) {
-        let max = self.max_zoom();
-        self.zoom = self.zoom.saturating_add_signed(by).min(max);
-    }
-
     /// How far one arrow press moves the cursor: one dot, but at least one pixel.
     fn cursor_step(&self) -> i64 {
         (self.window().scale.round() as i64).max(1)
