@@ -11,8 +11,7 @@ use glam::DVec3;
 use ratatui::layout::Rect;
 use serde_json::Value;
 
-use super::features::FeatureMap;
-use super::find::{Overlay, Seek};
+use super::find::Finding;
 use super::image_view::ImageView;
 use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
@@ -128,12 +127,7 @@ pub struct App {
     pub loaded_from: Option<String>,
     /// How far the help is scrolled.
     pub help_scroll: u16,
-    /// The image's features (computed on the first find or overlay).
-    pub features: Option<FeatureMap>,
-    /// What `f` finds.
-    pub seek: Seek,
-    /// What the image pane shows.
-    pub overlay: Overlay,
+    finding: Finding,
     /// The right-hand pane on small terminals.
     pub pane: Pane,
     /// A guided step-through, when following one.
@@ -210,9 +204,7 @@ impl App {
             color_note: None,
             loaded_from: None,
             help_scroll: 0,
-            features: None,
-            seek: Seek::Tir,
-            overlay: Overlay::None,
+            finding: Finding::default(),
             pane: Pane::Details,
             guide: None,
             scene_json: None,
@@ -380,6 +372,11 @@ impl App {
             .window(self.image_size(), self.cursor, self.areas.image)
     }
 
+    /// What `f` seeks and the image pane overlays.
+    pub(super) fn finding(&self) -> &Finding {
+        &self.finding
+    }
+
     /// The image pane's picture, once traced.
     pub(super) fn picture(&self) -> Option<&Picture> {
         self.image.picture()
@@ -403,7 +400,7 @@ impl App {
     pub(super) fn swap_scene(&mut self, scene: Arc<Scene>) {
         self.image.restart(&scene);
         self.scene = Some(scene);
-        self.features = None;
+        self.finding.forget();
         let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
         self.select(self.cursor);
         self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);

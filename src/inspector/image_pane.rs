@@ -35,7 +35,8 @@ fn scalar(overlay: Overlay, f: &Features) -> Option<u32> {
 
 /// What a scalar overlay shows, for the status line: its name and range.
 pub fn legend(app: &App) -> Option<String> {
-    let map = app.features.as_ref()?;
+    let finding = app.finding();
+    let map = finding.features()?;
     let max = |o| {
         map.cells
             .iter()
@@ -43,11 +44,11 @@ pub fn legend(app: &App) -> Option<String> {
             .max()
             .unwrap_or(0)
     };
-    match app.overlay {
+    match finding.overlay() {
         Overlay::None => None,
         Overlay::Marks => Some(format!(
             "overlay: pixels with a {} in cyan (o: next)",
-            app.seek.name()
+            finding.seek().name()
         )),
         o @ (Overlay::Depth | Overlay::Rays | Overlay::Tests) => {
             let what = match o {
@@ -75,14 +76,12 @@ impl Widget for ImagePane<'_> {
         let window = app.window();
         let (w, h) = app.image_size();
         let unknown = [40, 40, 40];
-        let overlay = app
-            .features
-            .as_ref()
-            .filter(|_| app.overlay != Overlay::None);
+        let (seek, shows) = (app.finding().seek(), app.finding().overlay());
+        let overlay = app.finding().features().filter(|_| shows != Overlay::None);
         let top = overlay.map_or(1, |m| {
             m.cells
                 .iter()
-                .filter_map(|f| scalar(app.overlay, f))
+                .filter_map(|f| scalar(shows, f))
                 .max()
                 .unwrap_or(1)
                 .max(1)
@@ -99,12 +98,12 @@ impl Widget for ImagePane<'_> {
                 return Some(shown);
             };
             let f = map.at(x, y);
-            Some(match scalar(app.overlay, &f) {
+            Some(match scalar(shows, &f) {
                 Some(v) => {
                     let c = colorous::VIRIDIS.eval_continuous(f64::from(v) / f64::from(top));
                     [c.r, c.g, c.b]
                 }
-                None if app.seek.matches(&f) => MARK,
+                None if seek.matches(&f) => MARK,
                 None => shown.map(|v| v / 3),
             })
         };

@@ -150,7 +150,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         if !app.message.is_empty() {
             return vec![cut(Line::from(app.message.clone()), w)];
         }
-        let find = format!("f: find a {}", app.seek.name());
+        let find = format!("f: find a {}", app.finding().seek().name());
         return vec![cut(
             Line::from(format!(
                 "n: step through the algorithm ({} steps) · {find} · m: what if · ? every key",

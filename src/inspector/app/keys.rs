@@ -4,7 +4,6 @@
 use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, MouseEventKind};
 
 use super::{App, Focus, Item, Prompt};
-use crate::inspector::find::Seek;
 use crate::inspector::keymap::{self, Action};
 use crate::inspector::layout::Pane;
 
@@ -72,11 +71,14 @@ impl App {
             Action::NextSample => self.next_sample(),
             Action::Find => self.find(),
             Action::FindOther => {
-                let k = Seek::ALL.iter().position(|&s| s == self.seek).unwrap_or(0);
-                self.seek = Seek::ALL[(k + 1) % Seek::ALL.len()];
+                self.finding.seek_next();
                 self.find();
             }
-            Action::Overlay => self.cycle_overlay(),
+            Action::Overlay => {
+                if let Some(said) = self.finding.next_overlay(self.scene.as_deref()) {
+                    self.message = said;
+                }
+            }
             Action::SwitchPane => {
                 self.pane = match self.pane {
                     Pane::Details => Pane::Diagram,
@@ -232,6 +234,15 @@ impl App {
     /// The first tree line shown, so the selection stays in view.
     pub fn tree_scroll(&self, height: u16) -> usize {
         self.selected.saturating_sub(usize::from(height.max(1)) - 1)
+    }
+
+    /// Goes to the next pixel with what `f` seeks.
+    fn find(&mut self) {
+        let (found, said) = self.finding.find(self.scene.as_deref(), self.cursor);
+        self.message = said;
+        if let Some(p) = found {
+            self.select(p);
+        }
     }
 
     fn go_to(&mut self, typed: &str) {
