@@ -7,15 +7,14 @@ use std::collections::BTreeSet;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use glam::DVec3;
 use ratatui::layout::Rect;
-use serde_json::Value;
 
 use super::find::Finding;
 use super::image_view::ImageView;
 use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
+use super::whatif::{Before, WhatIf};
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::recorder::Branch;
@@ -72,17 +71,6 @@ pub struct Guided {
     pub at: usize,
 }
 
-/// The pixel's color and tree before the first what-if edit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Before {
-    /// The pixel.
-    pub pixel: (u32, u32),
-    /// Its color.
-    pub color: DVec3,
-    /// Rays in its first sample's tree.
-    pub rays: usize,
-}
-
 /// The inspector's state.
 pub struct App {
     /// The scene, when known (a saved trace may come without it).
@@ -132,14 +120,7 @@ pub struct App {
     pub pane: Pane,
     /// A guided step-through, when following one.
     pub guide: Option<Guided>,
-    /// The scene file's JSON, for what-if edits (read on the first edit).
-    pub scene_json: Option<Value>,
-    /// The scene as loaded, while edits are in effect.
-    pub loaded: Option<Arc<Scene>>,
-    /// The what-if edits in effect, as typed.
-    pub edits: Vec<String>,
-    /// The pixel before the first edit.
-    pub before: Option<Before>,
+    what_if: WhatIf,
     image: ImageView,
 }
 
@@ -207,10 +188,7 @@ impl App {
             finding: Finding::default(),
             pane: Pane::Details,
             guide: None,
-            scene_json: None,
-            loaded: None,
-            edits: Vec::new(),
-            before: None,
+            what_if: WhatIf::default(),
             image: ImageView::new(worker),
         }
     }
@@ -393,6 +371,60 @@ impl App {
     /// Shows `picture`, traced elsewhere (benchmarks).
     pub fn set_picture(&mut self, picture: Option<Picture>) {
         self.image.set_picture(picture);
+    }
+
+    /// The what-if edits in effect, as typed (a material's with its name).
+    pub fn edits(&self) -> &[String] {
+        self.what_if.edits()
+    }
+
+    /// The what-if edits and the pixel before them.
+    pub(super) fn what_if(&self) -> &WhatIf {
+        &self.what_if
+    }
+
+    /// Applies a typed edit (`ior=1.0`) to the selected hit's material (or a
+    /// method), re-traces the pixel and keeps what it was before the first edit.
+    fn edit(&mut self, typed: &str) {
+        let Some(scene) = self.scene.clone() else {
+            self.message = "no scene to edit".to_owned();
+            return;
+        };
+        let before = self.trace.as_ref().map(|t| Before {
+            pixel: self.cursor,
+            color: t.color,
+            rays: t.samples[0].tree.nodes.len(),
+        });
+        let material = self.selected_material();
+        let edited = self
+            .what_if
+            .edit(&scene, &self.source, material.as_deref(), typed, before);
+        match edited {
+            Ok(edited) => {
+                self.swap_scene(edited);
+                self.message = self.what_if.told();
+            }
+            Err(e) => self.message = e,
+        }
+    }
+
+    /// The selected hit's material, if the selected ray hit something.
+    fn selected_material(&self) -> Option<String> {
+        let t = self.trace.as_ref()?;
+        let node = self.selected_item().map_or(0, Item::node);
+        let hit = t.samples[self.sample].tree.nodes.get(node)?.hit.as_ref()?;
+        Some(hit.material.clone())
+    }
+
+    /// Back to the scene as loaded, the pixel's tree bit for bit as before.
+    fn undo_edits(&mut self) {
+        match self.what_if.undo() {
+            Some(loaded) => {
+                self.swap_scene(loaded);
+                self.message = "the scene is as loaded again".to_owned();
+            }
+            None => self.message = "nothing to undo: the scene is as loaded".to_owned(),
+        }
     }
 
     /// Works with `scene` from now on (an edit, or undoing them), the pixel

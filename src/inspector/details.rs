@@ -28,7 +28,7 @@ pub(super) fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
 /// With edits in effect: what they are, and the pixel's color and ray count
 /// before the first edit and now.
 fn what_if(app: &App, tc: bool) -> Vec<Line<'static>> {
-    let (Some(before), Some(trace)) = (&app.before, &app.trace) else {
+    let (Some(before), Some(trace)) = (app.what_if().before(), &app.trace) else {
         return Vec::new();
     };
     if before.pixel != app.cursor {
@@ -38,7 +38,10 @@ fn what_if(app: &App, tc: bool) -> Vec<Line<'static>> {
     vec![
         Line::from(vec![
             Span::styled("what if  ", bold),
-            Span::raw(format!("{} (u: undo all, w: write)", app.edits.join("; "))),
+            Span::raw(format!(
+                "{} (u: undo all, w: write)",
+                app.what_if().edits().join("; ")
+            )),
         ]),
         Line::from(vec![
             Span::styled("color    ", bold),

@@ -191,7 +191,7 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
     key(&mut app, KeyCode::Char('m'));
     keys(&mut app, "ior=1.0");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.edits, vec!["glass: ior=1.0".to_owned()]);
+    assert_eq!(app.edits(), vec!["glass: ior=1.0".to_owned()]);
     let edited = app.trace.clone().unwrap();
     let nodes = &edited.samples[0].tree.nodes;
     let refracted = nodes[0].refracted.as_ref().unwrap().node.unwrap();
@@ -212,7 +212,7 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
         &original,
         "undo gives the tree as loaded, bit for bit"
     );
-    assert!(app.edits.is_empty());
+    assert!(app.edits().is_empty());
 }
 
 #[test]

@@ -6,6 +6,7 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, Mous
 use super::{App, Focus, Item, Prompt};
 use crate::inspector::keymap::{self, Action};
 use crate::inspector::layout::Pane;
+use crate::inspector::whatif;
 
 impl App {
     /// Handles one key press: the prompt or the help take it while open,
@@ -65,8 +66,8 @@ impl App {
             Action::ZoomOut => self.zoom_by(-1),
             Action::GoTo => self.prompt = Some(Prompt::GoTo(String::new())),
             Action::Edit => self.prompt = Some(Prompt::Edit(String::new())),
-            Action::Write => self.prompt = Some(Prompt::Write(self.default_edit_name())),
-            Action::Undo => self.restore_scene(),
+            Action::Write => self.prompt = Some(Prompt::Write(whatif::default_name(&self.source))),
+            Action::Undo => self.undo_edits(),
             Action::ExpandAll => self.expand_all(),
             Action::NextSample => self.next_sample(),
             Action::Find => self.find(),
@@ -114,7 +115,7 @@ impl App {
             KeyCode::Enter => match self.prompt.take() {
                 Some(Prompt::GoTo(t)) => self.go_to(&t),
                 Some(Prompt::Edit(t)) => self.edit(&t),
-                Some(Prompt::Write(t)) => self.write_scene(&t),
+                Some(Prompt::Write(t)) => self.message = self.what_if.write(&t),
                 None => {}
             },
             _ => {}
