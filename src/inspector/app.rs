@@ -14,13 +14,14 @@ use super::image_view::ImageView;
 use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
+use super::stepping::{Guided, Stepping};
 use super::whatif::{Before, WhatIf};
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::trace::recorder::Branch;
 use crate::tree::document::TraceDocument;
-use crate::tree::steps::Step;
-use crate::views::guide::{Narration, Script};
+use crate::tree::steps::{Step, StepKind};
+use crate::views::guide::Script;
 
 /// Which pane the arrow keys drive.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -60,17 +61,6 @@ pub enum Prompt {
     Write(String),
 }
 
-/// A guided step-through being followed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Guided {
-    /// The script.
-    pub script: Script,
-    /// Its stops, filled with the trace's numbers.
-    pub told: Vec<Narration>,
-    /// The stop shown.
-    pub at: usize,
-}
-
 /// The inspector's state.
 pub struct App {
     /// The scene, when known (a saved trace may come without it).
@@ -89,10 +79,7 @@ pub struct App {
     pub expanded: BTreeSet<usize>,
     /// The selected line of the tree pane.
     pub selected: usize,
-    /// The algorithm's steps for the trace, and the current one.
-    pub steps: Vec<Step>,
-    /// Index into `steps`, once stepping has started.
-    pub step: Option<usize>,
+    stepping: Stepping,
     /// Which pane the arrows drive.
     pub focus: Focus,
     /// The key help is shown.
@@ -119,7 +106,7 @@ pub struct App {
     /// The right-hand pane on small terminals.
     pub pane: Pane,
     /// A guided step-through, when following one.
-    pub guide: Option<Guided>,
+    guide: Option<Guided>,
     what_if: WhatIf,
     image: ImageView,
 }
@@ -172,8 +159,7 @@ impl App {
             detail_scroll: 0,
             expanded: BTreeSet::new(),
             selected: 0,
-            steps: Vec::new(),
-            step: None,
+            stepping: Stepping::default(),
             focus: Focus::Image,
             help: false,
             quit: false,
@@ -239,12 +225,87 @@ impl App {
 
     fn set_trace(&mut self, trace: TraceDocument) {
         self.sample = self.sample.min(trace.samples.len().saturating_sub(1));
-        self.steps = trace.steps(self.sample);
+        self.stepping = Stepping::new(trace.steps(self.sample));
         self.trace = Some(trace);
         self.expanded = BTreeSet::from([0]);
         self.selected = 0;
-        self.step = None;
         self.detail_scroll = 0;
+    }
+
+    /// The algorithm's steps for the pixel's tree, in execution order.
+    pub fn steps(&self) -> &[Step] {
+        self.stepping.steps()
+    }
+
+    /// The current step's index into [`App::steps`], once stepping has started.
+    pub fn step(&self) -> Option<usize> {
+        self.stepping.at()
+    }
+
+    /// The current step, while stepping.
+    pub(super) fn current_step(&self) -> Option<&Step> {
+        self.stepping.current()
+    }
+
+    /// The guided step-through followed, if any.
+    pub(super) fn guide(&self) -> Option<&Guided> {
+        self.guide.as_ref()
+    }
+
+    /// What the algorithm has computed at the current step (everything when
+    /// not stepping).
+    pub fn revealed(&self) -> Revealed {
+        let tree = self.trace.as_ref().map(|t| &t.samples[self.sample].tree);
+        self.stepping.revealed(tree)
+    }
+
+    /// Follows a guided step-through: its pixel, its first stop.
+    pub fn follow(&mut self, script: Script) -> Result<(), String> {
+        self.sample = script.sample;
+        self.select((script.pixel[0], script.pixel[1]));
+        let trace = self
+            .trace
+            .as_ref()
+            .ok_or("the script's pixel could not be traced")?;
+        let told = crate::views::guide::narrate(&script, trace)?;
+        self.guide = Some(Guided::new(script, told));
+        self.stop_by(0);
+        Ok(())
+    }
+
+    /// Moves `by` stops through the guided step-through.
+    fn stop_by(&mut self, by: i64) {
+        if let Some(step) = self.guide.as_mut().and_then(|g| g.move_by(by)) {
+            self.go_to_step(step);
+        }
+    }
+
+    /// Moves `by` steps through the algorithm and selects the step's line.
+    fn step_by(&mut self, by: i64) {
+        if let Some(s) = self.stepping.target(by) {
+            self.go_to_step(s);
+        }
+    }
+
+    /// Makes step `s` the current one and selects its line: the ray's, or the
+    /// shadow ray's for a shadow step.
+    pub fn go_to_step(&mut self, s: usize) {
+        let Some(step) = self.stepping.go_to(s) else {
+            return;
+        };
+        // Stepping, the newest numbers are the last lines: show the end.
+        self.detail_scroll = u16::MAX;
+        self.select_node(step.node);
+        if let StepKind::Shadow(k) = step.kind {
+            self.expanded.insert(step.node);
+            if let Some(pos) = self
+                .items()
+                .iter()
+                .position(|&(item, _)| item == Item::Shadow(step.node, k))
+            {
+                self.selected = pos;
+            }
+        }
     }
 
     /// The tree pane's lines: the item and its indentation; while stepping,

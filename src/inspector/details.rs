@@ -68,8 +68,8 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
     };
     // The camera stage comes before any ray: it is what step 1 computes.
     let camera_step = app
-        .step
-        .is_some_and(|s| app.steps.get(s).is_some_and(|s| s.kind == StepKind::Camera));
+        .current_step()
+        .is_some_and(|s| s.kind == StepKind::Camera);
     if let (true, Some(stage)) = (camera_step, &trace.samples[app.sample].camera) {
         return explained(explain::camera(&trace.camera, stage, ""));
     }
@@ -91,7 +91,7 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
         (Some(stage), None) => explained(explain::camera(&trace.camera, stage, "")),
         _ => Vec::new(),
     };
-    if app.step.is_some() {
+    if app.step().is_some() {
         let revealed = app.revealed();
         let p = revealed.node(item.node());
         let mut out = ray_details(node);

@@ -38,7 +38,7 @@ pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     // only what the algorithm has computed so far.
     let options = Options {
         sample: app.sample,
-        until_step: app.step,
+        until_step: app.step(),
         ..Options::default()
     };
     let Ok(lay) = layout(trace, scene, &options) else {

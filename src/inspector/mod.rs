@@ -38,7 +38,7 @@ use ratatui::crossterm::terminal::{
     EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
 };
 
-pub use app::{App, Focus, Guided, Item, Prompt};
+pub use app::{App, Focus, Item, Prompt};
 pub use colors::detect as color_support;
 pub use features::{FeatureMap, Features, scan as scan_features};
 pub use find::{Overlay, Seek};
@@ -46,6 +46,7 @@ pub use keymap::{Action, Binding, KEYS, Key};
 pub use layout::{Areas, Pane};
 pub use preview::{Picture, Window, render_picture};
 pub use reveal::{Progress, Revealed, call_stack};
+pub use stepping::Guided;
 pub use ui::{GLYPHS, draw};
 pub use whatif::Before;
 

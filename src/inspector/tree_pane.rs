@@ -77,7 +77,7 @@ pub fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: boo
     };
     let nodes = &trace.samples[app.sample].tree.nodes;
     let inner = block.inner(area);
-    let step_node = app.step.map(|s| app.steps[s].node);
+    let step_node = app.current_step().map(|s| s.node);
     let shown = app.revealed();
     let width = usize::from(inner.width);
     let items = app.items();

@@ -104,19 +104,16 @@ pub(super) fn panes(app: &App, area: Rect) -> Panes {
 
 /// The guided step-through's current stop, wrapped (nothing when not guided).
 fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
-    let Some(g) = &app.guide else {
+    let Some(g) = app.guide() else {
         return Vec::new();
     };
-    let Some(told) = g.told.get(g.at) else {
+    let Some(told) = g.stop() else {
         return Vec::new();
     };
-    let title = g
-        .script
-        .title
-        .clone()
-        .unwrap_or_else(|| "guided".to_owned());
+    let title = g.title().unwrap_or("guided");
+    let (at, stops) = g.position();
     let head = Span::styled(
-        format!("{title} · stop {}/{}: ", g.at + 1, g.told.len()),
+        format!("{title} · stop {}/{stops}: ", at + 1),
         Style::default()
             .fg(Color::Cyan)
             .add_modifier(Modifier::BOLD),
@@ -146,7 +143,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
             w,
         )];
     }
-    let Some(s) = app.step else {
+    let Some(s) = app.step() else {
         if !app.message.is_empty() {
             return vec![cut(Line::from(app.message.clone()), w)];
         }
@@ -154,7 +151,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         return vec![cut(
             Line::from(format!(
                 "n: step through the algorithm ({} steps) · {find} · m: what if · ? every key",
-                app.steps.len()
+                app.steps().len()
             )),
             w,
         )];
@@ -162,8 +159,8 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let Some(trace) = &app.trace else {
         return Vec::new();
     };
-    let node = app.steps[s].node;
-    let head = format!("step {}/{} ", s + 1, app.steps.len());
+    let node = app.steps()[s].node;
+    let head = format!("step {}/{} ", s + 1, app.steps().len());
     let room = w.saturating_sub(head.chars().count() + " in ".len() + " (x: whole tree)".len());
     let stack = call_stack(&trace.samples[app.sample].tree, node, room);
     let first = Line::from(vec![
@@ -171,7 +168,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         Span::styled(format!("in {stack}"), Style::default().fg(Color::Cyan)),
         Span::raw(" (x: whole tree)"),
     ]);
-    let what = describe(trace, app.sample, &app.steps[s]).0;
+    let what = describe(trace, app.sample, &app.steps()[s]).0;
     let mut lines = vec![cut(first, w)];
     let mut told = wrap(vec![Line::from(what)], w);
     if told.len() > 2 {
@@ -213,7 +210,7 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     if let Some(note) = &app.color_note {
         parts.push(note.clone());
     }
-    if !app.message.is_empty() && app.step.is_some() {
+    if !app.message.is_empty() && app.step().is_some() {
         parts.insert(0, app.message.clone());
     }
     cut(

@@ -143,25 +143,25 @@ fn tree_expands_collapses_and_goes_to_the_parent() {
 #[test]
 fn steps_go_forward_and_back_and_select_their_ray() {
     let mut app = app_at(Some((416, 209)));
-    let steps = app.steps.clone();
+    let steps = app.steps().to_vec();
     assert!(steps.len() > 20);
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
     // Forward to the first step of another ray: the tree selects that ray.
     let first_child = steps.iter().position(|s| s.node != 0).unwrap();
     for _ in 0..first_child {
         key(&mut app, KeyCode::Char(' '));
     }
-    assert_eq!(app.step, Some(first_child));
+    assert_eq!(app.step(), Some(first_child));
     assert_eq!(app.selected_item().unwrap().node(), steps[first_child].node);
     key(&mut app, KeyCode::Char('p'));
     key(&mut app, KeyCode::Backspace);
-    assert_eq!(app.step, Some(first_child - 2));
+    assert_eq!(app.step(), Some(first_child - 2));
     // Back past the start stays at the first step.
     for _ in 0..100 {
         key(&mut app, KeyCode::Char('p'));
     }
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
 }
 
 #[test]

@@ -71,7 +71,7 @@ fn has_tir(x: u32, y: u32) -> bool {
 #[test]
 fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
     let mut app = whitted_at((416, 209));
-    let steps = app.steps.clone();
+    let steps = app.steps().to_vec();
     let tree = app.trace.as_ref().unwrap().samples[0].tree.clone();
     // Independently of the inspector: the step at which each ray is spawned
     // and the step at which its color is returned.
@@ -126,7 +126,7 @@ fn the_numbers_pane_never_gives_the_color_away_before_it_is_computed() {
     let mut app = whitted_at((416, 209));
     let color = raytree::views::numbers::color(app.trace.as_ref().unwrap().color);
     let combine = app
-        .steps
+        .steps()
         .iter()
         .position(|s| s.node == 0 && s.kind == StepKind::Combine)
         .unwrap();
@@ -238,7 +238,7 @@ fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
 
 #[test]
 fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
-    let steps = whitted_at((416, 209)).steps;
+    let steps = whitted_at((416, 209)).steps().to_vec();
     let app = whitted_at((416, 209));
     let nodes = &app.trace.as_ref().unwrap().samples[0].tree.nodes;
     let tir = steps
@@ -263,21 +263,21 @@ fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
     .unwrap();
     let mut app = whitted_at((0, 0));
     app.follow(script).unwrap();
-    assert_eq!((app.cursor, app.step), ((416, 209), Some(0)));
+    assert_eq!((app.cursor, app.step()), ((416, 209), Some(0)));
     let first = screen(&mut app, 80, 24);
     assert!(first.contains("TIR · stop 1/2: c = 416"), "{first}");
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(tir));
+    assert_eq!(app.step(), Some(tir));
     let second = screen(&mut app, 80, 24);
     assert!(second.contains("stop 2/2: θ₁ = "), "{second}");
     assert!(second.contains("total internal reflection"), "{second}");
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(tir), "the last stop stays");
+    assert_eq!(app.step(), Some(tir), "the last stop stays");
     key(&mut app, KeyCode::Char('p'));
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
     // ] and [ still step one algorithm step at a time between the stops.
     key(&mut app, KeyCode::Char(']'));
-    assert_eq!(app.step, Some(1));
+    assert_eq!(app.step(), Some(1));
 }
 
 /// The screens at the two sizes the issue names, compared with committed
@@ -288,7 +288,7 @@ fn screens_at_80x24_and_160x48_match_their_snapshots() {
         let mut app = whitted_at((416, 209));
         // Step to the total internal reflection's color sum, the deepest point of the story.
         let combine = app
-            .steps
+            .steps()
             .iter()
             .position(|s| s.node == 0 && s.kind == StepKind::Combine)
             .unwrap();

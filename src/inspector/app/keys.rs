@@ -61,7 +61,7 @@ impl App {
             },
             Action::StepForward => self.step_by(1),
             Action::StepBack => self.step_by(-1),
-            Action::LeaveStepping => self.step = None,
+            Action::LeaveStepping => self.stepping.leave(),
             Action::ZoomIn => self.zoom_by(1),
             Action::ZoomOut => self.zoom_by(-1),
             Action::GoTo => self.prompt = Some(Prompt::GoTo(String::new())),
