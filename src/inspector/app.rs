@@ -3,7 +3,6 @@
 
 mod keys;
 
-use std::collections::BTreeSet;
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
@@ -14,41 +13,14 @@ use super::image_view::ImageView;
 use super::layout::{Areas, Pane};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
+use super::selection::{Focus, Item, Selection};
 use super::stepping::{Guided, Stepping};
 use super::whatif::{Before, WhatIf};
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
-use crate::trace::recorder::Branch;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::{Step, StepKind};
 use crate::views::guide::Script;
-
-/// Which pane the arrow keys drive.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Focus {
-    /// Arrows move the pixel cursor.
-    Image,
-    /// Arrows move through the ray tree.
-    Tree,
-}
-
-/// A line of the tree pane.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Item {
-    /// A ray: node index.
-    Ray(usize),
-    /// A shadow ray: node index and light index.
-    Shadow(usize, usize),
-}
-
-impl Item {
-    /// The node the line belongs to.
-    pub fn node(self) -> usize {
-        match self {
-            Item::Ray(n) | Item::Shadow(n, _) => n,
-        }
-    }
-}
 
 /// A line being typed in the step line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -67,21 +39,8 @@ pub struct App {
     pub scene: Option<Arc<Scene>>,
     /// Names the scene in traces.
     pub source: SceneSource,
-    /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
-    pub cursor: (u32, u32),
-    /// The selected pixel's trace.
-    pub trace: Option<TraceDocument>,
-    /// Which of the pixel's samples the panes show (0 is the first).
-    pub sample: usize,
-    /// How many lines of the selected ray's details are scrolled past.
-    pub detail_scroll: u16,
-    /// Nodes whose children are shown.
-    pub expanded: BTreeSet<usize>,
-    /// The selected line of the tree pane.
-    pub selected: usize,
+    selection: Selection,
     stepping: Stepping,
-    /// Which pane the arrows drive.
-    pub focus: Focus,
     /// The key help is shown.
     pub help: bool,
     /// The user asked to quit.
@@ -92,8 +51,6 @@ pub struct App {
     pub message: String,
     /// Where the panes are.
     pub areas: Areas,
-    /// How long the last pixel's trace took.
-    pub trace_time: Duration,
     /// Draw in 24-bit color (else the 256-color palette).
     pub truecolor: bool,
     /// Why the terminal is drawn in 256 colors, when it is.
@@ -138,7 +95,8 @@ impl App {
         };
         let source = trace.scene.clone();
         let mut app = Self::empty(scene, source, worker);
-        app.cursor = trace.pixel.map_or((0, 0), |p| (p.x, p.y));
+        app.selection
+            .set_pixel(trace.pixel.map_or((0, 0), |p| (p.x, p.y)));
         app.set_trace(trace);
         if app.scene.is_none() {
             app.message = format!(
@@ -153,20 +111,13 @@ impl App {
         Self {
             scene,
             source,
-            cursor: (0, 0),
-            trace: None,
-            sample: 0,
-            detail_scroll: 0,
-            expanded: BTreeSet::new(),
-            selected: 0,
+            selection: Selection::default(),
             stepping: Stepping::default(),
-            focus: Focus::Image,
             help: false,
             quit: false,
             prompt: None,
             message: String::new(),
             areas: Areas::default(),
-            trace_time: Duration::ZERO,
             truecolor: true,
             color_note: None,
             loaded_from: None,
@@ -189,47 +140,64 @@ impl App {
         self.areas = panes.areas();
         self.image.request(self.window());
         if let Some(details) = panes.details {
-            self.detail_scroll = super::ui::details_top(self, details) as u16;
+            let top = super::ui::details_top(self, details) as u16;
+            self.selection.set_scroll(top);
         }
     }
 
     /// The full image's size.
     pub fn image_size(&self) -> (u32, u32) {
-        match (&self.scene, &self.trace) {
+        match (&self.scene, self.selection.trace()) {
             (Some(s), _) => (s.settings.width, s.settings.height),
             (None, Some(t)) => (t.settings.width, t.settings.height),
             _ => (1, 1),
         }
     }
 
+    /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
+    pub fn cursor(&self) -> (u32, u32) {
+        self.selection.pixel()
+    }
+
+    /// The selected pixel's trace.
+    pub fn trace(&self) -> Option<&TraceDocument> {
+        self.selection.trace()
+    }
+
+    /// The selected pixel, its trace and the tree pane's cursor.
+    pub(super) fn selection(&self) -> &Selection {
+        &self.selection
+    }
+
+    /// Which pane the arrows drive.
+    pub fn focus(&self) -> Focus {
+        self.selection.focus()
+    }
+
+    /// Holds the time to trace still (snapshots).
+    pub fn set_trace_time(&mut self, took: Duration) {
+        self.selection.set_traced_in(took);
+    }
+
     /// Traces pixel `(x, y)` and shows its tree.
     pub fn select(&mut self, (x, y): (u32, u32)) {
         let (w, h) = self.image_size();
-        self.cursor = (x.min(w - 1), y.min(h - 1));
+        let (x, y) = (x.min(w - 1), y.min(h - 1));
+        self.selection.set_pixel((x, y));
         let Some(scene) = &self.scene else { return };
         let started = Instant::now();
-        match crate::tree::record::pixel(
-            scene,
-            self.source.clone(),
-            self.cursor.0,
-            self.cursor.1,
-            None,
-        ) {
+        match crate::tree::record::pixel(scene, self.source.clone(), x, y, None) {
             Ok(trace) => {
                 self.set_trace(trace);
-                self.trace_time = started.elapsed();
+                self.selection.set_traced_in(started.elapsed());
             }
             Err(e) => self.message = e.to_string(),
         }
     }
 
+    /// Shows `trace`, not stepping.
     fn set_trace(&mut self, trace: TraceDocument) {
-        self.sample = self.sample.min(trace.samples.len().saturating_sub(1));
-        self.stepping = Stepping::new(trace.steps(self.sample));
-        self.trace = Some(trace);
-        self.expanded = BTreeSet::from([0]);
-        self.selected = 0;
-        self.detail_scroll = 0;
+        self.stepping = Stepping::new(self.selection.show(trace));
     }
 
     /// The algorithm's steps for the pixel's tree, in execution order.
@@ -255,17 +223,15 @@ impl App {
     /// What the algorithm has computed at the current step (everything when
     /// not stepping).
     pub fn revealed(&self) -> Revealed {
-        let tree = self.trace.as_ref().map(|t| &t.samples[self.sample].tree);
-        self.stepping.revealed(tree)
+        self.stepping.revealed(self.selection.tree())
     }
 
     /// Follows a guided step-through: its pixel, its first stop.
     pub fn follow(&mut self, script: Script) -> Result<(), String> {
-        self.sample = script.sample;
+        self.selection.set_sample(script.sample);
         self.select((script.pixel[0], script.pixel[1]));
         let trace = self
-            .trace
-            .as_ref()
+            .trace()
             .ok_or("the script's pixel could not be traced")?;
         let told = crate::views::guide::narrate(&script, trace)?;
         self.guide = Some(Guided::new(script, told));
@@ -294,105 +260,43 @@ impl App {
             return;
         };
         // Stepping, the newest numbers are the last lines: show the end.
-        self.detail_scroll = u16::MAX;
+        self.selection.set_scroll(u16::MAX);
         self.select_node(step.node);
         if let StepKind::Shadow(k) = step.kind {
-            self.expanded.insert(step.node);
-            if let Some(pos) = self
-                .items()
-                .iter()
-                .position(|&(item, _)| item == Item::Shadow(step.node, k))
-            {
-                self.selected = pos;
-            }
+            self.selection.expand(step.node);
+            let shown = self.revealed();
+            self.selection
+                .select_item(Item::Shadow(step.node, k), &shown);
         }
     }
 
     /// The tree pane's lines: the item and its indentation; while stepping,
     /// only the rays spawned and shadow rays cast so far.
     pub fn items(&self) -> Vec<(Item, usize)> {
-        let mut out = Vec::new();
-        if let Some(t) = &self.trace {
-            let nodes = &t.samples[self.sample].tree.nodes;
-            let shown = self.revealed();
-            if !nodes.is_empty() && shown.node(0).spawned {
-                self.push_items(nodes, &shown, 0, 0, &mut out);
-            }
-        }
-        out
-    }
-
-    fn push_items(
-        &self,
-        nodes: &[crate::tree::ray_tree::RayNode],
-        shown: &Revealed,
-        i: usize,
-        indent: usize,
-        out: &mut Vec<(Item, usize)>,
-    ) {
-        out.push((Item::Ray(i), indent));
-        if !self.expanded.contains(&i) || out.len() > nodes.len() * 64 {
-            return;
-        }
-        for k in 0..shown.node(i).shadows.min(nodes[i].shadow_rays.len()) {
-            out.push((Item::Shadow(i, k), indent + 1));
-        }
-        for c in nodes[i].children() {
-            if shown.node(c).spawned {
-                self.push_items(nodes, shown, c, indent + 1, out);
-            }
-        }
+        self.selection.items(&self.revealed())
     }
 
     /// The selected tree line's item.
     pub fn selected_item(&self) -> Option<Item> {
-        self.items().get(self.selected).map(|&(item, _)| item)
-    }
-
-    /// Whether node `i` has anything to expand.
-    pub fn expandable(&self, i: usize) -> bool {
-        self.trace.as_ref().is_some_and(|t| {
-            let n = &t.samples[self.sample].tree.nodes[i];
-            !n.shadow_rays.is_empty() || n.children().next().is_some()
-        })
+        self.selection.selected_item(&self.revealed())
     }
 
     /// Selects node `n`'s line, expanding its ancestors.
     pub fn select_node(&mut self, n: usize) {
-        let Some(t) = &self.trace else { return };
-        let nodes = &t.samples[self.sample].tree.nodes;
-        let mut p = nodes[n].parent;
-        while let Some(i) = p {
-            self.expanded.insert(i);
-            p = nodes[i].parent;
-        }
-        if let Some(pos) = self
-            .items()
-            .iter()
-            .position(|&(item, _)| item == Item::Ray(n))
-        {
-            self.selected = pos;
-        }
+        let shown = self.revealed();
+        self.selection.select_node(n, &shown);
     }
 
-    pub(super) fn expand_all(&mut self) {
-        if let Some(t) = &self.trace {
-            self.expanded = (0..t.samples[self.sample].tree.nodes.len()).collect();
-        }
-    }
-
-    /// Scrolls the selected ray's details by `by` lines.
-    pub fn scroll_details(&mut self, by: i32) {
-        self.detail_scroll = self.detail_scroll.saturating_add_signed(by as i16);
+    /// Opens every ray of the tree.
+    pub fn expand_all(&mut self) {
+        self.selection.expand_all();
     }
 
     /// Shows the pixel's next sample (after the last, the first again).
-    pub fn next_sample(&mut self) {
-        let Some(trace) = self.trace.take() else {
-            return;
-        };
-        self.sample = (self.sample + 1) % trace.samples.len().max(1);
-        self.set_trace(trace);
+    fn next_sample(&mut self) {
+        if let Some(steps) = self.selection.next_sample() {
+            self.stepping = Stepping::new(steps);
+        }
     }
 
     /// The zoom level: 0 fits the whole image; each level doubles the magnification.
@@ -408,7 +312,7 @@ impl App {
     /// window centered on the cursor, kept inside the image.
     pub fn window(&self) -> Window {
         self.image
-            .window(self.image_size(), self.cursor, self.areas.image)
+            .window(self.image_size(), self.cursor(), self.areas.image)
     }
 
     /// What `f` seeks and the image pane overlays.
@@ -451,8 +355,8 @@ impl App {
             self.message = "no scene to edit".to_owned();
             return;
         };
-        let before = self.trace.as_ref().map(|t| Before {
-            pixel: self.cursor,
+        let before = self.trace().map(|t| Before {
+            pixel: self.cursor(),
             color: t.color,
             rays: t.samples[0].tree.nodes.len(),
         });
@@ -471,9 +375,8 @@ impl App {
 
     /// The selected hit's material, if the selected ray hit something.
     fn selected_material(&self) -> Option<String> {
-        let t = self.trace.as_ref()?;
         let node = self.selected_item().map_or(0, Item::node);
-        let hit = t.samples[self.sample].tree.nodes.get(node)?.hit.as_ref()?;
+        let hit = self.selection.tree()?.nodes.get(node)?.hit.as_ref()?;
         Some(hit.material.clone())
     }
 
@@ -494,36 +397,10 @@ impl App {
         self.image.restart(&scene);
         self.scene = Some(scene);
         self.finding.forget();
-        let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
-        self.select(self.cursor);
-        self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);
-        self.expanded = expanded;
-        self.selected = selected.min(self.items().len().saturating_sub(1));
-    }
-
-    /// Why a node's branches stopped, in words ("" when both were traced or it continues).
-    pub fn stop_reason(&self, n: usize) -> String {
-        let Some(t) = &self.trace else {
-            return String::new();
-        };
-        let node = &t.samples[self.sample].tree.nodes[n];
-        if node.hit.is_none() {
-            return "miss → background".to_owned();
-        }
-        let mut why: Vec<&str> = Vec::new();
-        for (branch, none) in [
-            (&node.reflected, "not reflective"),
-            (&node.refracted, "opaque"),
-        ] {
-            match branch.as_ref().map(|b| b.outcome) {
-                Some(Branch::NoCoefficient) => why.push(none),
-                Some(Branch::MaxDepth) => why.push("max depth"),
-                Some(Branch::WeightCutoff) => why.push("weight cutoff"),
-                Some(Branch::TotalInternalReflection) => why.push("total internal reflection"),
-                _ => {}
-            }
-        }
-        why.dedup();
-        why.join(", ")
+        let view = self.selection.view();
+        self.select(self.cursor());
+        let line = self.selection.set_view(view);
+        let count = self.items().len();
+        self.selection.set_line(line.min(count.saturating_sub(1)));
     }
 }

@@ -107,7 +107,7 @@ impl Widget for ImagePane<'_> {
                 None => shown.map(|v| v / 3),
             })
         };
-        let cursor = window.dot_of(app.cursor.0, app.cursor.1);
+        let cursor = window.dot_of(app.cursor().0, app.cursor().1);
         let mark = [255, 0, 255];
         let color = |c: Option<[u8; 3]>| c.map_or(Color::Reset, |c| term_color(c, self.truecolor));
         for row in 0..area.height {

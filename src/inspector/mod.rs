@@ -19,6 +19,7 @@ mod keymap;
 mod layout;
 mod preview;
 mod reveal;
+mod selection;
 mod stepping;
 mod tree_pane;
 mod ui;
@@ -38,7 +39,7 @@ use ratatui::crossterm::terminal::{
     EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
 };
 
-pub use app::{App, Focus, Item, Prompt};
+pub use app::{App, Prompt};
 pub use colors::detect as color_support;
 pub use features::{FeatureMap, Features, scan as scan_features};
 pub use find::{Overlay, Seek};
@@ -46,6 +47,7 @@ pub use keymap::{Action, Binding, KEYS, Key};
 pub use layout::{Areas, Pane};
 pub use preview::{Picture, Window, render_picture};
 pub use reveal::{Progress, Revealed, call_stack};
+pub use selection::{Focus, Item};
 pub use stepping::Guided;
 pub use ui::{GLYPHS, draw};
 pub use whatif::Before;

@@ -8,13 +8,14 @@ use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
-use super::app::{App, Focus, Prompt};
+use super::app::{App, Prompt};
 use super::diagram_pane::draw_diagram;
 use super::fit::{cut, wrap};
 use super::image_pane::{ImagePane, legend};
 use super::keymap::KEYS;
 use super::layout::Panes;
 use super::reveal::call_stack;
+use super::selection::Focus;
 use super::tree_pane::draw_tree;
 use crate::views::text::describe;
 
@@ -57,7 +58,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         app.pane,
     );
     let focused = |f: Focus| {
-        if app.focus == f {
+        if app.focus() == f {
             Style::default()
                 .fg(Color::Yellow)
                 .add_modifier(Modifier::BOLD)
@@ -156,19 +157,20 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
             w,
         )];
     };
-    let Some(trace) = &app.trace else {
+    let Some(trace) = app.trace() else {
         return Vec::new();
     };
+    let sample = app.selection().sample();
     let node = app.steps()[s].node;
     let head = format!("step {}/{} ", s + 1, app.steps().len());
     let room = w.saturating_sub(head.chars().count() + " in ".len() + " (x: whole tree)".len());
-    let stack = call_stack(&trace.samples[app.sample].tree, node, room);
+    let stack = call_stack(&trace.samples[sample].tree, node, room);
     let first = Line::from(vec![
         Span::styled(head, bold),
         Span::styled(format!("in {stack}"), Style::default().fg(Color::Cyan)),
         Span::raw(" (x: whole tree)"),
     ]);
-    let what = describe(trace, app.sample, &app.steps()[s]).0;
+    let what = describe(trace, sample, &app.steps()[s]).0;
     let mut lines = vec![cut(first, w)];
     let mut told = wrap(vec![Line::from(what)], w);
     if told.len() > 2 {
@@ -188,18 +190,21 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     let (w, h) = app.image_size();
     let timing = match &app.loaded_from {
         Some(file) => format!("loaded from {file}"),
-        None => format!("traced in {:.2} ms", app.trace_time.as_secs_f64() * 1e3),
+        None => format!(
+            "traced in {:.2} ms",
+            app.selection().traced_in().as_secs_f64() * 1e3
+        ),
     };
     let mut parts = vec![
-        format!("pixel {},{} of {w}×{h}", app.cursor.0, app.cursor.1),
+        format!("pixel {},{} of {w}×{h}", app.cursor().0, app.cursor().1),
         format!("zoom {}×", 1u32 << app.zoom()),
         app.source.file.clone(),
         timing,
     ];
-    if let Some(t) = app.trace.as_ref().filter(|t| t.samples.len() > 1) {
+    if let Some(t) = app.trace().filter(|t| t.samples.len() > 1) {
         parts.push(format!(
             "sample {} of {} (s: next) · pixel mean {}",
-            app.sample + 1,
+            app.selection().sample() + 1,
             t.samples.len(),
             crate::views::numbers::color(t.color)
         ));
@@ -235,14 +240,14 @@ fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) 
 /// shows the end.
 pub(super) fn details_top(app: &App, area: Rect) -> usize {
     let (lines, visible) = detail_lines(app, area, app.truecolor);
-    usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible))
+    usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible))
 }
 
 /// Draws the selected ray's numbers from the first line [`details_top`] gives.
 fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) {
     let inner_width = usize::from(area.width.saturating_sub(2));
     let (lines, visible) = detail_lines(app, area, tc);
-    let top = usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible));
+    let top = usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible));
     let below = lines.len().saturating_sub(top + visible);
     let title = if lines.len() > visible {
         let arrows = format!(

@@ -58,11 +58,11 @@ fn starts_on_the_deepest_tree_nearest_the_center() {
     let scene = raytree::scene::loader::whitted();
     let map = raytree::inspector::scan_features(&scene, 8);
     let deepest = map.cells.iter().map(|f| f.depth).max().unwrap();
-    let start = map.at(app.cursor.0, app.cursor.1);
+    let start = map.at(app.cursor().0, app.cursor().1);
     assert_eq!(start.depth, deepest, "the start pixel has the deepest tree");
     assert!(start.depth > 2, "and it is deeper than a floor pixel's");
     // The image's center is a plain floor pixel: not where the inspector starts.
-    assert_ne!(app.cursor, (320, 240));
+    assert_ne!(app.cursor(), (320, 240));
 }
 
 #[test]
@@ -71,14 +71,14 @@ fn arrows_move_the_cursor() {
     // Fitting 640×480 into 80 × 60 dots: 8 image pixels per dot, so one press moves 8 pixels.
     key(&mut app, KeyCode::Right);
     key(&mut app, KeyCode::Char('j'));
-    assert_eq!(app.cursor, (328, 248));
+    assert_eq!(app.cursor(), (328, 248));
     // Never past the edge.
     for _ in 0..100 {
         key(&mut app, KeyCode::Left);
     }
-    assert_eq!(app.cursor.0, 0);
+    assert_eq!(app.cursor().0, 0);
     assert_eq!(
-        app.trace.as_ref().unwrap().pixel.unwrap().x,
+        app.trace().unwrap().pixel.unwrap().x,
         0,
         "moving traces the new pixel"
     );
@@ -96,7 +96,7 @@ fn zoom_reaches_every_pixel() {
     }
     assert_eq!((app.zoom(), app.window().scale), (5, 0.25));
     key(&mut app, KeyCode::Right);
-    assert_eq!(app.cursor, (417, 209));
+    assert_eq!(app.cursor(), (417, 209));
     // The window follows the cursor and keeps it in view.
     let w = app.window();
     assert!(w.dot_of(417, 209).is_some());
@@ -108,7 +108,7 @@ fn zoom_reaches_every_pixel() {
 fn tree_expands_collapses_and_goes_to_the_parent() {
     let mut app = app_at(Some((416, 209)));
     key(&mut app, KeyCode::Tab);
-    assert_eq!(app.focus, Focus::Tree);
+    assert_eq!(app.focus(), Focus::Tree);
     // The root is open: its two shadow rays, then its reflected and refracted rays.
     let items: Vec<Item> = app.items().into_iter().map(|(i, _)| i).collect();
     assert_eq!(
@@ -170,11 +170,11 @@ fn go_to_prompt_help_and_quit() {
     key(&mut app, KeyCode::Char('g'));
     keys(&mut app, "416,209");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.cursor, (416, 209));
+    assert_eq!(app.cursor(), (416, 209));
     key(&mut app, KeyCode::Char('g'));
     keys(&mut app, "999,1");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.cursor, (416, 209), "an outside pixel is refused");
+    assert_eq!(app.cursor(), (416, 209), "an outside pixel is refused");
     assert!(app.message.contains("outside"), "{}", app.message);
     key(&mut app, KeyCode::Char('?'));
     assert!(app.help);
@@ -194,7 +194,7 @@ fn a_click_selects_the_pixel_under_it() {
         row: 6,
         modifiers: KeyModifiers::NONE,
     });
-    assert_eq!(app.cursor, (84, 84));
+    assert_eq!(app.cursor(), (84, 84));
 }
 
 #[test]

@@ -38,7 +38,7 @@ fn whitted_at(pixel: (u32, u32)) -> App {
 fn screen(app: &mut App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     // The time to trace differs from run to run: hold it still for snapshots.
-    app.trace_time = std::time::Duration::ZERO;
+    app.set_trace_time(std::time::Duration::ZERO);
     // Lay out once so the picture is rendered for the pane's real size.
     app.tick(Rect::new(0, 0, w, h));
     terminal.draw(|f| draw(f, app)).unwrap();
@@ -72,7 +72,7 @@ fn has_tir(x: u32, y: u32) -> bool {
 fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
     let mut app = whitted_at((416, 209));
     let steps = app.steps().to_vec();
-    let tree = app.trace.as_ref().unwrap().samples[0].tree.clone();
+    let tree = app.trace().unwrap().samples[0].tree.clone();
     // Independently of the inspector: the step at which each ray is spawned
     // and the step at which its color is returned.
     let spawned_at = |n: usize| {
@@ -91,7 +91,7 @@ fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
     key(&mut app, KeyCode::Char('e')); // every ray open, so every spawned ray is listed
     for s in 0..steps.len() {
         app.go_to_step(s);
-        app.expanded = (0..tree.nodes.len()).collect();
+        app.expand_all();
         let listed: Vec<usize> = app
             .items()
             .iter()
@@ -124,7 +124,7 @@ fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
 #[test]
 fn the_numbers_pane_never_gives_the_color_away_before_it_is_computed() {
     let mut app = whitted_at((416, 209));
-    let color = raytree::views::numbers::color(app.trace.as_ref().unwrap().color);
+    let color = raytree::views::numbers::color(app.trace().unwrap().color);
     let combine = app
         .steps()
         .iter()
@@ -154,7 +154,7 @@ fn find_goes_to_the_first_total_internal_reflection_in_reading_order() {
     let mut app = whitted_at((0, 0));
     assert!(!has_tir(0, 0));
     key(&mut app, KeyCode::Char('f'));
-    let found = app.cursor;
+    let found = app.cursor();
     assert!(
         has_tir(found.0, found.1),
         "{found:?} has a total internal reflection"
@@ -178,7 +178,7 @@ fn find_goes_to_the_first_total_internal_reflection_in_reading_order() {
 #[test]
 fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
     let mut app = whitted_at((416, 209));
-    let original = app.trace.clone().unwrap();
+    let original = app.trace().cloned().unwrap();
     let nodes = &original.samples[0].tree.nodes;
     let refracted = nodes[0].refracted.as_ref().unwrap().node.unwrap();
     let bent = nodes[refracted].direction;
@@ -192,7 +192,7 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
     keys(&mut app, "ior=1.0");
     key(&mut app, KeyCode::Enter);
     assert_eq!(app.edits(), vec!["glass: ior=1.0".to_owned()]);
-    let edited = app.trace.clone().unwrap();
+    let edited = app.trace().cloned().unwrap();
     let nodes = &edited.samples[0].tree.nodes;
     let refracted = nodes[0].refracted.as_ref().unwrap().node.unwrap();
     let straight = nodes[refracted].direction;
@@ -208,7 +208,7 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
 
     key(&mut app, KeyCode::Char('u'));
     assert_eq!(
-        app.trace.as_ref().unwrap(),
+        app.trace().unwrap(),
         &original,
         "undo gives the tree as loaded, bit for bit"
     );
@@ -218,7 +218,7 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
 #[test]
 fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
     let mut app = whitted_at((416, 209));
-    let original = app.trace.clone().unwrap();
+    let original = app.trace().cloned().unwrap();
     for typed in ["colour=1", "ior=-2", "ior"] {
         key(&mut app, KeyCode::Char('m'));
         keys(&mut app, typed);
@@ -228,11 +228,7 @@ fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
             "{typed}: {:?}",
             app.message
         );
-        assert_eq!(
-            app.trace.as_ref().unwrap(),
-            &original,
-            "{typed} changed nothing"
-        );
+        assert_eq!(app.trace().unwrap(), &original, "{typed} changed nothing");
     }
 }
 
@@ -240,7 +236,7 @@ fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
 fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
     let steps = whitted_at((416, 209)).steps().to_vec();
     let app = whitted_at((416, 209));
-    let nodes = &app.trace.as_ref().unwrap().samples[0].tree.nodes;
+    let nodes = &app.trace().unwrap().samples[0].tree.nodes;
     let tir = steps
         .iter()
         .position(|s| {
@@ -263,7 +259,7 @@ fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
     .unwrap();
     let mut app = whitted_at((0, 0));
     app.follow(script).unwrap();
-    assert_eq!((app.cursor, app.step()), ((416, 209), Some(0)));
+    assert_eq!((app.cursor(), app.step()), ((416, 209), Some(0)));
     let first = screen(&mut app, 80, 24);
     assert!(first.contains("TIR · stop 1/2: c = 416"), "{first}");
     key(&mut app, KeyCode::Char('n'));

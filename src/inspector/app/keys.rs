@@ -3,9 +3,10 @@
 
 use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, MouseEventKind};
 
-use super::{App, Focus, Item, Prompt};
+use super::{App, Prompt};
 use crate::inspector::keymap::{self, Action};
 use crate::inspector::layout::Pane;
+use crate::inspector::selection::{Focus, Item};
 use crate::inspector::whatif;
 
 impl App {
@@ -44,13 +45,10 @@ impl App {
                 self.help = true;
                 self.help_scroll = 0;
             }
-            Action::SwitchFocus => {
-                self.focus = if self.focus == Focus::Image {
-                    Focus::Tree
-                } else {
-                    Focus::Image
-                }
-            }
+            Action::SwitchFocus => self.selection.set_focus(match self.focus() {
+                Focus::Image => Focus::Tree,
+                Focus::Tree => Focus::Image,
+            }),
             Action::Next => match self.guide {
                 Some(_) => self.stop_by(1),
                 None => self.step_by(1),
@@ -86,12 +84,12 @@ impl App {
                     Pane::Diagram => Pane::Details,
                 }
             }
-            Action::ScrollDown => self.scroll_details(10),
-            Action::ScrollUp => self.scroll_details(-10),
-            Action::FocusTree => self.focus = Focus::Tree,
-            Action::FocusImage => self.focus = Focus::Image,
+            Action::ScrollDown => self.selection.scroll_by(10),
+            Action::ScrollUp => self.selection.scroll_by(-10),
+            Action::FocusTree => self.selection.set_focus(Focus::Tree),
+            Action::FocusImage => self.selection.set_focus(Focus::Image),
             Action::Left | Action::Right | Action::Up | Action::Down | Action::Enter => {
-                match self.focus {
+                match self.focus() {
                     Focus::Image => self.image_key(action),
                     Focus::Tree => self.tree_key(action),
                 }
@@ -125,14 +123,15 @@ impl App {
     /// The arrows and Enter in the image pane.
     fn image_key(&mut self, action: Action) {
         let step = self.cursor_step();
-        let (x, y) = (i64::from(self.cursor.0), i64::from(self.cursor.1));
+        let (x, y) = self.cursor();
+        let (x, y) = (i64::from(x), i64::from(y));
         let to = match action {
             Action::Left => (x - step, y),
             Action::Right => (x + step, y),
             Action::Up => (x, y - step),
             Action::Down => (x, y + step),
             Action::Enter => {
-                self.focus = Focus::Tree;
+                self.selection.set_focus(Focus::Tree);
                 return;
             }
             _ => return,
@@ -147,37 +146,23 @@ impl App {
     /// The arrows and Enter in the tree pane.
     fn tree_key(&mut self, action: Action) {
         let items = self.items();
-        let Some(&(item, _)) = items.get(self.selected) else {
+        let Some(&(item, _)) = items.get(self.selection.line()) else {
             return;
         };
         match action {
-            Action::Up => {
-                self.selected = self.selected.saturating_sub(1);
-                self.detail_scroll = 0;
-            }
-            Action::Down => {
-                self.selected = (self.selected + 1).min(items.len().saturating_sub(1));
-                self.detail_scroll = 0;
-            }
+            Action::Up => self.selection.move_line(-1, items.len()),
+            Action::Down => self.selection.move_line(1, items.len()),
             Action::Enter | Action::Right => {
                 if let Item::Ray(n) = item {
-                    self.expanded.insert(n);
+                    self.selection.expand(n);
                 }
             }
             Action::Left => match item {
-                Item::Ray(n) if self.expanded.contains(&n) => {
-                    self.expanded.remove(&n);
-                }
-                _ => {
-                    // Go to the parent line.
-                    let parent = match item {
-                        Item::Shadow(n, _) => Some(n),
-                        Item::Ray(n) => self
-                            .trace
-                            .as_ref()
-                            .and_then(|t| t.samples[self.sample].tree.nodes[n].parent),
-                    };
-                    if let Some(p) = parent {
+                Item::Ray(n) if self.selection.is_expanded(n) => self.selection.collapse(n),
+                // Go to the parent line.
+                Item::Shadow(n, _) => self.select_node(n),
+                Item::Ray(n) => {
+                    if let Some(p) = self.selection.parent(n) {
                         self.select_node(p);
                     }
                 }
@@ -204,11 +189,10 @@ impl App {
             if self.help {
                 self.help_scroll = self.help_scroll.saturating_add_signed(wheel as i16);
             } else if self.areas.details.contains(at) {
-                self.scroll_details(wheel);
+                self.selection.scroll_by(wheel);
             } else if self.areas.tree.contains(at) {
-                let last = self.items().len().saturating_sub(1) as i64;
-                self.selected = (self.selected as i64 + i64::from(wheel)).clamp(0, last) as usize;
-                self.detail_scroll = 0;
+                let count = self.items().len();
+                self.selection.move_line(i64::from(wheel), count);
             }
             return;
         }
@@ -220,26 +204,21 @@ impl App {
             let (i, j) = (m.column - img.x, (m.row - img.y) * 2);
             let (w, h) = self.image_size();
             if let Some(p) = self.window().pixel_at(i, j, w, h) {
-                self.focus = Focus::Image;
+                self.selection.set_focus(Focus::Image);
                 self.select(p);
             }
         } else if tree.contains((m.column, m.row).into()) {
-            self.focus = Focus::Tree;
-            let line = usize::from(m.row - tree.y) + self.tree_scroll(tree.height);
+            self.selection.set_focus(Focus::Tree);
+            let line = usize::from(m.row - tree.y) + self.selection.tree_scroll(tree.height);
             if line < self.items().len() {
-                self.selected = line;
+                self.selection.set_line(line);
             }
         }
     }
 
-    /// The first tree line shown, so the selection stays in view.
-    pub fn tree_scroll(&self, height: u16) -> usize {
-        self.selected.saturating_sub(usize::from(height.max(1)) - 1)
-    }
-
     /// Goes to the next pixel with what `f` seeks.
     fn find(&mut self) {
-        let (found, said) = self.finding.find(self.scene.as_deref(), self.cursor);
+        let (found, said) = self.finding.find(self.scene.as_deref(), self.cursor());
         self.message = said;
         if let Some(p) = found {
             self.select(p);
