@@ -103,11 +103,11 @@ fn inspector_on_whitted() -> raytree::inspector::App {
     let scene = raytree::scene::loader::whitted();
     let mut app =
         raytree::inspector::App::new(scene, SceneSource::new("whitted.json", ""), None, false);
-    app.areas = raytree::inspector::Areas {
+    app.set_areas(raytree::inspector::Areas {
         image: Rect::new(1, 1, 78, 27),
         tree: Rect::new(81, 1, 78, 19),
         details: Rect::new(80, 21, 80, 25),
-    };
+    });
     app
 }
 

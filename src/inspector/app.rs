@@ -10,7 +10,7 @@ use ratatui::layout::Rect;
 
 use super::find::Finding;
 use super::image_view::ImageView;
-use super::layout::{Areas, Pane};
+use super::layout::{Areas, Screen};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
 use super::selection::{Focus, Item, Selection};
@@ -41,27 +41,20 @@ pub struct App {
     pub source: SceneSource,
     selection: Selection,
     stepping: Stepping,
-    /// The key help is shown.
-    pub help: bool,
     /// The user asked to quit.
     pub quit: bool,
     /// A line being typed (go to, edit, write), while open.
     pub prompt: Option<Prompt>,
     /// A one-line message for the status bar.
     pub message: String,
-    /// Where the panes are.
-    pub areas: Areas,
     /// Draw in 24-bit color (else the 256-color palette).
     pub truecolor: bool,
     /// Why the terminal is drawn in 256 colors, when it is.
     pub color_note: Option<String>,
     /// The saved trace's file, when the inspector opened one (no timing then).
     pub loaded_from: Option<String>,
-    /// How far the help is scrolled.
-    pub help_scroll: u16,
     finding: Finding,
-    /// The right-hand pane on small terminals.
-    pub pane: Pane,
+    screen: Screen,
     /// A guided step-through, when following one.
     guide: Option<Guided>,
     what_if: WhatIf,
@@ -113,17 +106,14 @@ impl App {
             source,
             selection: Selection::default(),
             stepping: Stepping::default(),
-            help: false,
             quit: false,
             prompt: None,
             message: String::new(),
-            areas: Areas::default(),
             truecolor: true,
             color_note: None,
             loaded_from: None,
-            help_scroll: 0,
             finding: Finding::default(),
-            pane: Pane::Details,
+            screen: Screen::default(),
             guide: None,
             what_if: WhatIf::default(),
             image: ImageView::new(worker),
@@ -137,12 +127,32 @@ impl App {
     pub fn tick(&mut self, area: Rect) {
         self.image.receive();
         let panes = super::ui::panes(self, area);
-        self.areas = panes.areas();
+        self.screen.set_areas(panes.areas());
         self.image.request(self.window());
         if let Some(details) = panes.details {
             let top = super::ui::details_top(self, details) as u16;
             self.selection.set_scroll(top);
         }
+    }
+
+    /// Where the panes were last laid out (by [`App::tick`]).
+    pub fn areas(&self) -> Areas {
+        self.screen.areas()
+    }
+
+    /// Lays the panes out as given (tests that click without drawing).
+    pub fn set_areas(&mut self, areas: Areas) {
+        self.screen.set_areas(areas);
+    }
+
+    /// Whether the key help is shown.
+    pub fn help_shown(&self) -> bool {
+        self.screen.help_open()
+    }
+
+    /// The screen: the right-hand pane of a small terminal, the help.
+    pub(super) fn screen(&self) -> &Screen {
+        &self.screen
     }
 
     /// The full image's size.
@@ -305,14 +315,15 @@ impl App {
     }
 
     pub(super) fn zoom_by(&mut self, by: i32) {
-        self.image.zoom_by(by, self.image_size(), self.areas.image);
+        let pane = self.screen.areas().image;
+        self.image.zoom_by(by, self.image_size(), pane);
     }
 
     /// The part of the image the pane shows: the whole image at zoom 0, else a
     /// window centered on the cursor, kept inside the image.
     pub fn window(&self) -> Window {
         self.image
-            .window(self.image_size(), self.cursor(), self.areas.image)
+            .window(self.image_size(), self.cursor(), self.screen.areas().image)
     }
 
     /// What `f` seeks and the image pane overlays.

@@ -1,6 +1,7 @@
 //! Where the panes go on a terminal of a given size, worked out one way for
 //! the update step (which keeps the areas for clicks and the picture's size)
-//! and for drawing (which only reads). A terminal of 120×36 or more shows all
+//! and for drawing (which only reads); and the screen's own state: the areas
+//! kept, the right-hand pane of a small terminal, the help. A terminal of 120×36 or more shows all
 //! four panes; a smaller one (down to 80×24) shows the image and the tree on
 //! the left and, on the right, the numbers or the diagram (`v`).
 
@@ -26,6 +27,67 @@ pub struct Areas {
     pub tree: Rect,
     /// The selected ray's pane, border included.
     pub details: Rect,
+}
+
+/// Where the panes were last laid out, which pane a small terminal shows on
+/// the right, and the help over them: whether it is open, how far scrolled.
+#[derive(Debug, Default)]
+pub(super) struct Screen {
+    areas: Areas,
+    pane: Pane,
+    help: bool,
+    help_scroll: u16,
+}
+
+impl Screen {
+    /// Where the panes were last laid out.
+    pub fn areas(&self) -> Areas {
+        self.areas
+    }
+
+    /// Keeps where the panes are.
+    pub fn set_areas(&mut self, areas: Areas) {
+        self.areas = areas;
+    }
+
+    /// What a small terminal shows on the right.
+    pub fn pane(&self) -> Pane {
+        self.pane
+    }
+
+    /// The numbers or the diagram on the right, whichever is not shown.
+    pub fn switch_pane(&mut self) {
+        self.pane = match self.pane {
+            Pane::Details => Pane::Diagram,
+            Pane::Diagram => Pane::Details,
+        }
+    }
+
+    /// Whether the help is open.
+    pub fn help_open(&self) -> bool {
+        self.help
+    }
+
+    /// Lines of the help scrolled past.
+    pub fn help_scroll(&self) -> u16 {
+        self.help_scroll
+    }
+
+    /// Opens the help at its top.
+    pub fn open_help(&mut self) {
+        self.help = true;
+        self.help_scroll = 0;
+    }
+
+    /// Closes the help.
+    pub fn close_help(&mut self) {
+        self.help = false;
+    }
+
+    /// Scrolls the help by `by` lines.
+    pub fn scroll_help(&mut self, by: i32) {
+        self.help_scroll = self.help_scroll.saturating_add_signed(by as i16);
+    }
 }
 
 /// The whole screen's parts, borders included.

@@ -55,7 +55,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
         area,
         guide_lines.len() as u16,
         step_lines.len() as u16,
-        app.pane,
+        app.screen().pane(),
     );
     let focused = |f: Focus| {
         if app.focus() == f {
@@ -88,7 +88,7 @@ pub fn draw(frame: &mut Frame, app: &App) {
     frame.render_widget(Paragraph::new(guide_lines), panes.guide);
     frame.render_widget(Paragraph::new(step_lines), panes.step);
     frame.render_widget(Paragraph::new(status_text(app, area.width)), panes.status);
-    if app.help {
+    if app.screen().help_open() {
         draw_help(frame, app);
     }
 }
@@ -99,7 +99,7 @@ pub(super) fn panes(app: &App, area: Rect) -> Panes {
         area,
         guide_text(app, area.width).len() as u16,
         step_text(app, area.width).len() as u16,
-        app.pane,
+        app.screen().pane(),
     )
 }
 
@@ -319,7 +319,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
     let lines = wrap(lines, inner);
     let height = (lines.len() as u16 + 2).min(area.height);
     let visible = usize::from(height.saturating_sub(2));
-    let top = usize::from(app.help_scroll).min(lines.len().saturating_sub(visible));
+    let top = usize::from(app.screen().help_scroll()).min(lines.len().saturating_sub(visible));
     let rect = Rect {
         x: area.x + (area.width - width) / 2,
         y: area.y + (area.height - height) / 2,

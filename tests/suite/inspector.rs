@@ -28,11 +28,11 @@ fn app_at(pixel: Option<(u32, u32)>) -> App {
         pixel,
         false,
     );
-    app.areas = Areas {
+    app.set_areas(Areas {
         image: Rect::new(1, 1, 80, 30),
         tree: Rect::new(83, 1, 76, 20),
         details: Rect::new(82, 22, 78, 24),
-    };
+    });
     app
 }
 
@@ -177,9 +177,9 @@ fn go_to_prompt_help_and_quit() {
     assert_eq!(app.cursor(), (416, 209), "an outside pixel is refused");
     assert!(app.message.contains("outside"), "{}", app.message);
     key(&mut app, KeyCode::Char('?'));
-    assert!(app.help);
+    assert!(app.help_shown());
     key(&mut app, KeyCode::Char('x'));
-    assert!(!app.help && !app.quit, "any key closes the help");
+    assert!(!app.help_shown() && !app.quit, "any key closes the help");
     key(&mut app, KeyCode::Char('q'));
     assert!(app.quit);
 }
@@ -200,7 +200,7 @@ fn a_click_selects_the_pixel_under_it() {
 #[test]
 fn panes_show_the_tree_the_numbers_and_the_steps() {
     let mut app = app_at(Some((416, 209)));
-    app.areas = Areas::default();
+    app.set_areas(Areas::default());
     let text = screen(&mut app);
     for expected in [
         "ray tree",
@@ -246,7 +246,7 @@ fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     app.tick(Rect::new(0, 0, 160, 48));
     terminal.draw(|f| draw(f, &app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
-    let image = app.areas.image;
+    let image = app.areas().image;
     let window = app.window();
     // Every dot shows the 8-bit color the renderer gives its pixel.
     let scene = raytree::scene::loader::whitted();

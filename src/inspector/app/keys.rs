@@ -5,7 +5,6 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, Mous
 
 use super::{App, Prompt};
 use crate::inspector::keymap::{self, Action};
-use crate::inspector::layout::Pane;
 use crate::inspector::selection::{Focus, Item};
 use crate::inspector::whatif;
 
@@ -20,15 +19,15 @@ impl App {
             return;
         }
         let action = keymap::action(&key);
-        if self.help {
+        if self.screen.help_open() {
             match action {
-                Some(Action::Down) => self.help_scroll += 1,
-                Some(Action::ScrollDown) => self.help_scroll += 10,
-                Some(Action::Up) => self.help_scroll = self.help_scroll.saturating_sub(1),
-                Some(Action::ScrollUp) => self.help_scroll = self.help_scroll.saturating_sub(10),
+                Some(Action::Down) => self.screen.scroll_help(1),
+                Some(Action::ScrollDown) => self.screen.scroll_help(10),
+                Some(Action::Up) => self.screen.scroll_help(-1),
+                Some(Action::ScrollUp) => self.screen.scroll_help(-10),
                 // q still quits; any other key (Esc too) closes the help.
                 _ if key.code == KeyCode::Char('q') => self.quit = true,
-                _ => self.help = false,
+                _ => self.screen.close_help(),
             }
             return;
         }
@@ -41,10 +40,7 @@ impl App {
     fn act(&mut self, action: Action) {
         match action {
             Action::Quit => self.quit = true,
-            Action::Help => {
-                self.help = true;
-                self.help_scroll = 0;
-            }
+            Action::Help => self.screen.open_help(),
             Action::SwitchFocus => self.selection.set_focus(match self.focus() {
                 Focus::Image => Focus::Tree,
                 Focus::Tree => Focus::Image,
@@ -78,12 +74,7 @@ impl App {
                     self.message = said;
                 }
             }
-            Action::SwitchPane => {
-                self.pane = match self.pane {
-                    Pane::Details => Pane::Diagram,
-                    Pane::Diagram => Pane::Details,
-                }
-            }
+            Action::SwitchPane => self.screen.switch_pane(),
             Action::ScrollDown => self.selection.scroll_by(10),
             Action::ScrollUp => self.selection.scroll_by(-10),
             Action::FocusTree => self.selection.set_focus(Focus::Tree),
@@ -186,11 +177,12 @@ impl App {
             _ => 0,
         };
         if wheel != 0 {
-            if self.help {
-                self.help_scroll = self.help_scroll.saturating_add_signed(wheel as i16);
-            } else if self.areas.details.contains(at) {
+            let areas = self.screen.areas();
+            if self.screen.help_open() {
+                self.screen.scroll_help(wheel);
+            } else if areas.details.contains(at) {
                 self.selection.scroll_by(wheel);
-            } else if self.areas.tree.contains(at) {
+            } else if areas.tree.contains(at) {
                 let count = self.items().len();
                 self.selection.move_line(i64::from(wheel), count);
             }
@@ -199,7 +191,7 @@ impl App {
         if m.kind != MouseEventKind::Down(MouseButton::Left) {
             return;
         }
-        let (img, tree) = (self.areas.image, self.areas.tree);
+        let (img, tree) = (self.screen.areas().image, self.screen.areas().tree);
         if img.contains((m.column, m.row).into()) {
             let (i, j) = (m.column - img.x, (m.row - img.y) * 2);
             let (w, h) = self.image_size();
