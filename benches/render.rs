@@ -135,7 +135,7 @@ fn inspector_first_frame(bencher: Bencher) {
         let mut app = inspector_on_whitted();
         let window = app.window();
         let picture =
-            raytree::inspector::render_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);
+            raytree::inspector::render_picture(app.scene().unwrap(), window, 0, &|| false);
         app.set_picture(picture);
         let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
         app.tick(ratatui::layout::Rect::new(0, 0, 160, 48));

@@ -1,10 +1,16 @@
-//! The inspector's state and what keys and clicks do to it, apart from any
-//! terminal, so it can be tested directly.
+//! The inspector's state, apart from any terminal so it can be tested
+//! directly: [`App`] holds the scene and what the inspector says and is
+//! asked, and composes the parts that own the rest (the selection, stepping,
+//! finding, what-if edits, the image pane, the screen), all behind private
+//! fields and the small API here that the binary, the tests and the drawing
+//! read. `app/keys.rs` turns keys and clicks into changes; `app/changes.rs`
+//! makes the changes that reach across parts.
 
+mod changes;
 mod keys;
 
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 use ratatui::layout::Rect;
 
@@ -15,12 +21,11 @@ use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
 use super::selection::{Focus, Item, Selection};
 use super::stepping::{Guided, Stepping};
-use super::whatif::{Before, WhatIf};
+use super::whatif::WhatIf;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
-use crate::tree::steps::{Step, StepKind};
-use crate::views::guide::Script;
+use crate::tree::steps::Step;
 
 /// A line being typed in the step line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -33,32 +38,40 @@ pub enum Prompt {
     Write(String),
 }
 
-/// The inspector's state.
+/// The inspector's state: the scene and what the inspector says and is
+/// asked, and the parts that own the rest.
 pub struct App {
-    /// The scene, when known (a saved trace may come without it).
-    pub scene: Option<Arc<Scene>>,
+    /// The scene, when known (a saved trace may come without it); the edited
+    /// one while what-if edits are in effect.
+    scene: Option<Arc<Scene>>,
     /// Names the scene in traces.
-    pub source: SceneSource,
+    source: SceneSource,
+    /// The pixel, its trace, the focus, the tree pane's cursor.
     selection: Selection,
+    /// Where in the algorithm's steps the panes are.
     stepping: Stepping,
-    /// The user asked to quit.
-    pub quit: bool,
-    /// A line being typed (go to, edit, write), while open.
-    pub prompt: Option<Prompt>,
-    /// A one-line message for the status bar.
-    pub message: String,
-    /// Draw in 24-bit color (else the 256-color palette).
-    pub truecolor: bool,
-    /// Why the terminal is drawn in 256 colors, when it is.
-    pub color_note: Option<String>,
-    /// The saved trace's file, when the inspector opened one (no timing then).
-    pub loaded_from: Option<String>,
-    finding: Finding,
-    screen: Screen,
     /// A guided step-through, when following one.
     guide: Option<Guided>,
+    /// What `f` seeks, the overlay, the image's features.
+    finding: Finding,
+    /// The what-if edits in effect.
     what_if: WhatIf,
+    /// The image pane's zoom, picture and worker.
     image: ImageView,
+    /// The pane areas, the small terminal's right-hand pane, the help.
+    screen: Screen,
+    /// A line being typed (go to, edit, write), while open.
+    prompt: Option<Prompt>,
+    /// A one-line message for the status bar, answering the last key.
+    message: String,
+    /// The user asked to quit.
+    quit: bool,
+    /// Draw in 24-bit color (else the 256-color palette).
+    truecolor: bool,
+    /// Why the terminal is drawn in 256 colors, when it is.
+    color_note: Option<String>,
+    /// The saved trace's file, when the inspector opened one (no timing then).
+    loaded_from: Option<String>,
 }
 
 impl App {
@@ -106,17 +119,17 @@ impl App {
             source,
             selection: Selection::default(),
             stepping: Stepping::default(),
-            quit: false,
+            guide: None,
+            finding: Finding::default(),
+            what_if: WhatIf::default(),
+            image: ImageView::new(worker),
+            screen: Screen::default(),
             prompt: None,
             message: String::new(),
+            quit: false,
             truecolor: true,
             color_note: None,
             loaded_from: None,
-            finding: Finding::default(),
-            screen: Screen::default(),
-            guide: None,
-            what_if: WhatIf::default(),
-            image: ImageView::new(worker),
         }
     }
 
@@ -133,6 +146,62 @@ impl App {
             let top = super::ui::details_top(self, details) as u16;
             self.selection.set_scroll(top);
         }
+    }
+
+    /// Whether the user asked to quit.
+    pub fn quitting(&self) -> bool {
+        self.quit
+    }
+
+    /// The status bar's message.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+
+    /// Shows `message` in the status bar (until the next key).
+    pub fn set_message(&mut self, message: String) {
+        self.message = message;
+    }
+
+    /// Draws in 24-bit color, or in the 256-color palette with `note` saying why.
+    pub fn set_colors(&mut self, truecolor: bool, note: Option<String>) {
+        self.truecolor = truecolor;
+        self.color_note = note;
+    }
+
+    /// Why the terminal is drawn in 256 colors, when it is.
+    pub fn color_note(&self) -> Option<&str> {
+        self.color_note.as_deref()
+    }
+
+    /// Says the trace shown was loaded from `file` (so there is no time to trace).
+    pub fn set_loaded_from(&mut self, file: String) {
+        self.loaded_from = Some(file);
+    }
+
+    /// The saved trace's file, when the inspector opened one.
+    pub(super) fn loaded_from(&self) -> Option<&str> {
+        self.loaded_from.as_deref()
+    }
+
+    /// Whether to draw in 24-bit color.
+    pub(super) fn truecolor(&self) -> bool {
+        self.truecolor
+    }
+
+    /// The scene, when known.
+    pub fn scene(&self) -> Option<&Scene> {
+        self.scene.as_deref()
+    }
+
+    /// Names the scene in traces.
+    pub(super) fn source(&self) -> &SceneSource {
+        &self.source
+    }
+
+    /// The line being typed, while open.
+    pub(super) fn prompt(&self) -> Option<&Prompt> {
+        self.prompt.as_ref()
     }
 
     /// Where the panes were last laid out (by [`App::tick`]).
@@ -189,27 +258,6 @@ impl App {
         self.selection.set_traced_in(took);
     }
 
-    /// Traces pixel `(x, y)` and shows its tree.
-    pub fn select(&mut self, (x, y): (u32, u32)) {
-        let (w, h) = self.image_size();
-        let (x, y) = (x.min(w - 1), y.min(h - 1));
-        self.selection.set_pixel((x, y));
-        let Some(scene) = &self.scene else { return };
-        let started = Instant::now();
-        match crate::tree::record::pixel(scene, self.source.clone(), x, y, None) {
-            Ok(trace) => {
-                self.set_trace(trace);
-                self.selection.set_traced_in(started.elapsed());
-            }
-            Err(e) => self.message = e.to_string(),
-        }
-    }
-
-    /// Shows `trace`, not stepping.
-    fn set_trace(&mut self, trace: TraceDocument) {
-        self.stepping = Stepping::new(self.selection.show(trace));
-    }
-
     /// The algorithm's steps for the pixel's tree, in execution order.
     pub fn steps(&self) -> &[Step] {
         self.stepping.steps()
@@ -236,50 +284,6 @@ impl App {
         self.stepping.revealed(self.selection.tree())
     }
 
-    /// Follows a guided step-through: its pixel, its first stop.
-    pub fn follow(&mut self, script: Script) -> Result<(), String> {
-        self.selection.set_sample(script.sample);
-        self.select((script.pixel[0], script.pixel[1]));
-        let trace = self
-            .trace()
-            .ok_or("the script's pixel could not be traced")?;
-        let told = crate::views::guide::narrate(&script, trace)?;
-        self.guide = Some(Guided::new(script, told));
-        self.stop_by(0);
-        Ok(())
-    }
-
-    /// Moves `by` stops through the guided step-through.
-    fn stop_by(&mut self, by: i64) {
-        if let Some(step) = self.guide.as_mut().and_then(|g| g.move_by(by)) {
-            self.go_to_step(step);
-        }
-    }
-
-    /// Moves `by` steps through the algorithm and selects the step's line.
-    fn step_by(&mut self, by: i64) {
-        if let Some(s) = self.stepping.target(by) {
-            self.go_to_step(s);
-        }
-    }
-
-    /// Makes step `s` the current one and selects its line: the ray's, or the
-    /// shadow ray's for a shadow step.
-    pub fn go_to_step(&mut self, s: usize) {
-        let Some(step) = self.stepping.go_to(s) else {
-            return;
-        };
-        // Stepping, the newest numbers are the last lines: show the end.
-        self.selection.set_scroll(u16::MAX);
-        self.select_node(step.node);
-        if let StepKind::Shadow(k) = step.kind {
-            self.selection.expand(step.node);
-            let shown = self.revealed();
-            self.selection
-                .select_item(Item::Shadow(step.node, k), &shown);
-        }
-    }
-
     /// The tree pane's lines: the item and its indentation; while stepping,
     /// only the rays spawned and shadow rays cast so far.
     pub fn items(&self) -> Vec<(Item, usize)> {
@@ -291,32 +295,9 @@ impl App {
         self.selection.selected_item(&self.revealed())
     }
 
-    /// Selects node `n`'s line, expanding its ancestors.
-    pub fn select_node(&mut self, n: usize) {
-        let shown = self.revealed();
-        self.selection.select_node(n, &shown);
-    }
-
-    /// Opens every ray of the tree.
-    pub fn expand_all(&mut self) {
-        self.selection.expand_all();
-    }
-
-    /// Shows the pixel's next sample (after the last, the first again).
-    fn next_sample(&mut self) {
-        if let Some(steps) = self.selection.next_sample() {
-            self.stepping = Stepping::new(steps);
-        }
-    }
-
     /// The zoom level: 0 fits the whole image; each level doubles the magnification.
     pub fn zoom(&self) -> u32 {
         self.image.zoom()
-    }
-
-    pub(super) fn zoom_by(&mut self, by: i32) {
-        let pane = self.screen.areas().image;
-        self.image.zoom_by(by, self.image_size(), pane);
     }
 
     /// The part of the image the pane shows: the whole image at zoom 0, else a
@@ -357,61 +338,5 @@ impl App {
     /// The what-if edits and the pixel before them.
     pub(super) fn what_if(&self) -> &WhatIf {
         &self.what_if
-    }
-
-    /// Applies a typed edit (`ior=1.0`) to the selected hit's material (or a
-    /// method), re-traces the pixel and keeps what it was before the first edit.
-    fn edit(&mut self, typed: &str) {
-        let Some(scene) = self.scene.clone() else {
-            self.message = "no scene to edit".to_owned();
-            return;
-        };
-        let before = self.trace().map(|t| Before {
-            pixel: self.cursor(),
-            color: t.color,
-            rays: t.samples[0].tree.nodes.len(),
-        });
-        let material = self.selected_material();
-        let edited = self
-            .what_if
-            .edit(&scene, &self.source, material.as_deref(), typed, before);
-        match edited {
-            Ok(edited) => {
-                self.swap_scene(edited);
-                self.message = self.what_if.told();
-            }
-            Err(e) => self.message = e,
-        }
-    }
-
-    /// The selected hit's material, if the selected ray hit something.
-    fn selected_material(&self) -> Option<String> {
-        let node = self.selected_item().map_or(0, Item::node);
-        let hit = self.selection.tree()?.nodes.get(node)?.hit.as_ref()?;
-        Some(hit.material.clone())
-    }
-
-    /// Back to the scene as loaded, the pixel's tree bit for bit as before.
-    fn undo_edits(&mut self) {
-        match self.what_if.undo() {
-            Some(loaded) => {
-                self.swap_scene(loaded);
-                self.message = "the scene is as loaded again".to_owned();
-            }
-            None => self.message = "nothing to undo: the scene is as loaded".to_owned(),
-        }
-    }
-
-    /// Works with `scene` from now on (an edit, or undoing them), the pixel
-    /// traced again with its tree opened as it was.
-    pub(super) fn swap_scene(&mut self, scene: Arc<Scene>) {
-        self.image.restart(&scene);
-        self.scene = Some(scene);
-        self.finding.forget();
-        let view = self.selection.view();
-        self.select(self.cursor());
-        let line = self.selection.set_view(view);
-        let count = self.items().len();
-        self.selection.set_line(line.min(count.saturating_sub(1)));
     }
 }

@@ -30,7 +30,7 @@ pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     .find(|t| t.chars().count() + 2 <= usize::from(area.width))
     .unwrap_or("");
     let block = Block::default().borders(Borders::ALL).title(title);
-    let (Some(trace), Some(scene)) = (app.trace(), &app.scene) else {
+    let (Some(trace), Some(scene)) = (app.trace(), app.scene()) else {
         frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
         return;
     };

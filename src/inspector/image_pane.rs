@@ -67,7 +67,7 @@ pub fn legend(app: &App) -> Option<String> {
 impl Widget for ImagePane<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let app = self.app;
-        if app.scene.is_none() {
+        if app.scene().is_none() {
             Paragraph::new("no scene: the image is not available")
                 .wrap(Wrap { trim: true })
                 .render(area, buf);

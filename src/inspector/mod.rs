@@ -102,7 +102,7 @@ fn event_loop(
         terminal.autoresize()?;
         app.tick(terminal.get_frame().area());
         terminal.draw(|frame| draw(frame, app))?;
-        if app.quit {
+        if app.quitting() {
             return Ok(());
         }
         // Wake up often enough to show the picture as it refines.

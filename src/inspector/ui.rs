@@ -47,7 +47,7 @@ pub const GLYPHS: &[(&str, &str)] = &[
 /// Draws the whole inspector: a pure function of the state (the update step,
 /// [`App::tick`], changes what must change before a frame).
 pub fn draw(frame: &mut Frame, app: &App) {
-    let tc = app.truecolor;
+    let tc = app.truecolor();
     let area = frame.area();
     let guide_lines = guide_text(app, area.width);
     let step_lines = step_text(app, area.width);
@@ -130,7 +130,7 @@ fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
 fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let bold = Style::default().add_modifier(Modifier::BOLD);
     let w = usize::from(width);
-    if let Some(prompt) = &app.prompt {
+    if let Some(prompt) = app.prompt() {
         let (label, typed) = match prompt {
             Prompt::GoTo(t) => ("go to pixel (x,y): ", t),
             Prompt::Edit(t) => ("what if (field=value, e.g. ior=1.0; Esc cancels): ", t),
@@ -145,8 +145,8 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         )];
     }
     let Some(s) = app.step() else {
-        if !app.message.is_empty() {
-            return vec![cut(Line::from(app.message.clone()), w)];
+        if !app.message().is_empty() {
+            return vec![cut(Line::from(app.message().to_owned()), w)];
         }
         let find = format!("f: find a {}", app.finding().seek().name());
         return vec![cut(
@@ -188,7 +188,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
 /// trace (or where a saved trace came from), what an overlay shows.
 fn status_text(app: &App, width: u16) -> Line<'static> {
     let (w, h) = app.image_size();
-    let timing = match &app.loaded_from {
+    let timing = match app.loaded_from() {
         Some(file) => format!("loaded from {file}"),
         None => format!(
             "traced in {:.2} ms",
@@ -198,7 +198,7 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     let mut parts = vec![
         format!("pixel {},{} of {w}×{h}", app.cursor().0, app.cursor().1),
         format!("zoom {}×", 1u32 << app.zoom()),
-        app.source.file.clone(),
+        app.source().file.clone(),
         timing,
     ];
     if let Some(t) = app.trace().filter(|t| t.samples.len() > 1) {
@@ -212,11 +212,11 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     if let Some(l) = legend(app) {
         parts.insert(0, l);
     }
-    if let Some(note) = &app.color_note {
-        parts.push(note.clone());
+    if let Some(note) = app.color_note() {
+        parts.push(note.to_owned());
     }
-    if !app.message.is_empty() && app.step().is_some() {
-        parts.insert(0, app.message.clone());
+    if !app.message().is_empty() && app.step().is_some() {
+        parts.insert(0, app.message().to_owned());
     }
     cut(
         Line::from(Span::styled(
@@ -239,7 +239,7 @@ fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) 
 /// Stepping, the newest lines are at the bottom, so a scroll past the end
 /// shows the end.
 pub(super) fn details_top(app: &App, area: Rect) -> usize {
-    let (lines, visible) = detail_lines(app, area, app.truecolor);
+    let (lines, visible) = detail_lines(app, area, app.truecolor());
     usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible))
 }
 

@@ -175,13 +175,16 @@ fn go_to_prompt_help_and_quit() {
     keys(&mut app, "999,1");
     key(&mut app, KeyCode::Enter);
     assert_eq!(app.cursor(), (416, 209), "an outside pixel is refused");
-    assert!(app.message.contains("outside"), "{}", app.message);
+    assert!(app.message().contains("outside"), "{}", app.message());
     key(&mut app, KeyCode::Char('?'));
     assert!(app.help_shown());
     key(&mut app, KeyCode::Char('x'));
-    assert!(!app.help_shown() && !app.quit, "any key closes the help");
+    assert!(
+        !app.help_shown() && !app.quitting(),
+        "any key closes the help"
+    );
     key(&mut app, KeyCode::Char('q'));
-    assert!(app.quit);
+    assert!(app.quitting());
 }
 
 #[test]

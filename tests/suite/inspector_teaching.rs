@@ -169,9 +169,9 @@ fn find_goes_to_the_first_total_internal_reflection_in_reading_order() {
     // F moves on to the next kind of feature; each find says what it found.
     key(&mut app, KeyCode::Char('F'));
     assert!(
-        app.message.contains("blocked shadow ray"),
+        app.message().contains("blocked shadow ray"),
         "{}",
-        app.message
+        app.message()
     );
 }
 
@@ -224,9 +224,9 @@ fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
         keys(&mut app, typed);
         key(&mut app, KeyCode::Enter);
         assert!(
-            !app.message.is_empty() && !app.message.contains('\n'),
+            !app.message().is_empty() && !app.message().contains('\n'),
             "{typed}: {:?}",
-            app.message
+            app.message()
         );
         assert_eq!(app.trace().unwrap(), &original, "{typed} changed nothing");
     }
