@@ -18,6 +18,7 @@ mod golden_traces;
 mod guide;
 mod inputs;
 mod inspector;
+mod inspector_keys;
 mod inspector_teaching;
 mod inspector_tmux;
 mod media;
