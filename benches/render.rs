@@ -102,11 +102,11 @@ fn inspector_on_whitted() -> raytree::inspector::App {
     let scene = raytree::scene::loader::whitted();
     let mut app =
         raytree::inspector::App::new(scene, SceneSource::new("whitted.json", ""), None, false);
-    app.areas = raytree::inspector::Areas {
+    app.set_areas(raytree::inspector::Areas {
         image: Rect::new(1, 1, 78, 27),
         tree: Rect::new(81, 1, 78, 19),
         details: Rect::new(80, 21, 80, 25),
-    };
+    });
     app
 }
 
@@ -118,8 +118,9 @@ fn inspector_select_pixel(bencher: Bencher) {
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
     bencher.bench_local(|| {
         app.select((416, 209));
+        raytree::inspector::tick(&mut app, ratatui::layout::Rect::new(0, 0, 160, 48));
         terminal
-            .draw(|f| raytree::inspector::draw(f, &mut app))
+            .draw(|f| raytree::inspector::draw(f, &app))
             .unwrap();
     });
 }
@@ -132,11 +133,13 @@ fn inspector_first_frame(bencher: Bencher) {
     bencher.bench_local(|| {
         let mut app = inspector_on_whitted();
         let window = app.window();
-        app.picture =
-            raytree::inspector::render_picture(app.scene.as_ref().unwrap(), window, 0, &|| false);
+        let picture =
+            raytree::inspector::render_picture(app.scene().unwrap(), window, 0, &|| false);
+        app.set_picture(picture);
         let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+        raytree::inspector::tick(&mut app, ratatui::layout::Rect::new(0, 0, 160, 48));
         terminal
-            .draw(|f| raytree::inspector::draw(f, &mut app))
+            .draw(|f| raytree::inspector::draw(f, &app))
             .unwrap();
     });
 }

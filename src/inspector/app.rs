@@ -1,52 +1,29 @@
-//! The inspector's state and what keys and clicks do to it, apart from any
-//! terminal, so it can be tested directly.
+//! The inspector's state, apart from any terminal so it can be tested
+//! directly: [`App`] holds the scene and what the inspector says and is
+//! asked, and composes the parts that own the rest (the selection, stepping,
+//! finding, what-if edits, the image pane, the screen), all behind private
+//! fields and the small API here that the binary, the tests and the drawing
+//! read. `app/keys.rs` turns keys and clicks into changes; `app/changes.rs`
+//! makes the changes that reach across parts.
 
-use std::collections::BTreeSet;
+mod changes;
+mod keys;
+
 use std::sync::Arc;
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
-use ratatui::layout::Rect;
-
-use glam::DVec3;
-use serde_json::Value;
-
-use super::features::FeatureMap;
-use super::find::{Overlay, Seek};
+use super::find::Finding;
+use super::image_view::ImageView;
+use super::layout::{Areas, Screen};
 use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
-use crate::course::guide::{Narration, Script};
+use super::selection::{Focus, Item, Selection};
+use super::stepping::{Guided, Stepping};
+use super::whatif::WhatIf;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
-use crate::trace::recorder::Branch;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
-
-/// Which pane the arrow keys drive.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Focus {
-    /// Arrows move the pixel cursor.
-    Image,
-    /// Arrows move through the ray tree.
-    Tree,
-}
-
-/// A line of the tree pane.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Item {
-    /// A ray: node index.
-    Ray(usize),
-    /// A shadow ray: node index and light index.
-    Shadow(usize, usize),
-}
-
-impl Item {
-    /// The node the line belongs to.
-    pub fn node(self) -> usize {
-        match self {
-            Item::Ray(n) | Item::Shadow(n, _) => n,
-        }
-    }
-}
 
 /// A line being typed in the step line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -59,117 +36,40 @@ pub enum Prompt {
     Write(String),
 }
 
-/// Which pane a small terminal shows on the right.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub enum Pane {
-    /// The selected ray's numbers.
-    #[default]
-    Details,
-    /// The diagram.
-    Diagram,
-}
-
-/// A guided step-through being followed.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Guided {
-    /// The script.
-    pub script: Script,
-    /// Its stops, filled with the trace's numbers.
-    pub told: Vec<Narration>,
-    /// The stop shown.
-    pub at: usize,
-}
-
-/// The pixel's color and tree before the first what-if edit.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Before {
-    /// The pixel.
-    pub pixel: (u32, u32),
-    /// Its color.
-    pub color: DVec3,
-    /// Rays in its first sample's tree.
-    pub rays: usize,
-}
-
-/// Where the panes were last drawn, for mouse clicks and the picture's size.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Areas {
-    /// The image pane's inside.
-    pub image: Rect,
-    /// The tree pane's inside.
-    pub tree: Rect,
-    /// The selected ray's pane, border included.
-    pub details: Rect,
-}
-
-/// The inspector's state.
+/// The inspector's state: the scene and what the inspector says and is
+/// asked, and the parts that own the rest.
 pub struct App {
-    /// The scene, when known (a saved trace may come without it).
-    pub scene: Option<Arc<Scene>>,
+    /// The scene, when known (a saved trace may come without it); the edited
+    /// one while what-if edits are in effect.
+    scene: Option<Arc<Scene>>,
     /// Names the scene in traces.
-    pub source: SceneSource,
-    /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
-    pub cursor: (u32, u32),
-    /// Zoom level: 0 fits the whole image; each level doubles the magnification.
-    pub zoom: u32,
-    /// The selected pixel's trace.
-    pub trace: Option<TraceDocument>,
-    /// Which of the pixel's samples the panes show (0 is the first).
-    pub sample: usize,
-    /// How many lines of the selected ray's details are scrolled past.
-    pub detail_scroll: u16,
-    /// Nodes whose children are shown.
-    pub expanded: BTreeSet<usize>,
-    /// The selected line of the tree pane.
-    pub selected: usize,
-    /// The algorithm's steps for the trace, and the current one.
-    pub steps: Vec<Step>,
-    /// Index into `steps`, once stepping has started.
-    pub step: Option<usize>,
-    /// Which pane the arrows drive.
-    pub focus: Focus,
-    /// The key help is shown.
-    pub help: bool,
-    /// The user asked to quit.
-    pub quit: bool,
-    /// A line being typed (go to, edit, write), while open.
-    pub prompt: Option<Prompt>,
-    /// A one-line message for the status bar.
-    pub message: String,
-    /// Where the panes are.
-    pub areas: Areas,
-    /// What the image pane shows.
-    pub picture: Option<Picture>,
-    /// How long the last pixel's trace took.
-    pub trace_time: Duration,
-    /// Draw in 24-bit color (else the 256-color palette).
-    pub truecolor: bool,
-    /// Why the terminal is drawn in 256 colors, when it is.
-    pub color_note: Option<String>,
-    /// The saved trace's file, when the inspector opened one (no timing then).
-    pub loaded_from: Option<String>,
-    /// How far the help is scrolled.
-    pub help_scroll: u16,
-    /// The image's features (computed on the first find or overlay).
-    pub features: Option<FeatureMap>,
-    /// What `f` finds.
-    pub seek: Seek,
-    /// What the image pane shows.
-    pub overlay: Overlay,
-    /// The right-hand pane on small terminals.
-    pub pane: Pane,
+    source: SceneSource,
+    /// The pixel, its trace, the focus, the tree pane's cursor.
+    selection: Selection,
+    /// Where in the algorithm's steps the panes are.
+    stepping: Stepping,
     /// A guided step-through, when following one.
-    pub guide: Option<Guided>,
-    /// The scene file's JSON, for what-if edits (read on the first edit).
-    pub scene_json: Option<Value>,
-    /// The scene as loaded, while edits are in effect.
-    pub loaded: Option<Arc<Scene>>,
-    /// The what-if edits in effect, as typed.
-    pub edits: Vec<String>,
-    /// The pixel before the first edit.
-    pub before: Option<Before>,
-    pub(super) worker: Option<Worker>,
-    pub(super) requested: Option<Window>,
+    guide: Option<Guided>,
+    /// What `f` seeks, the overlay, the image's features.
+    finding: Finding,
+    /// The what-if edits in effect.
+    what_if: WhatIf,
+    /// The image pane's zoom, picture and worker.
+    image: ImageView,
+    /// The pane areas, the small terminal's right-hand pane, the help.
+    screen: Screen,
+    /// A line being typed (go to, edit, write), while open.
+    prompt: Option<Prompt>,
+    /// A one-line message for the status bar, answering the last key.
+    message: String,
+    /// The user asked to quit.
+    quit: bool,
+    /// Draw in 24-bit color (else the 256-color palette).
+    truecolor: bool,
+    /// Why the terminal is drawn in 256 colors, when it is.
+    color_note: Option<String>,
+    /// The saved trace's file, when the inspector opened one (no timing then).
+    loaded_from: Option<String>,
 }
 
 impl App {
@@ -199,7 +99,8 @@ impl App {
         };
         let source = trace.scene.clone();
         let mut app = Self::empty(scene, source, worker);
-        app.cursor = trace.pixel.map_or((0, 0), |p| (p.x, p.y));
+        app.selection
+            .set_pixel(trace.pixel.map_or((0, 0), |p| (p.x, p.y)));
         app.set_trace(trace);
         if app.scene.is_none() {
             app.message = format!(
@@ -214,264 +115,226 @@ impl App {
         Self {
             scene,
             source,
-            cursor: (0, 0),
-            zoom: 0,
-            trace: None,
-            sample: 0,
-            detail_scroll: 0,
-            expanded: BTreeSet::new(),
-            selected: 0,
-            steps: Vec::new(),
-            step: None,
-            focus: Focus::Image,
-            help: false,
-            quit: false,
+            selection: Selection::default(),
+            stepping: Stepping::default(),
+            guide: None,
+            finding: Finding::default(),
+            what_if: WhatIf::default(),
+            image: ImageView::new(worker),
+            screen: Screen::default(),
             prompt: None,
             message: String::new(),
-            areas: Areas::default(),
-            picture: None,
-            trace_time: Duration::ZERO,
+            quit: false,
             truecolor: true,
             color_note: None,
             loaded_from: None,
-            help_scroll: 0,
-            features: None,
-            seek: Seek::Tir,
-            overlay: Overlay::None,
-            pane: Pane::Details,
-            guide: None,
-            scene_json: None,
-            loaded: None,
-            edits: Vec::new(),
-            before: None,
-            worker,
-            requested: None,
         }
+    }
+
+    /// Takes the newest picture the worker finished, if any.
+    pub(super) fn receive_picture(&mut self) {
+        self.image.receive();
+    }
+
+    /// Asks the worker for the picture of the image pane's window.
+    pub(super) fn request_picture(&mut self) {
+        self.image.request(self.window());
+    }
+
+    /// Scrolls the selected ray's numbers to line `top`.
+    pub(super) fn scroll_details_to(&mut self, top: u16) {
+        self.selection.set_scroll(top);
+    }
+
+    /// Whether the user asked to quit.
+    pub fn quitting(&self) -> bool {
+        self.quit
+    }
+
+    /// The status bar's message.
+    pub fn message(&self) -> &str {
+        &self.message
+    }
+
+    /// Shows `message` in the status bar (until the next key).
+    pub fn set_message(&mut self, message: String) {
+        self.message = message;
+    }
+
+    /// Draws in 24-bit color, or in the 256-color palette with `note` saying why.
+    pub fn set_colors(&mut self, truecolor: bool, note: Option<String>) {
+        self.truecolor = truecolor;
+        self.color_note = note;
+    }
+
+    /// Why the terminal is drawn in 256 colors, when it is.
+    pub fn color_note(&self) -> Option<&str> {
+        self.color_note.as_deref()
+    }
+
+    /// Says the trace shown was loaded from `file` (so there is no time to trace).
+    pub fn set_loaded_from(&mut self, file: String) {
+        self.loaded_from = Some(file);
+    }
+
+    /// The saved trace's file, when the inspector opened one.
+    pub(super) fn loaded_from(&self) -> Option<&str> {
+        self.loaded_from.as_deref()
+    }
+
+    /// Whether to draw in 24-bit color.
+    pub(super) fn truecolor(&self) -> bool {
+        self.truecolor
+    }
+
+    /// The scene, when known.
+    pub fn scene(&self) -> Option<&Scene> {
+        self.scene.as_deref()
+    }
+
+    /// Names the scene in traces.
+    pub(super) fn source(&self) -> &SceneSource {
+        &self.source
+    }
+
+    /// The line being typed, while open.
+    pub(super) fn prompt(&self) -> Option<&Prompt> {
+        self.prompt.as_ref()
+    }
+
+    /// Where the panes were last laid out (by [`App::tick`]).
+    pub fn areas(&self) -> Areas {
+        self.screen.areas()
+    }
+
+    /// Lays the panes out as given (tests that click without drawing).
+    pub fn set_areas(&mut self, areas: Areas) {
+        self.screen.set_areas(areas);
+    }
+
+    /// Whether the key help is shown.
+    pub fn help_shown(&self) -> bool {
+        self.screen.help_open()
+    }
+
+    /// The screen: the right-hand pane of a small terminal, the help.
+    pub(super) fn screen(&self) -> &Screen {
+        &self.screen
     }
 
     /// The full image's size.
     pub fn image_size(&self) -> (u32, u32) {
-        match (&self.scene, &self.trace) {
+        match (&self.scene, self.selection.trace()) {
             (Some(s), _) => (s.settings.width, s.settings.height),
             (None, Some(t)) => (t.settings.width, t.settings.height),
             _ => (1, 1),
         }
     }
 
-    /// Traces pixel `(x, y)` and shows its tree.
-    pub fn select(&mut self, (x, y): (u32, u32)) {
-        let (w, h) = self.image_size();
-        self.cursor = (x.min(w - 1), y.min(h - 1));
-        let Some(scene) = &self.scene else { return };
-        let started = Instant::now();
-        match crate::tree::record::pixel(
-            scene,
-            self.source.clone(),
-            self.cursor.0,
-            self.cursor.1,
-            None,
-        ) {
-            Ok(trace) => {
-                self.set_trace(trace);
-                self.trace_time = started.elapsed();
-            }
-            Err(e) => self.message = e.to_string(),
-        }
+    /// The selected pixel, in the full image's coordinates (as `raytree trace --pixel`).
+    pub fn cursor(&self) -> (u32, u32) {
+        self.selection.pixel()
     }
 
-    fn set_trace(&mut self, trace: TraceDocument) {
-        self.sample = self.sample.min(trace.samples.len().saturating_sub(1));
-        self.steps = trace.steps(self.sample);
-        self.trace = Some(trace);
-        self.expanded = BTreeSet::from([0]);
-        self.selected = 0;
-        self.step = None;
-        self.detail_scroll = 0;
+    /// The selected pixel's trace.
+    pub fn trace(&self) -> Option<&TraceDocument> {
+        self.selection.trace()
+    }
+
+    /// The selected pixel, its trace and the tree pane's cursor.
+    pub(super) fn selection(&self) -> &Selection {
+        &self.selection
+    }
+
+    /// Which pane the arrows drive.
+    pub fn focus(&self) -> Focus {
+        self.selection.focus()
+    }
+
+    /// Holds the time to trace still (snapshots).
+    pub fn set_trace_time(&mut self, took: Duration) {
+        self.selection.set_traced_in(took);
+    }
+
+    /// The algorithm's steps for the pixel's tree, in execution order.
+    pub fn steps(&self) -> &[Step] {
+        self.stepping.steps()
+    }
+
+    /// The current step's index into [`App::steps`], once stepping has started.
+    pub fn step(&self) -> Option<usize> {
+        self.stepping.at()
+    }
+
+    /// The current step, while stepping.
+    pub(super) fn current_step(&self) -> Option<&Step> {
+        self.stepping.current()
+    }
+
+    /// The guided step-through followed, if any.
+    pub(super) fn guide(&self) -> Option<&Guided> {
+        self.guide.as_ref()
+    }
+
+    /// What the algorithm has computed at the current step (everything when
+    /// not stepping).
+    pub fn revealed(&self) -> Revealed {
+        self.stepping.revealed(self.selection.tree())
     }
 
     /// The tree pane's lines: the item and its indentation; while stepping,
     /// only the rays spawned and shadow rays cast so far.
     pub fn items(&self) -> Vec<(Item, usize)> {
-        let mut out = Vec::new();
-        if let Some(t) = &self.trace {
-            let nodes = &t.samples[self.sample].tree.nodes;
-            let shown = self.revealed();
-            if !nodes.is_empty() && shown.node(0).spawned {
-                self.push_items(nodes, &shown, 0, 0, &mut out);
-            }
-        }
-        out
-    }
-
-    fn push_items(
-        &self,
-        nodes: &[crate::tree::ray_tree::RayNode],
-        shown: &Revealed,
-        i: usize,
-        indent: usize,
-        out: &mut Vec<(Item, usize)>,
-    ) {
-        out.push((Item::Ray(i), indent));
-        if !self.expanded.contains(&i) || out.len() > nodes.len() * 64 {
-            return;
-        }
-        for k in 0..shown.node(i).shadows.min(nodes[i].shadow_rays.len()) {
-            out.push((Item::Shadow(i, k), indent + 1));
-        }
-        for c in nodes[i].children() {
-            if shown.node(c).spawned {
-                self.push_items(nodes, shown, c, indent + 1, out);
-            }
-        }
+        self.selection.items(&self.revealed())
     }
 
     /// The selected tree line's item.
     pub fn selected_item(&self) -> Option<Item> {
-        self.items().get(self.selected).map(|&(item, _)| item)
+        self.selection.selected_item(&self.revealed())
     }
 
-    /// Whether node `i` has anything to expand.
-    pub fn expandable(&self, i: usize) -> bool {
-        self.trace.as_ref().is_some_and(|t| {
-            let n = &t.samples[self.sample].tree.nodes[i];
-            !n.shadow_rays.is_empty() || n.children().next().is_some()
-        })
-    }
-
-    /// Selects node `n`'s line, expanding its ancestors.
-    pub fn select_node(&mut self, n: usize) {
-        let Some(t) = &self.trace else { return };
-        let nodes = &t.samples[self.sample].tree.nodes;
-        let mut p = nodes[n].parent;
-        while let Some(i) = p {
-            self.expanded.insert(i);
-            p = nodes[i].parent;
-        }
-        if let Some(pos) = self
-            .items()
-            .iter()
-            .position(|&(item, _)| item == Item::Ray(n))
-        {
-            self.selected = pos;
-        }
-    }
-
-    pub(super) fn expand_all(&mut self) {
-        if let Some(t) = &self.trace {
-            self.expanded = (0..t.samples[self.sample].tree.nodes.len()).collect();
-        }
-    }
-
-    /// Scrolls the selected ray's details by `by` lines.
-    pub fn scroll_details(&mut self, by: i32) {
-        self.detail_scroll = self.detail_scroll.saturating_add_signed(by as i16);
-    }
-
-    /// Shows the pixel's next sample (after the last, the first again).
-    pub fn next_sample(&mut self) {
-        let Some(trace) = self.trace.take() else {
-            return;
-        };
-        self.sample = (self.sample + 1) % trace.samples.len().max(1);
-        self.set_trace(trace);
-    }
-
-    /// The deepest zoom: four dots per image pixel.
-    pub fn max_zoom(&self) -> u32 {
-        let fit = self.fit_scale();
-        (0..16)
-            .take_while(|&z| fit / f64::from(1u32 << z) >= 0.25)
-            .last()
-            .unwrap_or(0)
-    }
-
-    fn fit_scale(&self) -> f64 {
-        let (w, h) = self.image_size();
-        let (cols, rows) = (
-            f64::from(self.areas.image.width.max(1)),
-            f64::from(self.areas.image.height.max(1)) * 2.0,
-        );
-        (f64::from(w) / cols).max(f64::from(h) / rows)
+    /// The zoom level: 0 fits the whole image; each level doubles the magnification.
+    pub fn zoom(&self) -> u32 {
+        self.image.zoom()
     }
 
     /// The part of the image the pane shows: the whole image at zoom 0, else a
     /// window centered on the cursor, kept inside the image.
     pub fn window(&self) -> Window {
-        let (w, h) = self.image_size();
-        let (cols, rows) = (
-            self.areas.image.width.max(1),
-            self.areas.image.height.max(1) * 2,
-        );
-        let scale = self.fit_scale() / f64::from(1u32 << self.zoom.min(15));
-        let (span_x, span_y) = (f64::from(cols) * scale, f64::from(rows) * scale);
-        let place = |cursor: u32, span: f64, size: u32| {
-            if span >= f64::from(size) {
-                (f64::from(size) - span) / 2.0
-            } else {
-                (f64::from(cursor) + 0.5 - span / 2.0).clamp(0.0, f64::from(size) - span)
-            }
-        };
-        Window {
-            left: place(self.cursor.0, span_x, w),
-            top: place(self.cursor.1, span_y, h),
-            scale,
-            cols,
-            rows,
-        }
+        self.image
+            .window(self.image_size(), self.cursor(), self.screen.areas().image)
     }
 
-    /// Asks the worker for the picture of the current window, if it changed.
-    pub fn request_picture(&mut self) {
-        let window = self.window();
-        if self.requested != Some(window) {
-            self.requested = Some(window);
-            if let Some(w) = &self.worker {
-                w.request(window);
-            }
-        }
+    /// What `f` seeks and the image pane overlays.
+    pub(super) fn finding(&self) -> &Finding {
+        &self.finding
     }
 
-    /// Takes the newest picture the worker finished.
-    pub fn receive_picture(&mut self) -> bool {
-        match self.worker.as_ref().and_then(Worker::receive) {
-            Some(p) => {
-                self.picture = Some(p);
-                true
-            }
-            None => false,
-        }
+    /// The image pane's picture, once traced.
+    pub(super) fn picture(&self) -> Option<&Picture> {
+        self.image.picture()
     }
 
     /// Traces the picture of the current window here and now (tests, benchmarks).
     pub fn render_picture_now(&mut self) {
         if let Some(scene) = &self.scene {
-            self.picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
+            let picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
+            self.image.set_picture(picture);
         }
     }
 
-    /// Why a node's branches stopped, in words ("" when both were traced or it continues).
-    pub fn stop_reason(&self, n: usize) -> String {
-        let Some(t) = &self.trace else {
-            return String::new();
-        };
-        let node = &t.samples[self.sample].tree.nodes[n];
-        if node.hit.is_none() {
-            return "miss → background".to_owned();
-        }
-        let mut why: Vec<&str> = Vec::new();
-        for (branch, none) in [
-            (&node.reflected, "not reflective"),
-            (&node.refracted, "opaque"),
-        ] {
-            match branch.as_ref().map(|b| b.outcome) {
-                Some(Branch::NoCoefficient) => why.push(none),
-                Some(Branch::MaxDepth) => why.push("max depth"),
-                Some(Branch::WeightCutoff) => why.push("weight cutoff"),
-                Some(Branch::TotalInternalReflection) => why.push("total internal reflection"),
-                _ => {}
-            }
-        }
-        why.dedup();
-        why.join(", ")
+    /// Shows `picture`, traced elsewhere (benchmarks).
+    pub fn set_picture(&mut self, picture: Option<Picture>) {
+        self.image.set_picture(picture);
+    }
+
+    /// The what-if edits in effect, as typed (a material's with its name).
+    pub fn edits(&self) -> &[String] {
+        self.what_if.edits()
+    }
+
+    /// The what-if edits and the pixel before them.
+    pub(super) fn what_if(&self) -> &WhatIf {
+        &self.what_if
     }
 }

@@ -5,9 +5,10 @@
 use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 
-use super::app::{App, Item};
+use super::app::App;
 use super::colors::swatch;
 use super::reveal::Progress;
+use super::selection::Item;
 use crate::tree::ray_tree::RayNode;
 use crate::tree::steps::StepKind;
 use crate::views::explain;
@@ -28,17 +29,20 @@ pub(super) fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
 /// With edits in effect: what they are, and the pixel's color and ray count
 /// before the first edit and now.
 fn what_if(app: &App, tc: bool) -> Vec<Line<'static>> {
-    let (Some(before), Some(trace)) = (&app.before, &app.trace) else {
+    let (Some(before), Some(trace)) = (app.what_if().before(), app.trace()) else {
         return Vec::new();
     };
-    if before.pixel != app.cursor {
+    if before.pixel != app.cursor() {
         return Vec::new();
     }
     let bold = Style::default().add_modifier(Modifier::BOLD);
     vec![
         Line::from(vec![
             Span::styled("what if  ", bold),
-            Span::raw(format!("{} (u: undo all, w: write)", app.edits.join("; "))),
+            Span::raw(format!(
+                "{} (u: undo all, w: write)",
+                app.what_if().edits().join("; ")
+            )),
         ]),
         Line::from(vec![
             Span::styled("color    ", bold),
@@ -60,20 +64,20 @@ fn what_if(app: &App, tc: bool) -> Vec<Line<'static>> {
 }
 
 fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
-    let Some(trace) = &app.trace else {
+    let Some(trace) = app.trace() else {
         return vec![];
     };
+    let sample = &trace.samples[app.selection().sample()];
     // The camera stage comes before any ray: it is what step 1 computes.
     let camera_step = app
-        .step
-        .is_some_and(|s| app.steps.get(s).is_some_and(|s| s.kind == StepKind::Camera));
-    if let (true, Some(stage)) = (camera_step, &trace.samples[app.sample].camera) {
+        .current_step()
+        .is_some_and(|s| s.kind == StepKind::Camera);
+    if let (true, Some(stage)) = (camera_step, &sample.camera) {
         return explained(explain::camera(&trace.camera, stage, ""));
     }
     let Some(item) = app.selected_item() else {
         return vec![];
     };
-    let sample = &trace.samples[app.sample];
     let node = &sample.tree.nodes[item.node()];
     if let Item::Shadow(_, k) = item {
         return shadow_details(node, k);
@@ -88,7 +92,7 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
         (Some(stage), None) => explained(explain::camera(&trace.camera, stage, "")),
         _ => Vec::new(),
     };
-    if app.step.is_some() {
+    if app.step().is_some() {
         let revealed = app.revealed();
         let p = revealed.node(item.node());
         let mut out = ray_details(node);

@@ -32,15 +32,15 @@ pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     .find(|t| t.chars().count() + 2 <= usize::from(area.width))
     .unwrap_or("");
     let block = Block::default().borders(Borders::ALL).title(title);
-    let (Some(trace), Some(scene)) = (&app.trace, &app.scene) else {
+    let (Some(trace), Some(scene)) = (app.trace(), app.scene()) else {
         frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
         return;
     };
     // The same projection and honesty rules as `raytree diagram`; while stepping,
     // only what the algorithm has computed so far.
     let options = Options {
-        sample: app.sample,
-        until_step: app.step,
+        sample: app.selection().sample(),
+        until_step: app.step(),
         ..Options::default()
     };
     let Ok(lay) = layout(trace, scene, &options) else {

@@ -4,13 +4,14 @@
 
 use std::time::Instant;
 
-use super::app::App;
 use super::features::{FeatureMap, Features};
+use crate::scene::Scene;
 
 /// What `f` looks for.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub enum Seek {
     /// A total internal reflection.
+    #[default]
     Tir,
     /// A blocked shadow ray.
     Blocked,
@@ -89,57 +90,106 @@ impl Overlay {
     }
 }
 
-impl App {
-    /// The image's features, scanned once per scene.
-    pub fn feature_map(&mut self) -> Option<&FeatureMap> {
-        if self.features.is_none() {
-            let scene = self.scene.as_ref()?;
-            let started = Instant::now();
-            // Every pixel up to a million; beyond, every other one.
-            let s = scene.settings;
-            let stride = if u64::from(s.width) * u64::from(s.height) > 1_000_000 {
-                2
-            } else {
-                1
-            };
-            self.features = Some(super::features::scan(scene, stride));
-            self.message = format!(
-                "scanned the image in {:.1} s",
-                started.elapsed().as_secs_f64()
-            );
-        }
+/// What `f` seeks, what the image pane overlays, and the image's features
+/// both read (scanned on the first find or overlay, again after an edit).
+#[derive(Debug, Default)]
+pub(super) struct Finding {
+    features: Option<FeatureMap>,
+    seek: Seek,
+    overlay: Overlay,
+}
+
+impl Finding {
+    /// What `f` looks for.
+    pub fn seek(&self) -> Seek {
+        self.seek
+    }
+
+    /// What the image pane shows.
+    pub fn overlay(&self) -> Overlay {
+        self.overlay
+    }
+
+    /// The image's features, once scanned.
+    pub fn features(&self) -> Option<&FeatureMap> {
         self.features.as_ref()
     }
 
-    /// Goes to the next pixel (in reading order) with the sought feature.
-    pub fn find(&mut self) {
+    /// The scene changed: its features are scanned again when next needed.
+    pub fn forget(&mut self) {
+        self.features = None;
+    }
+
+    /// Scans `scene`'s features if not yet done; says how long it took when it scanned.
+    fn scan(&mut self, scene: Option<&Scene>) -> Option<String> {
+        if self.features.is_some() {
+            return None;
+        }
+        let scene = scene?;
+        let started = Instant::now();
+        // Every pixel up to a million; beyond, every other one.
+        let s = scene.settings;
+        let stride = if u64::from(s.width) * u64::from(s.height) > 1_000_000 {
+            2
+        } else {
+            1
+        };
+        self.features = Some(super::features::scan(scene, stride));
+        Some(format!(
+            "scanned the image in {:.1} s",
+            started.elapsed().as_secs_f64()
+        ))
+    }
+
+    /// The next pixel after `from` (in reading order) with what is sought, and
+    /// what to tell about it.
+    pub fn find(
+        &mut self,
+        scene: Option<&Scene>,
+        from: (u32, u32),
+    ) -> (Option<(u32, u32)>, String) {
+        self.scan(scene);
         let seek = self.seek;
-        let from = self.cursor;
-        let found = self
-            .feature_map()
-            .and_then(|m| m.next(from, |f| seek.matches(f)));
-        match found {
-            Some(p) => {
-                self.message = format!(
+        match self
+            .features
+            .as_ref()
+            .and_then(|m| m.next(from, |f| seek.matches(f)))
+        {
+            Some(p) => (
+                Some(p),
+                format!(
                     "found: {} (f: next, F: look for something else)",
                     seek.name()
-                );
-                self.select(p);
-            }
-            None => {
-                self.message = format!(
+                ),
+            ),
+            None => (
+                None,
+                format!(
                     "no pixel has a {} (F: look for something else)",
                     seek.name()
-                )
-            }
+                ),
+            ),
         }
     }
 
-    pub(super) fn cycle_overlay(&mut self) {
+    /// Seeks the next kind of feature, as `F` cycles.
+    pub fn seek_next(&mut self) {
+        let k = Seek::ALL.iter().position(|&s| s == self.seek).unwrap_or(0);
+        self.seek = Seek::ALL[(k + 1) % Seek::ALL.len()];
+    }
+
+    /// The next overlay, as `o` cycles; what to tell, if anything (a scan, or
+    /// that there is no scene to overlay).
+    pub fn next_overlay(&mut self, scene: Option<&Scene>) -> Option<String> {
         self.overlay = self.overlay.next();
-        if self.overlay != Overlay::None && self.feature_map().is_none() {
-            self.overlay = Overlay::None;
-            self.message = "no scene: no overlays".to_owned();
+        if self.overlay == Overlay::None {
+            return None;
         }
+        let scanned = self.scan(scene);
+        if self.features.is_none() {
+            self.overlay = Overlay::None;
+            return Some("no scene: no overlays".to_owned());
+        }
+        scanned
     }
 }

@@ -35,7 +35,8 @@ fn scalar(overlay: Overlay, f: &Features) -> Option<u32> {
 
 /// What a scalar overlay shows, for the status line: its name and range.
 pub fn legend(app: &App) -> Option<String> {
-    let map = app.features.as_ref()?;
+    let finding = app.finding();
+    let map = finding.features()?;
     let max = |o| {
         map.cells
             .iter()
@@ -43,11 +44,11 @@ pub fn legend(app: &App) -> Option<String> {
             .max()
             .unwrap_or(0)
     };
-    match app.overlay {
+    match finding.overlay() {
         Overlay::None => None,
         Overlay::Marks => Some(format!(
             "overlay: pixels with a {} in cyan (o: next)",
-            app.seek.name()
+            finding.seek().name()
         )),
         o @ (Overlay::Depth | Overlay::Rays | Overlay::Tests) => {
             let what = match o {
@@ -66,7 +67,7 @@ pub fn legend(app: &App) -> Option<String> {
 impl Widget for ImagePane<'_> {
     fn render(self, area: Rect, buf: &mut Buffer) {
         let app = self.app;
-        if app.scene.is_none() {
+        if app.scene().is_none() {
             Paragraph::new("no scene: the image is not available")
                 .wrap(Wrap { trim: true })
                 .render(area, buf);
@@ -75,14 +76,12 @@ impl Widget for ImagePane<'_> {
         let window = app.window();
         let (w, h) = app.image_size();
         let unknown = [40, 40, 40];
-        let overlay = app
-            .features
-            .as_ref()
-            .filter(|_| app.overlay != Overlay::None);
+        let (seek, shows) = (app.finding().seek(), app.finding().overlay());
+        let overlay = app.finding().features().filter(|_| shows != Overlay::None);
         let top = overlay.map_or(1, |m| {
             m.cells
                 .iter()
-                .filter_map(|f| scalar(app.overlay, f))
+                .filter_map(|f| scalar(shows, f))
                 .max()
                 .unwrap_or(1)
                 .max(1)
@@ -91,8 +90,7 @@ impl Widget for ImagePane<'_> {
         let dot = |i: u16, j: u16| -> Option<[u8; 3]> {
             let (x, y) = window.pixel_at(i, j, w, h)?;
             let shown = app
-                .picture
-                .as_ref()
+                .picture()
                 .filter(|p| p.window == window)
                 .and_then(|p| p.dots[usize::from(j) * usize::from(window.cols) + usize::from(i)])
                 .unwrap_or(unknown);
@@ -100,16 +98,16 @@ impl Widget for ImagePane<'_> {
                 return Some(shown);
             };
             let f = map.at(x, y);
-            Some(match scalar(app.overlay, &f) {
+            Some(match scalar(shows, &f) {
                 Some(v) => {
                     let c = colorous::VIRIDIS.eval_continuous(f64::from(v) / f64::from(top));
                     [c.r, c.g, c.b]
                 }
-                None if app.seek.matches(&f) => MARK,
+                None if seek.matches(&f) => MARK,
                 None => shown.map(|v| v / 3),
             })
         };
-        let cursor = window.dot_of(app.cursor.0, app.cursor.1);
+        let cursor = window.dot_of(app.cursor().0, app.cursor().1);
         let mark = [255, 0, 255];
         let color = |c: Option<[u8; 3]>| c.map_or(Color::Reset, |c| term_color(c, self.truecolor));
         for row in 0..area.height {

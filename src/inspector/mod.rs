@@ -1,7 +1,8 @@
 //! `raytree inspect`: pick a pixel, walk its ray tree step by step, in the terminal.
 //!
-//! [`App`] holds the state and handles keys without a terminal (tested
-//! directly); [`ui`] draws it; this module owns the terminal: raw mode, the
+//! [`App`] holds the state in owned parts and handles keys without a terminal
+//! (tested directly); [`App::tick`] makes the changes a frame needs and
+//! [`draw`] draws it, only reading; this module owns the terminal: raw mode, the
 //! alternate screen and mouse capture are switched on here and restored on every
 //! way out (quit, error, panic, SIGINT).
 
@@ -13,10 +14,14 @@ mod features;
 mod find;
 mod fit;
 mod image_pane;
-mod keys;
+mod image_view;
+mod keymap;
+mod layout;
 mod preview;
 mod reveal;
+mod selection;
 mod stepping;
+mod tick;
 mod tree_pane;
 mod ui;
 mod whatif;
@@ -35,13 +40,19 @@ use ratatui::crossterm::terminal::{
     EnterAlternateScreen, LeaveAlternateScreen, disable_raw_mode, enable_raw_mode,
 };
 
-pub use app::{App, Areas, Before, Focus, Guided, Item, Pane, Prompt};
+pub use app::{App, Prompt};
 pub use colors::detect as color_support;
 pub use features::{FeatureMap, Features, scan as scan_features};
 pub use find::{Overlay, Seek};
+pub use keymap::{Action, Binding, KEYS, Key};
+pub use layout::{Areas, Pane};
 pub use preview::{Picture, Window, render_picture};
 pub use reveal::{Progress, Revealed, call_stack};
-pub use ui::{GLYPHS, KEYS, draw};
+pub use selection::{Focus, Item};
+pub use stepping::Guided;
+pub use tick::tick;
+pub use ui::{GLYPHS, draw};
+pub use whatif::Before;
 
 static ACTIVE: AtomicBool = AtomicBool::new(false);
 
@@ -89,8 +100,11 @@ fn event_loop(
     app: &mut App,
 ) -> std::io::Result<()> {
     loop {
+        // The update step, then a frame that only reads the state.
+        terminal.autoresize()?;
+        tick(app, terminal.get_frame().area());
         terminal.draw(|frame| draw(frame, app))?;
-        if app.quit {
+        if app.quitting() {
             return Ok(());
         }
         // Wake up often enough to show the picture as it refines.
@@ -98,9 +112,8 @@ fn event_loop(
             match event::read()? {
                 Event::Key(key) if key.kind == KeyEventKind::Press => app.on_key(key),
                 Event::Mouse(m) => app.on_mouse(m),
-                _ => {} // A resize: the next draw lays out again.
+                _ => {} // A resize: the next tick lays out again.
             }
         }
-        app.receive_picture();
     }
 }

@@ -1,87 +1,120 @@
 //! Stepping through the algorithm, freely or along a guided step-through's
-//! stops, and what the panes may show at the current step.
+//! stops: where in the steps the inspector is, and what the panes may show
+//! there.
 
-use super::app::{App, Guided, Item};
 use super::reveal::Revealed;
-use crate::course::guide::Script;
-use crate::tree::steps::StepKind;
+use crate::course::guide::{Narration, Script};
+use crate::tree::ray_tree::RayTree;
+use crate::tree::steps::Step;
 
-impl App {
-    /// What the algorithm has computed at the current step (everything when
-    /// not stepping).
-    pub fn revealed(&self) -> Revealed {
-        let Some(t) = &self.trace else {
-            return Revealed::default();
-        };
-        let tree = &t.samples[self.sample].tree;
-        match self.step {
-            Some(s) => Revealed::until(tree, &self.steps, s),
-            None => Revealed::all(tree),
-        }
+/// The algorithm's steps for the tree shown, and the current one once
+/// stepping has started.
+#[derive(Debug, Default)]
+pub(super) struct Stepping {
+    steps: Vec<Step>,
+    at: Option<usize>,
+}
+
+impl Stepping {
+    /// Not stepping yet through `steps`.
+    pub fn new(steps: Vec<Step>) -> Self {
+        Self { steps, at: None }
     }
 
-    /// Follows a guided step-through: its pixel, its first stop.
-    pub fn follow(&mut self, script: Script) -> Result<(), String> {
-        self.sample = script.sample;
-        self.select((script.pixel[0], script.pixel[1]));
-        let trace = self
-            .trace
-            .as_ref()
-            .ok_or("the script's pixel could not be traced")?;
-        let told = crate::course::guide::narrate(&script, trace)?;
-        self.guide = Some(Guided {
-            script,
-            told,
-            at: 0,
-        });
-        self.stop_by(0);
-        Ok(())
+    /// Every step, in execution order.
+    pub fn steps(&self) -> &[Step] {
+        &self.steps
     }
 
-    /// Moves `by` stops through the guided step-through.
-    pub fn stop_by(&mut self, by: i64) {
-        let Some(g) = &mut self.guide else { return };
-        let last = g.told.len().saturating_sub(1) as i64;
-        g.at = (g.at as i64 + by).clamp(0, last) as usize;
-        let step = g.told.get(g.at).map(|n| n.step);
-        if let Some(step) = step {
-            self.go_to_step(step);
-        }
+    /// The current step's index, while stepping.
+    pub fn at(&self) -> Option<usize> {
+        self.at
     }
 
-    /// Moves `by` steps through the algorithm and selects the step's line.
-    pub fn step_by(&mut self, by: i64) {
+    /// The current step, while stepping.
+    pub fn current(&self) -> Option<&Step> {
+        self.steps.get(self.at?)
+    }
+
+    /// Stops stepping: the whole tree again.
+    pub fn leave(&mut self) {
+        self.at = None;
+    }
+
+    /// The step `by` steps from the current one, kept within the steps; not
+    /// yet stepping, forward starts at the first and back at the last. `None`
+    /// without steps.
+    pub fn target(&self, by: i64) -> Option<usize> {
         if self.steps.is_empty() {
-            return;
+            return None;
         }
         let last = self.steps.len() as i64 - 1;
-        let next = match self.step {
+        let next = match self.at {
             None if by >= 0 => 0,
             None => last,
             Some(s) => (s as i64 + by).clamp(0, last),
         };
-        self.go_to_step(next as usize);
+        Some(next as usize)
     }
 
-    /// Makes step `s` the current one and selects its line: the ray's, or the
-    /// shadow ray's for a shadow step.
-    pub fn go_to_step(&mut self, s: usize) {
-        let Some(&step) = self.steps.get(s) else {
-            return;
+    /// Makes step `s` the current one, if there is one; returns it.
+    pub fn go_to(&mut self, s: usize) -> Option<Step> {
+        let step = *self.steps.get(s)?;
+        self.at = Some(s);
+        Some(step)
+    }
+
+    /// What the algorithm has computed in `tree` at the current step
+    /// (everything when not stepping).
+    pub fn revealed(&self, tree: Option<&RayTree>) -> Revealed {
+        let Some(tree) = tree else {
+            return Revealed::default();
         };
-        self.step = Some(s);
-        // Stepping, the newest numbers are the last lines: show the end.
-        self.detail_scroll = u16::MAX;
-        self.select_node(step.node);
-        if let StepKind::Shadow(k) = step.kind {
-            self.expanded.insert(step.node);
-            if let Some(pos) = self
-                .items()
-                .iter()
-                .position(|&(item, _)| item == Item::Shadow(step.node, k))
-            {
-                self.selected = pos;
-            }
+        match self.at {
+            Some(s) => Revealed::until(tree, &self.steps, s),
+            None => Revealed::all(tree),
         }
+    }
+}
+
+/// A guided step-through being followed: its script, its stops filled with
+/// the trace's numbers, and the stop shown.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Guided {
+    script: Script,
+    told: Vec<Narration>,
+    at: usize,
+}
+
+impl Guided {
+    /// At the first of `told`, the stops of `script`.
+    pub fn new(script: Script, told: Vec<Narration>) -> Self {
+        Self {
+            script,
+            told,
+            at: 0,
+        }
+    }
+
+    /// Moves `by` stops, kept within them; the step of the stop reached.
+    pub fn move_by(&mut self, by: i64) -> Option<usize> {
+        let last = self.told.len().saturating_sub(1) as i64;
+        self.at = (self.at as i64 + by).clamp(0, last) as usize;
+        self.stop().map(|n| n.step)
+    }
+
+    /// The stop shown.
+    pub fn stop(&self) -> Option<&Narration> {
+        self.told.get(self.at)
+    }
+
+    /// Which stop is shown (0 is the first) and how many there are.
+    pub fn position(&self) -> (usize, usize) {
+        (self.at, self.told.len())
+    }
+
+    /// The script's title.
+    pub fn title(&self) -> Option<&str> {
+        self.script.title.as_deref()
     }
 }

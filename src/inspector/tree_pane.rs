@@ -8,10 +8,11 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use super::app::{App, Item};
+use super::app::App;
 use super::colors::{swatch, term_color};
 use super::fit::cut;
 use super::reveal::Progress;
+use super::selection::Item;
 use crate::figure::pen::palette;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::views::numbers::num;
@@ -39,7 +40,7 @@ fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<S
         spans.push(swatch(node.color(), tc));
     }
     let why = if p.reflect && p.refract || p.color {
-        app.stop_reason(n)
+        app.selection().stop_reason(n)
     } else {
         String::new()
     };
@@ -71,17 +72,18 @@ pub fn shadow_text(node: &RayNode, k: usize) -> String {
 
 /// Draws the tree pane.
 pub fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: bool) {
-    let Some(trace) = &app.trace else {
+    let selection = app.selection();
+    let Some(tree) = selection.tree() else {
         frame.render_widget(Paragraph::new("no pixel traced").block(block), area);
         return;
     };
-    let nodes = &trace.samples[app.sample].tree.nodes;
+    let nodes = &tree.nodes;
     let inner = block.inner(area);
-    let step_node = app.step.map(|s| app.steps[s].node);
+    let step_node = app.current_step().map(|s| s.node);
     let shown = app.revealed();
     let width = usize::from(inner.width);
     let items = app.items();
-    let scroll = app.tree_scroll(inner.height);
+    let scroll = selection.tree_scroll(inner.height);
     let lines: Vec<Line> = items
         .iter()
         .enumerate()
@@ -91,9 +93,9 @@ pub fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: boo
             let mut spans = vec![Span::raw("  ".repeat(indent))];
             match item {
                 Item::Ray(n) => {
-                    let marker = if !app.expandable(n) {
+                    let marker = if !selection.expandable(n) {
                         "  "
-                    } else if app.expanded.contains(&n) {
+                    } else if selection.is_expanded(n) {
                         "▾ "
                     } else {
                         "▸ "
@@ -107,7 +109,7 @@ pub fn draw_tree(frame: &mut Frame, app: &App, block: Block, area: Rect, tc: boo
                 )),
             }
             let mut line = cut(Line::from(spans), width);
-            if row == app.selected {
+            if row == selection.line() {
                 line = line.style(Style::default().add_modifier(Modifier::REVERSED));
             } else if step_node == Some(item.node()) && matches!(item, Item::Ray(_)) {
                 line = line.style(Style::default().add_modifier(Modifier::UNDERLINED));

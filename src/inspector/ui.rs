@@ -1,87 +1,23 @@
-//! Drawing the inspector: the panes laid out for the terminal's size, the
-//! guide, step and status lines, and the help. A terminal of 120×36 or more
-//! shows all four panes; a smaller one (down to 80×24) shows the image and the
-//! tree on the left and, on the right, the numbers or the diagram (`v`).
+//! Drawing the inspector, reading its state and changing none of it: the
+//! panes where `layout.rs` puts them, the guide, step and status lines, and
+//! the help.
 
 use ratatui::Frame;
-use ratatui::layout::{Constraint, Layout, Rect};
+use ratatui::layout::Rect;
 use ratatui::style::{Color, Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
-use super::app::{App, Areas, Focus, Pane, Prompt};
+use super::app::{App, Prompt};
 use super::diagram_pane::draw_diagram;
 use super::fit::{cut, wrap};
 use super::image_pane::{ImagePane, legend};
+use super::keymap::KEYS;
+use super::layout::Panes;
 use super::reveal::call_stack;
+use super::selection::Focus;
 use super::tree_pane::draw_tree;
 use crate::views::text::describe;
-
-/// Every key, for the help overlay and the README.
-pub const KEYS: &[(&str, &str)] = &[
-    (
-        "←↑↓→ / hjkl",
-        "move the pixel cursor (image pane) or through the tree (tree pane)",
-    ),
-    ("click", "select a pixel (image pane) or a line (tree pane)"),
-    (
-        "Tab",
-        "switch between the image and the tree pane (also i: image, t: tree)",
-    ),
-    (
-        "Enter / →",
-        "expand the selected ray (tree pane); from the image, go to the tree",
-    ),
-    ("←", "collapse the selected ray, or go to its parent"),
-    ("e", "expand the whole tree"),
-    ("+ / -", "zoom in / out around the cursor"),
-    ("g", "go to a pixel: type x,y and Enter"),
-    (
-        "f",
-        "find the next pixel with a total internal reflection (or what F chose)",
-    ),
-    (
-        "F",
-        "find something else: blocked shadow, refraction, depth ≥ 4, cutoff, miss",
-    ),
-    (
-        "o",
-        "overlay: marks of what f finds, depth, rays or tests per pixel, none",
-    ),
-    (
-        "n / space",
-        "next step of the algorithm (in a guided step-through: next stop)",
-    ),
-    ("p / Backspace", "previous step (guided: previous stop)"),
-    (
-        "] / [",
-        "next / previous step, also in a guided step-through",
-    ),
-    ("x", "leave stepping: show the whole tree"),
-    (
-        "s",
-        "show the pixel's next sample (with several samples per pixel)",
-    ),
-    (
-        "PgUp / PgDn",
-        "scroll the numbers (or the mouse wheel over them)",
-    ),
-    (
-        "v",
-        "small terminals: show the diagram or the numbers on the right",
-    ),
-    (
-        "m",
-        "what if: edit the selected hit's material or a method, e.g. ior=1.0",
-    ),
-    ("u", "undo every edit: the scene as loaded"),
-    ("w", "write the edited scene to a new file"),
-    (
-        "?",
-        "this help (↑↓ PgUp PgDn scroll it, any other key closes)",
-    ),
-    ("q / Esc", "quit"),
-];
 
 /// What the glyphs and colors mean, for the help.
 pub const GLYPHS: &[(&str, &str)] = &[
@@ -108,42 +44,21 @@ pub const GLYPHS: &[(&str, &str)] = &[
     ),
 ];
 
-/// Draws the whole inspector.
-pub fn draw(frame: &mut Frame, app: &mut App) {
-    let tc = app.truecolor;
+/// Draws the whole inspector: a pure function of the state (the update step,
+/// [`App::tick`], changes what must change before a frame).
+pub fn draw(frame: &mut Frame, app: &App) {
+    let tc = app.truecolor();
     let area = frame.area();
     let guide_lines = guide_text(app, area.width);
     let step_lines = step_text(app, area.width);
-    let [main, guide_area, step_area, status_area] = Layout::vertical([
-        Constraint::Min(6),
-        Constraint::Length(guide_lines.len() as u16),
-        Constraint::Length(step_lines.len() as u16),
-        Constraint::Length(1),
-    ])
-    .areas(area);
-    let wide = area.width >= 120 && area.height >= 36;
-    let (image_area, tree_area, detail_area, diagram_area) = if wide {
-        let [left, right] =
-            Layout::horizontal([Constraint::Percentage(50), Constraint::Percentage(50)])
-                .areas(main);
-        let [image, diagram] =
-            Layout::vertical([Constraint::Percentage(60), Constraint::Percentage(40)]).areas(left);
-        let [tree, details] =
-            Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(right);
-        (image, tree, Some(details), Some(diagram))
-    } else {
-        let [left, right] =
-            Layout::horizontal([Constraint::Percentage(45), Constraint::Percentage(55)])
-                .areas(main);
-        let [image, tree] =
-            Layout::vertical([Constraint::Percentage(45), Constraint::Percentage(55)]).areas(left);
-        match app.pane {
-            Pane::Details => (image, tree, Some(right), None),
-            Pane::Diagram => (image, tree, None, Some(right)),
-        }
-    };
+    let panes = Panes::new(
+        area,
+        guide_lines.len() as u16,
+        step_lines.len() as u16,
+        app.screen().pane(),
+    );
     let focused = |f: Focus| {
-        if app.focus == f {
+        if app.focus() == f {
             Style::default()
                 .fg(Color::Yellow)
                 .add_modifier(Modifier::BOLD)
@@ -159,46 +74,47 @@ pub fn draw(frame: &mut Frame, app: &mut App) {
         .borders(Borders::ALL)
         .title(" ray tree ")
         .border_style(focused(Focus::Tree));
-    app.areas = Areas {
-        image: image_block.inner(image_area),
-        tree: tree_block.inner(tree_area),
-        details: detail_area.unwrap_or_default(),
-    };
-    app.request_picture();
-
-    frame.render_widget(image_block, image_area);
-    frame.render_widget(ImagePane { app, truecolor: tc }, app.areas.image);
-    draw_tree(frame, app, tree_block, tree_area, tc);
-    let other = if wide { "" } else { " · v: diagram" };
-    if let Some(d) = detail_area {
-        app.detail_scroll = draw_details(frame, app, d, tc, other);
+    let image_inside = image_block.inner(panes.image);
+    frame.render_widget(image_block, panes.image);
+    frame.render_widget(ImagePane { app, truecolor: tc }, image_inside);
+    draw_tree(frame, app, tree_block, panes.tree, tc);
+    let other = if panes.wide { "" } else { " · v: diagram" };
+    if let Some(d) = panes.details {
+        draw_details(frame, app, d, tc, other);
     }
-    if let Some(d) = diagram_area {
+    if let Some(d) = panes.diagram {
         draw_diagram(frame, app, d, tc);
     }
-    frame.render_widget(Paragraph::new(guide_lines), guide_area);
-    frame.render_widget(Paragraph::new(step_lines), step_area);
-    frame.render_widget(Paragraph::new(status_text(app, area.width)), status_area);
-    if app.help {
+    frame.render_widget(Paragraph::new(guide_lines), panes.guide);
+    frame.render_widget(Paragraph::new(step_lines), panes.step);
+    frame.render_widget(Paragraph::new(status_text(app, area.width)), panes.status);
+    if app.screen().help_open() {
         draw_help(frame, app);
     }
 }
 
+/// Where the panes go for `app` on `area`, as [`draw`] lays them out.
+pub(super) fn panes(app: &App, area: Rect) -> Panes {
+    Panes::new(
+        area,
+        guide_text(app, area.width).len() as u16,
+        step_text(app, area.width).len() as u16,
+        app.screen().pane(),
+    )
+}
+
 /// The guided step-through's current stop, wrapped (nothing when not guided).
 fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
-    let Some(g) = &app.guide else {
+    let Some(g) = app.guide() else {
         return Vec::new();
     };
-    let Some(told) = g.told.get(g.at) else {
+    let Some(told) = g.stop() else {
         return Vec::new();
     };
-    let title = g
-        .script
-        .title
-        .clone()
-        .unwrap_or_else(|| "guided".to_owned());
+    let title = g.title().unwrap_or("guided");
+    let (at, stops) = g.position();
     let head = Span::styled(
-        format!("{title} · stop {}/{}: ", g.at + 1, g.told.len()),
+        format!("{title} · stop {}/{stops}: ", at + 1),
         Style::default()
             .fg(Color::Cyan)
             .add_modifier(Modifier::BOLD),
@@ -214,7 +130,7 @@ fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
 fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let bold = Style::default().add_modifier(Modifier::BOLD);
     let w = usize::from(width);
-    if let Some(prompt) = &app.prompt {
+    if let Some(prompt) = app.prompt() {
         let (label, typed) = match prompt {
             Prompt::GoTo(t) => ("go to pixel (x,y): ", t),
             Prompt::Edit(t) => ("what if (field=value, e.g. ior=1.0; Esc cancels): ", t),
@@ -228,32 +144,33 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
             w,
         )];
     }
-    let Some(s) = app.step else {
-        if !app.message.is_empty() {
-            return vec![cut(Line::from(app.message.clone()), w)];
+    let Some(s) = app.step() else {
+        if !app.message().is_empty() {
+            return vec![cut(Line::from(app.message().to_owned()), w)];
         }
-        let find = format!("f: find a {}", app.seek.name());
+        let find = format!("f: find a {}", app.finding().seek().name());
         return vec![cut(
             Line::from(format!(
                 "n: step through the algorithm ({} steps) · {find} · m: what if · ? every key",
-                app.steps.len()
+                app.steps().len()
             )),
             w,
         )];
     };
-    let Some(trace) = &app.trace else {
+    let Some(trace) = app.trace() else {
         return Vec::new();
     };
-    let node = app.steps[s].node;
-    let head = format!("step {}/{} ", s + 1, app.steps.len());
+    let sample = app.selection().sample();
+    let node = app.steps()[s].node;
+    let head = format!("step {}/{} ", s + 1, app.steps().len());
     let room = w.saturating_sub(head.chars().count() + " in ".len() + " (x: whole tree)".len());
-    let stack = call_stack(&trace.samples[app.sample].tree, node, room);
+    let stack = call_stack(&trace.samples[sample].tree, node, room);
     let first = Line::from(vec![
         Span::styled(head, bold),
         Span::styled(format!("in {stack}"), Style::default().fg(Color::Cyan)),
         Span::raw(" (x: whole tree)"),
     ]);
-    let what = describe(trace, app.sample, &app.steps[s]).0;
+    let what = describe(trace, sample, &app.steps()[s]).0;
     let mut lines = vec![cut(first, w)];
     let mut told = wrap(vec![Line::from(what)], w);
     if told.len() > 2 {
@@ -271,20 +188,23 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
 /// trace (or where a saved trace came from), what an overlay shows.
 fn status_text(app: &App, width: u16) -> Line<'static> {
     let (w, h) = app.image_size();
-    let timing = match &app.loaded_from {
+    let timing = match app.loaded_from() {
         Some(file) => format!("loaded from {file}"),
-        None => format!("traced in {:.2} ms", app.trace_time.as_secs_f64() * 1e3),
+        None => format!(
+            "traced in {:.2} ms",
+            app.selection().traced_in().as_secs_f64() * 1e3
+        ),
     };
     let mut parts = vec![
-        format!("pixel {},{} of {w}×{h}", app.cursor.0, app.cursor.1),
-        format!("zoom {}×", 1u32 << app.zoom),
-        app.source.file.clone(),
+        format!("pixel {},{} of {w}×{h}", app.cursor().0, app.cursor().1),
+        format!("zoom {}×", 1u32 << app.zoom()),
+        app.source().file.clone(),
         timing,
     ];
-    if let Some(t) = app.trace.as_ref().filter(|t| t.samples.len() > 1) {
+    if let Some(t) = app.trace().filter(|t| t.samples.len() > 1) {
         parts.push(format!(
             "sample {} of {} (s: next) · pixel mean {}",
-            app.sample + 1,
+            app.selection().sample() + 1,
             t.samples.len(),
             crate::views::numbers::color(t.color)
         ));
@@ -292,11 +212,11 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     if let Some(l) = legend(app) {
         parts.insert(0, l);
     }
-    if let Some(note) = &app.color_note {
-        parts.push(note.clone());
+    if let Some(note) = app.color_note() {
+        parts.push(note.to_owned());
     }
-    if !app.message.is_empty() && app.step.is_some() {
-        parts.insert(0, app.message.clone());
+    if !app.message().is_empty() && app.step().is_some() {
+        parts.insert(0, app.message().to_owned());
     }
     cut(
         Line::from(Span::styled(
@@ -307,14 +227,27 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     )
 }
 
-/// Draws the selected ray's numbers; returns the first line shown (the
-/// scroll, kept in range). Stepping, the newest lines are at the bottom, so a
-/// scroll past the end shows the end.
-fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) -> u16 {
+/// The selected ray's numbers, wrapped to the pane `area` (border included),
+/// and how many lines fit.
+fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) {
     let inner_width = usize::from(area.width.saturating_sub(2));
     let lines = wrap(super::details::details(app, tc), inner_width);
-    let visible = usize::from(area.height.saturating_sub(2));
-    let top = usize::from(app.detail_scroll).min(lines.len().saturating_sub(visible));
+    (lines, usize::from(area.height.saturating_sub(2)))
+}
+
+/// The first line of the numbers shown in `area`: the scroll, kept in range.
+/// Stepping, the newest lines are at the bottom, so a scroll past the end
+/// shows the end.
+pub(super) fn details_top(app: &App, area: Rect) -> usize {
+    let (lines, visible) = detail_lines(app, area, app.truecolor());
+    usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible))
+}
+
+/// Draws the selected ray's numbers from the first line [`details_top`] gives.
+fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) {
+    let inner_width = usize::from(area.width.saturating_sub(2));
+    let (lines, visible) = detail_lines(app, area, tc);
+    let top = usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible));
     let below = lines.len().saturating_sub(top + visible);
     let title = if lines.len() > visible {
         let arrows = format!(
@@ -337,7 +270,6 @@ fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str)
     let block = Block::default().borders(Borders::ALL).title(title);
     let shown: Vec<Line> = lines.into_iter().skip(top).take(visible).collect();
     frame.render_widget(Paragraph::new(shown).block(block), area);
-    top as u16
 }
 
 /// The first of `titles` that fits `width` columns, else the last one cut with a marker.
@@ -369,7 +301,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
     };
     let key_w = KEYS
         .iter()
-        .map(|(k, _)| k.chars().count())
+        .map(|b| b.keys.chars().count())
         .max()
         .unwrap_or(0);
     let glyph_w = GLYPHS
@@ -377,7 +309,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
         .map(|(k, _)| k.chars().count())
         .max()
         .unwrap_or(0);
-    let mut lines: Vec<Line<'static>> = KEYS.iter().map(|(k, w)| row(k, w, key_w)).collect();
+    let mut lines: Vec<Line<'static>> = KEYS.iter().map(|b| row(b.keys, b.what, key_w)).collect();
     lines.push(Line::from(""));
     lines.push(Line::from(Span::styled(
         "what you see",
@@ -387,7 +319,7 @@ fn draw_help(frame: &mut Frame, app: &App) {
     let lines = wrap(lines, inner);
     let height = (lines.len() as u16 + 2).min(area.height);
     let visible = usize::from(height.saturating_sub(2));
-    let top = usize::from(app.help_scroll).min(lines.len().saturating_sub(visible));
+    let top = usize::from(app.screen().help_scroll()).min(lines.len().saturating_sub(visible));
     let rect = Rect {
         x: area.x + (area.width - width) / 2,
         y: area.y + (area.height - height) / 2,

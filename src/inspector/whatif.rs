@@ -7,13 +7,13 @@
 use std::path::Path;
 use std::sync::Arc;
 
+use glam::DVec3;
 use serde_json::Value;
 
-use super::app::{App, Before, Item};
-use super::preview::Worker;
 use crate::io::output::PendingFile;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
+use crate::scene::source::SceneSource;
 
 /// The material fields an edit may change, as the scene file names them.
 pub const MATERIAL_FIELDS: &[&str] = &[
@@ -123,131 +123,128 @@ pub fn write(json: &Value, path: &Path) -> Result<(), String> {
         .map_err(|e| e.to_string())
 }
 
-impl App {
-    /// Applies a typed edit (`ior=1.0`) to the selected hit's material (or a
-    /// method), re-traces the pixel and keeps what it was before the first edit.
-    pub fn edit(&mut self, typed: &str) {
-        let Some(scene) = self.scene.clone() else {
-            self.message = "no scene to edit".to_owned();
-            return;
-        };
-        if self.scene_json.is_none() {
-            match self.read_scene_json() {
-                Ok(v) => self.scene_json = Some(v),
-                Err(e) => {
-                    self.message = e;
-                    return;
-                }
-            }
-        }
-        let material = self.selected_material();
-        let file = self.source.file.clone();
-        let json = self.scene_json.as_mut().expect("read above");
-        match apply(json, material.as_deref(), typed, &scene.settings, &file) {
-            Ok(edited) => {
-                if self.before.is_none() {
-                    self.before = self.trace.as_ref().map(|t| Before {
-                        pixel: self.cursor,
-                        color: t.color,
-                        rays: t.samples[0].tree.nodes.len(),
-                    });
-                }
-                if self.loaded.is_none() {
-                    self.loaded = Some(Arc::clone(&scene));
-                }
-                let label = match &material {
-                    Some(m)
-                        if MATERIAL_FIELDS
-                            .iter()
-                            .any(|f| typed.trim_start().starts_with(f)) =>
-                    {
-                        format!("{m}: {}", typed.trim())
-                    }
-                    _ => typed.trim().to_owned(),
-                };
-                self.edits.push(label);
-                self.swap_scene(Arc::new(edited));
-                self.message =
-                    format!("what if {}  (u: undo all, w: write)", self.edits.join("; "));
-            }
-            Err(e) => self.message = e,
-        }
+/// The pixel's color and tree before the first what-if edit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Before {
+    /// The pixel.
+    pub pixel: (u32, u32),
+    /// Its color.
+    pub color: DVec3,
+    /// Rays in its first sample's tree.
+    pub rays: usize,
+}
+
+/// The what-if edits in effect, the scene file's JSON they were made to, the
+/// scene as loaded (to undo them) and the pixel before the first.
+#[derive(Debug, Default)]
+pub(super) struct WhatIf {
+    /// The scene file's JSON (read on the first edit).
+    json: Option<Value>,
+    /// The scene as loaded, while edits are in effect.
+    loaded: Option<Arc<Scene>>,
+    /// The edits, as typed (a material's with its name).
+    edits: Vec<String>,
+    /// The pixel before the first edit.
+    before: Option<Before>,
+}
+
+impl WhatIf {
+    /// The edits in effect, as typed.
+    pub fn edits(&self) -> &[String] {
+        &self.edits
     }
 
-    /// Back to the scene as loaded, the pixel's tree bit for bit as before.
-    pub fn restore_scene(&mut self) {
-        let Some(loaded) = self.loaded.take() else {
-            self.message = "nothing to undo: the scene is as loaded".to_owned();
-            return;
+    /// The pixel before the first edit, while edits are in effect.
+    pub fn before(&self) -> Option<&Before> {
+        self.before.as_ref()
+    }
+
+    /// Applies a typed edit (`ior=1.0`) to `material` (the selected hit's) or
+    /// a method of `scene`, which `source` names; `before` is the pixel now,
+    /// kept if this is the first edit. Returns the edited scene.
+    pub fn edit(
+        &mut self,
+        scene: &Arc<Scene>,
+        source: &SceneSource,
+        material: Option<&str>,
+        typed: &str,
+        before: Option<Before>,
+    ) -> Result<Arc<Scene>, String> {
+        if self.json.is_none() {
+            self.json = Some(read_json(source)?);
+        }
+        let json = self.json.as_mut().expect("read above");
+        let edited = apply(json, material, typed, &scene.settings, &source.file)?;
+        if self.before.is_none() {
+            self.before = before;
+        }
+        if self.loaded.is_none() {
+            self.loaded = Some(Arc::clone(scene));
+        }
+        let label = match material {
+            Some(m)
+                if MATERIAL_FIELDS
+                    .iter()
+                    .any(|f| typed.trim_start().starts_with(f)) =>
+            {
+                format!("{m}: {}", typed.trim())
+            }
+            _ => typed.trim().to_owned(),
         };
+        self.edits.push(label);
+        Ok(Arc::new(edited))
+    }
+
+    /// What the edits are, for the status line.
+    pub fn told(&self) -> String {
+        format!("what if {}  (u: undo all, w: write)", self.edits.join("; "))
+    }
+
+    /// Forgets every edit, giving the scene as loaded (none without edits).
+    pub fn undo(&mut self) -> Option<Arc<Scene>> {
+        let loaded = self.loaded.take()?;
         self.edits.clear();
         self.before = None;
-        self.scene_json = None;
-        self.swap_scene(loaded);
-        self.message = "the scene is as loaded again".to_owned();
+        self.json = None;
+        Some(loaded)
     }
 
-    /// Writes the edited scene to a new file.
-    pub fn write_scene(&mut self, name: &str) {
-        let Some(json) = self.scene_json.as_ref().filter(|_| !self.edits.is_empty()) else {
-            self.message = "no edits to write (m: edit the selected hit's material)".to_owned();
-            return;
+    /// Writes the edited scene to a new file `name`; what to tell.
+    pub fn write(&self, name: &str) -> String {
+        let Some(json) = self.json.as_ref().filter(|_| !self.edits.is_empty()) else {
+            return "no edits to write (m: edit the selected hit's material)".to_owned();
         };
-        self.message = match write(json, Path::new(name.trim())) {
+        match write(json, Path::new(name.trim())) {
             Ok(()) => format!("wrote {}", name.trim()),
             Err(e) => e,
-        };
-    }
-
-    /// A name for the edited scene beside the original: `whitted-edited.json`.
-    pub fn default_edit_name(&self) -> String {
-        let file = self
-            .source
-            .file
-            .trim_end_matches(crate::scene::source::BUILT_IN);
-        let path = Path::new(if file.is_empty() {
-            "whitted.json"
-        } else {
-            file
-        });
-        let stem = path
-            .file_stem()
-            .map_or("scene".into(), |s| s.to_string_lossy());
-        path.with_file_name(format!("{stem}-edited.json"))
-            .display()
-            .to_string()
-    }
-
-    fn selected_material(&self) -> Option<String> {
-        let t = self.trace.as_ref()?;
-        let node = self.selected_item().map_or(0, Item::node);
-        let hit = t.samples[self.sample].tree.nodes.get(node)?.hit.as_ref()?;
-        Some(hit.material.clone())
-    }
-
-    fn read_scene_json(&self) -> Result<Value, String> {
-        let text = if self.source.file == crate::scene::source::BUILT_IN {
-            crate::scene::loader::WHITTED.to_owned()
-        } else {
-            crate::scene::loader::read(Path::new(&self.source.file)).map_err(|e| e.to_string())?
-        };
-        serde_json::from_str(&text).map_err(|e| format!("{}: {e}", self.source.file))
-    }
-
-    fn swap_scene(&mut self, scene: Arc<Scene>) {
-        if self.worker.is_some() {
-            self.worker = Some(Worker::start(Arc::clone(&scene)));
         }
-        self.scene = Some(scene);
-        self.features = None;
-        self.picture = None;
-        self.requested = None;
-        let (sample, selected, expanded) = (self.sample, self.selected, self.expanded.clone());
-        self.select(self.cursor);
-        self.sample = sample.min(self.trace.as_ref().map_or(1, |t| t.samples.len()) - 1);
-        self.expanded = expanded;
-        self.selected = selected.min(self.items().len().saturating_sub(1));
     }
+}
+
+/// A name for the edited scene beside the original: `whitted-edited.json`.
+pub fn default_name(source: &SceneSource) -> String {
+    let file = source.file.trim_end_matches(crate::scene::source::BUILT_IN);
+    let path = Path::new(if file.is_empty() {
+        "whitted.json"
+    } else {
+        file
+    });
+    let stem = path
+        .file_stem()
+        .map_or("scene".into(), |s| s.to_string_lossy());
+    path.with_file_name(format!("{stem}-edited.json"))
+        .display()
+        .to_string()
+}
+
+/// The scene file's JSON (the built-in scene's, for the built-in scene).
+fn read_json(source: &SceneSource) -> Result<Value, String> {
+    let text = if source.file == crate::scene::source::BUILT_IN {
+        crate::scene::loader::WHITTED.to_owned()
+    } else {
+        crate::scene::loader::read(Path::new(&source.file)).map_err(|e| e.to_string())?
+    };
+    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", source.file))
 }
 
 #[cfg(test)]

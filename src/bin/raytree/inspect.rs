@@ -75,20 +75,21 @@ pub fn run(args: &Args) -> Result<()> {
             let opened = reading::open(path, args.scene.scene.as_deref())?;
             let mut app = App::from_trace(opened.trace, opened.scene, true);
             if let Some(note) = opened.note {
-                app.message = note;
+                app.set_message(note);
             }
-            app.loaded_from = Some(path.display().to_string());
+            app.set_loaded_from(path.display().to_string());
             app
         }
     };
-    (app.truecolor, app.color_note) = match args.color {
+    let (truecolor, note) = match args.color {
         ColorMode::Auto => inspector::color_support(),
         ColorMode::Truecolor => (true, None),
         ColorMode::Palette => (false, None),
     };
-    if let (Some(note), true) = (&app.color_note, app.message.is_empty()) {
-        app.message = note.clone();
+    if let (Some(note), true) = (&note, app.message().is_empty()) {
+        app.set_message(note.clone());
     }
+    app.set_colors(truecolor, note);
     if !std::io::stdout().is_terminal() {
         bail!("raytree inspect needs a terminal (standard output is not one)");
     }

@@ -55,9 +55,10 @@ fn guided(loaded: lesson::Lesson) -> Result<()> {
     let [x, y] = loaded.script.pixel;
     let mut app = App::new(loaded.scene, loaded.source, Some((x, y)), true);
     app.follow(loaded.script).map_err(anyhow::Error::msg)?;
-    (app.truecolor, app.color_note) = inspector::color_support();
-    if let Some(note) = &app.color_note {
-        app.message = note.clone();
+    let (truecolor, note) = inspector::color_support();
+    if let Some(note) = &note {
+        app.set_message(note.clone());
     }
+    app.set_colors(truecolor, note);
     inspector::run(app).map_err(|e| anyhow!("terminal error: {e}"))
 }

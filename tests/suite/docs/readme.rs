@@ -73,8 +73,8 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
 fn commands_page_lists_the_inspectors_keys_as_the_help_does() {
     let root = env!("CARGO_MANIFEST_DIR");
     let readme = std::fs::read_to_string(format!("{root}/{COMMANDS_PAGE}")).unwrap();
-    for (key, what) in raytree::inspector::KEYS {
-        let row = format!("| {key} | {what} |");
+    for b in raytree::inspector::KEYS {
+        let row = format!("| {} | {} |", b.keys, b.what);
         assert!(readme.contains(&row), "{COMMANDS_PAGE} lacks the row {row}");
     }
 }

@@ -28,17 +28,18 @@ fn app_at(pixel: Option<(u32, u32)>) -> App {
         pixel,
         false,
     );
-    app.areas = Areas {
+    app.set_areas(Areas {
         image: Rect::new(1, 1, 80, 30),
         tree: Rect::new(83, 1, 76, 20),
         details: Rect::new(82, 22, 78, 24),
-    };
+    });
     app
 }
 
 fn screen(app: &mut App) -> String {
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
     app.render_picture_now();
+    raytree::inspector::tick(app, Rect::new(0, 0, 160, 48));
     terminal.draw(|f| draw(f, app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
     (0..buffer.area.height)
@@ -57,11 +58,11 @@ fn starts_on_the_deepest_tree_nearest_the_center() {
     let scene = raytree::scene::loader::whitted();
     let map = raytree::inspector::scan_features(&scene, 8);
     let deepest = map.cells.iter().map(|f| f.depth).max().unwrap();
-    let start = map.at(app.cursor.0, app.cursor.1);
+    let start = map.at(app.cursor().0, app.cursor().1);
     assert_eq!(start.depth, deepest, "the start pixel has the deepest tree");
     assert!(start.depth > 2, "and it is deeper than a floor pixel's");
     // The image's center is a plain floor pixel: not where the inspector starts.
-    assert_ne!(app.cursor, (320, 240));
+    assert_ne!(app.cursor(), (320, 240));
 }
 
 #[test]
@@ -70,14 +71,14 @@ fn arrows_move_the_cursor() {
     // Fitting 640×480 into 80 × 60 dots: 8 image pixels per dot, so one press moves 8 pixels.
     key(&mut app, KeyCode::Right);
     key(&mut app, KeyCode::Char('j'));
-    assert_eq!(app.cursor, (328, 248));
+    assert_eq!(app.cursor(), (328, 248));
     // Never past the edge.
     for _ in 0..100 {
         key(&mut app, KeyCode::Left);
     }
-    assert_eq!(app.cursor.0, 0);
+    assert_eq!(app.cursor().0, 0);
     assert_eq!(
-        app.trace.as_ref().unwrap().pixel.unwrap().x,
+        app.trace().unwrap().pixel.unwrap().x,
         0,
         "moving traces the new pixel"
     );
@@ -88,26 +89,26 @@ fn zoom_reaches_every_pixel() {
     let mut app = app_at(Some((416, 209)));
     assert_eq!(app.window().scale, 8.0);
     keys(&mut app, "++");
-    assert_eq!((app.zoom, app.window().scale), (2, 2.0));
+    assert_eq!((app.zoom(), app.window().scale), (2, 2.0));
     // Deepest zoom: four dots per pixel, so a press moves exactly one pixel.
     for _ in 0..10 {
         key(&mut app, KeyCode::Char('+'));
     }
-    assert_eq!((app.zoom, app.window().scale), (5, 0.25));
+    assert_eq!((app.zoom(), app.window().scale), (5, 0.25));
     key(&mut app, KeyCode::Right);
-    assert_eq!(app.cursor, (417, 209));
+    assert_eq!(app.cursor(), (417, 209));
     // The window follows the cursor and keeps it in view.
     let w = app.window();
     assert!(w.dot_of(417, 209).is_some());
     keys(&mut app, "------");
-    assert_eq!(app.zoom, 0);
+    assert_eq!(app.zoom(), 0);
 }
 
 #[test]
 fn tree_expands_collapses_and_goes_to_the_parent() {
     let mut app = app_at(Some((416, 209)));
     key(&mut app, KeyCode::Tab);
-    assert_eq!(app.focus, Focus::Tree);
+    assert_eq!(app.focus(), Focus::Tree);
     // The root is open: its two shadow rays, then its reflected and refracted rays.
     let items: Vec<Item> = app.items().into_iter().map(|(i, _)| i).collect();
     assert_eq!(
@@ -142,25 +143,25 @@ fn tree_expands_collapses_and_goes_to_the_parent() {
 #[test]
 fn steps_go_forward_and_back_and_select_their_ray() {
     let mut app = app_at(Some((416, 209)));
-    let steps = app.steps.clone();
+    let steps = app.steps().to_vec();
     assert!(steps.len() > 20);
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
     // Forward to the first step of another ray: the tree selects that ray.
     let first_child = steps.iter().position(|s| s.node != 0).unwrap();
     for _ in 0..first_child {
         key(&mut app, KeyCode::Char(' '));
     }
-    assert_eq!(app.step, Some(first_child));
+    assert_eq!(app.step(), Some(first_child));
     assert_eq!(app.selected_item().unwrap().node(), steps[first_child].node);
     key(&mut app, KeyCode::Char('p'));
     key(&mut app, KeyCode::Backspace);
-    assert_eq!(app.step, Some(first_child - 2));
+    assert_eq!(app.step(), Some(first_child - 2));
     // Back past the start stays at the first step.
     for _ in 0..100 {
         key(&mut app, KeyCode::Char('p'));
     }
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
 }
 
 #[test]
@@ -169,18 +170,21 @@ fn go_to_prompt_help_and_quit() {
     key(&mut app, KeyCode::Char('g'));
     keys(&mut app, "416,209");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.cursor, (416, 209));
+    assert_eq!(app.cursor(), (416, 209));
     key(&mut app, KeyCode::Char('g'));
     keys(&mut app, "999,1");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.cursor, (416, 209), "an outside pixel is refused");
-    assert!(app.message.contains("outside"), "{}", app.message);
+    assert_eq!(app.cursor(), (416, 209), "an outside pixel is refused");
+    assert!(app.message().contains("outside"), "{}", app.message());
     key(&mut app, KeyCode::Char('?'));
-    assert!(app.help);
+    assert!(app.help_shown());
     key(&mut app, KeyCode::Char('x'));
-    assert!(!app.help && !app.quit, "any key closes the help");
+    assert!(
+        !app.help_shown() && !app.quitting(),
+        "any key closes the help"
+    );
     key(&mut app, KeyCode::Char('q'));
-    assert!(app.quit);
+    assert!(app.quitting());
 }
 
 #[test]
@@ -193,13 +197,13 @@ fn a_click_selects_the_pixel_under_it() {
         row: 6,
         modifiers: KeyModifiers::NONE,
     });
-    assert_eq!(app.cursor, (84, 84));
+    assert_eq!(app.cursor(), (84, 84));
 }
 
 #[test]
 fn panes_show_the_tree_the_numbers_and_the_steps() {
     let mut app = app_at(Some((416, 209)));
-    app.areas = Areas::default();
+    app.set_areas(Areas::default());
     let text = screen(&mut app);
     for expected in [
         "ray tree",
@@ -230,8 +234,8 @@ fn panes_show_the_tree_the_numbers_and_the_steps() {
     // The help lists every key.
     key(&mut app, KeyCode::Char('?'));
     let text = screen(&mut app);
-    for (k, _) in raytree::inspector::KEYS {
-        assert!(text.contains(k), "help lacks {k}");
+    for b in raytree::inspector::KEYS {
+        assert!(text.contains(b.keys), "help lacks {}", b.keys);
     }
 }
 
@@ -239,11 +243,13 @@ fn panes_show_the_tree_the_numbers_and_the_steps() {
 fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
     let mut app = app_at(Some((416, 209)));
     let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
-    terminal.draw(|f| draw(f, &mut app)).unwrap();
+    raytree::inspector::tick(&mut app, Rect::new(0, 0, 160, 48));
+    terminal.draw(|f| draw(f, &app)).unwrap();
     app.render_picture_now();
-    terminal.draw(|f| draw(f, &mut app)).unwrap();
+    raytree::inspector::tick(&mut app, Rect::new(0, 0, 160, 48));
+    terminal.draw(|f| draw(f, &app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
-    let image = app.areas.image;
+    let image = app.areas().image;
     let window = app.window();
     // Every dot shows the 8-bit color the renderer gives its pixel.
     let scene = raytree::scene::loader::whitted();

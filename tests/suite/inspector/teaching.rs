@@ -8,6 +8,7 @@ use std::path::Path;
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
 use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
 use raytree::inspector::{App, Item, draw};
 use raytree::scene::source::SceneSource;
 use raytree::tree::ray_tree::Branch;
@@ -37,10 +38,12 @@ fn whitted_at(pixel: (u32, u32)) -> App {
 fn screen(app: &mut App, w: u16, h: u16) -> String {
     let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
     // The time to trace differs from run to run: hold it still for snapshots.
-    app.trace_time = std::time::Duration::ZERO;
+    app.set_trace_time(std::time::Duration::ZERO);
     // Lay out once so the picture is rendered for the pane's real size.
+    raytree::inspector::tick(app, Rect::new(0, 0, w, h));
     terminal.draw(|f| draw(f, app)).unwrap();
     app.render_picture_now();
+    raytree::inspector::tick(app, Rect::new(0, 0, w, h));
     terminal.draw(|f| draw(f, app)).unwrap();
     let buffer = terminal.backend().buffer().clone();
     (0..buffer.area.height)
@@ -68,8 +71,8 @@ fn has_tir(x: u32, y: u32) -> bool {
 #[test]
 fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
     let mut app = whitted_at((416, 209));
-    let steps = app.steps.clone();
-    let tree = app.trace.as_ref().unwrap().samples[0].tree.clone();
+    let steps = app.steps().to_vec();
+    let tree = app.trace().unwrap().samples[0].tree.clone();
     // Independently of the inspector: the step at which each ray is spawned
     // and the step at which its color is returned.
     let spawned_at = |n: usize| {
@@ -88,7 +91,7 @@ fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
     key(&mut app, KeyCode::Char('e')); // every ray open, so every spawned ray is listed
     for s in 0..steps.len() {
         app.go_to_step(s);
-        app.expanded = (0..tree.nodes.len()).collect();
+        app.expand_all();
         let listed: Vec<usize> = app
             .items()
             .iter()
@@ -121,9 +124,9 @@ fn stepping_shows_exactly_the_rays_and_colors_computed_so_far() {
 #[test]
 fn the_numbers_pane_never_gives_the_color_away_before_it_is_computed() {
     let mut app = whitted_at((416, 209));
-    let color = raytree::views::numbers::color(app.trace.as_ref().unwrap().color);
+    let color = raytree::views::numbers::color(app.trace().unwrap().color);
     let combine = app
-        .steps
+        .steps()
         .iter()
         .position(|s| s.node == 0 && s.kind == StepKind::Combine)
         .unwrap();
@@ -151,7 +154,7 @@ fn find_goes_to_the_first_total_internal_reflection_in_reading_order() {
     let mut app = whitted_at((0, 0));
     assert!(!has_tir(0, 0));
     key(&mut app, KeyCode::Char('f'));
-    let found = app.cursor;
+    let found = app.cursor();
     assert!(
         has_tir(found.0, found.1),
         "{found:?} has a total internal reflection"
@@ -166,16 +169,16 @@ fn find_goes_to_the_first_total_internal_reflection_in_reading_order() {
     // F moves on to the next kind of feature; each find says what it found.
     key(&mut app, KeyCode::Char('F'));
     assert!(
-        app.message.contains("blocked shadow ray"),
+        app.message().contains("blocked shadow ray"),
         "{}",
-        app.message
+        app.message()
     );
 }
 
 #[test]
 fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
     let mut app = whitted_at((416, 209));
-    let original = app.trace.clone().unwrap();
+    let original = app.trace().cloned().unwrap();
     let nodes = &original.samples[0].tree.nodes;
     let refracted = nodes[0].refracted.as_ref().unwrap().node.unwrap();
     let bent = nodes[refracted].direction;
@@ -188,8 +191,8 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
     key(&mut app, KeyCode::Char('m'));
     keys(&mut app, "ior=1.0");
     key(&mut app, KeyCode::Enter);
-    assert_eq!(app.edits, vec!["glass: ior=1.0".to_owned()]);
-    let edited = app.trace.clone().unwrap();
+    assert_eq!(app.edits(), vec!["glass: ior=1.0".to_owned()]);
+    let edited = app.trace().cloned().unwrap();
     let nodes = &edited.samples[0].tree.nodes;
     let refracted = nodes[0].refracted.as_ref().unwrap().node.unwrap();
     let straight = nodes[refracted].direction;
@@ -205,39 +208,35 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
 
     key(&mut app, KeyCode::Char('u'));
     assert_eq!(
-        app.trace.as_ref().unwrap(),
+        app.trace().unwrap(),
         &original,
         "undo gives the tree as loaded, bit for bit"
     );
-    assert!(app.edits.is_empty());
+    assert!(app.edits().is_empty());
 }
 
 #[test]
 fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
     let mut app = whitted_at((416, 209));
-    let original = app.trace.clone().unwrap();
+    let original = app.trace().cloned().unwrap();
     for typed in ["colour=1", "ior=-2", "ior"] {
         key(&mut app, KeyCode::Char('m'));
         keys(&mut app, typed);
         key(&mut app, KeyCode::Enter);
         assert!(
-            !app.message.is_empty() && !app.message.contains('\n'),
+            !app.message().is_empty() && !app.message().contains('\n'),
             "{typed}: {:?}",
-            app.message
+            app.message()
         );
-        assert_eq!(
-            app.trace.as_ref().unwrap(),
-            &original,
-            "{typed} changed nothing"
-        );
+        assert_eq!(app.trace().unwrap(), &original, "{typed} changed nothing");
     }
 }
 
 #[test]
 fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
-    let steps = whitted_at((416, 209)).steps;
+    let steps = whitted_at((416, 209)).steps().to_vec();
     let app = whitted_at((416, 209));
-    let nodes = &app.trace.as_ref().unwrap().samples[0].tree.nodes;
+    let nodes = &app.trace().unwrap().samples[0].tree.nodes;
     let tir = steps
         .iter()
         .position(|s| {
@@ -260,21 +259,21 @@ fn a_guided_step_through_moves_between_its_stops_and_quotes_the_trace() {
     .unwrap();
     let mut app = whitted_at((0, 0));
     app.follow(script).unwrap();
-    assert_eq!((app.cursor, app.step), ((416, 209), Some(0)));
+    assert_eq!((app.cursor(), app.step()), ((416, 209), Some(0)));
     let first = screen(&mut app, 80, 24);
     assert!(first.contains("TIR · stop 1/2: c = 416"), "{first}");
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(tir));
+    assert_eq!(app.step(), Some(tir));
     let second = screen(&mut app, 80, 24);
     assert!(second.contains("stop 2/2: θ₁ = "), "{second}");
     assert!(second.contains("total internal reflection"), "{second}");
     key(&mut app, KeyCode::Char('n'));
-    assert_eq!(app.step, Some(tir), "the last stop stays");
+    assert_eq!(app.step(), Some(tir), "the last stop stays");
     key(&mut app, KeyCode::Char('p'));
-    assert_eq!(app.step, Some(0));
+    assert_eq!(app.step(), Some(0));
     // ] and [ still step one algorithm step at a time between the stops.
     key(&mut app, KeyCode::Char(']'));
-    assert_eq!(app.step, Some(1));
+    assert_eq!(app.step(), Some(1));
 }
 
 /// The screens at the two sizes the issue names, compared with committed
@@ -285,7 +284,7 @@ fn screens_at_80x24_and_160x48_match_their_snapshots() {
         let mut app = whitted_at((416, 209));
         // Step to the total internal reflection's color sum, the deepest point of the story.
         let combine = app
-            .steps
+            .steps()
             .iter()
             .position(|s| s.node == 0 && s.kind == StepKind::Combine)
             .unwrap();
