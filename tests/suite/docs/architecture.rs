@@ -481,3 +481,30 @@ fn the_circle_finder_resolves_paths() {
         ]
     );
 }
+
+#[test]
+fn the_map_names_every_folder_of_src() {
+    let map =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("ARCHITECTURE.md"))
+            .expect("ARCHITECTURE.md, the map of the house");
+    let mut folders: Vec<String> = library_files()
+        .iter()
+        .chain(&["src/bin/raytree/main.rs".to_owned()])
+        .filter_map(|f| {
+            f.strip_prefix("src/")?
+                .rsplit_once('/')
+                .map(|(d, _)| format!("{d}/"))
+        })
+        .collect();
+    folders.sort();
+    folders.dedup();
+    assert!(folders.len() >= 12, "{folders:?}");
+    let missing: Vec<&String> = folders
+        .iter()
+        .filter(|d| !map.contains(&format!("`{d}`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "ARCHITECTURE.md does not name {missing:?}"
+    );
+}
