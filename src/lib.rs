@@ -2,9 +2,11 @@
 //!
 //! Data flows one way, and the folders follow it: a scene file is read into a
 //! [`scene`], the [`trace`] folder runs the lecture's recursive `raytrace` over it
-//! (rendering every pixel, or recording one pixel's rays into a [`tree`]), and the
-//! [`views`] and the [`inspector`] show that tree; [`io`] writes the images.
-//! Underneath, [`math`], [`geometry`] and [`shading`] hold the lecture's formulas.
+//! (rendering every pixel in the one pixel loop, or recording one pixel's rays
+//! into a [`tree`]), the [`views`] show that tree (drawing with [`figure`]), the
+//! [`course`] teaches with it and the [`inspector`] walks it; [`io`] writes the
+//! images. Underneath, [`math`], [`geometry`] and [`shading`] hold the lecture's
+//! formulas. `ARCHITECTURE.md` maps every folder.
 //!
 //! Read in the lecture's order (`shared/lecture-raytracing.md`):
 //! - the camera and the ray through a pixel: [`scene::camera`], [`math::ray`];
@@ -15,6 +17,9 @@
 //! - reflected and refracted rays, Snell's law: [`shading::optics`];
 //! - the recursion that ties them together: [`trace::tracer`];
 //! - efficiency, avoiding intersection tests: [`geometry::bvh`], [`trace::accelerator`].
+//!
+//! The types a program drives are re-exported here: load a [`Scene`], [`render`]
+//! it into an [`Image`], or [`record`] one pixel's [`RayTree`].
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
@@ -35,3 +40,11 @@ pub mod inspector; // the terminal inspector
 pub mod methods; // the selectable methods: the lecture's and the robust ones
 pub mod io; // images and output files
 pub mod figure; // the drawing toolkit: canvas, pens, text, labels, legend
+
+// The few types and functions a program drives.
+pub use io::image::Image;
+pub use scene::Scene;
+pub use trace::progress::Progress;
+pub use trace::render::render;
+pub use tree::ray_tree::RayTree;
+pub use tree::record;

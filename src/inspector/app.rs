@@ -202,7 +202,7 @@ impl App {
         self.prompt.as_ref()
     }
 
-    /// Where the panes were last laid out (by [`App::tick`]).
+    /// Where the panes were last laid out (by [`tick`](crate::inspector::tick)).
     pub fn areas(&self) -> Areas {
         self.screen.areas()
     }

@@ -1,7 +1,7 @@
 //! `raytree inspect`: pick a pixel, walk its ray tree step by step, in the terminal.
 //!
 //! [`App`] holds the state in owned parts and handles keys without a terminal
-//! (tested directly); [`App::tick`] makes the changes a frame needs and
+//! (tested directly); [`tick`] makes the changes a frame needs and
 //! [`draw`] draws it, only reading; this module owns the terminal: raw mode, the
 //! alternate screen and mouse capture are switched on here and restored on every
 //! way out (quit, error, panic, SIGINT).

@@ -45,7 +45,7 @@ pub const GLYPHS: &[(&str, &str)] = &[
 ];
 
 /// Draws the whole inspector: a pure function of the state (the update step,
-/// [`App::tick`], changes what must change before a frame).
+/// [`tick`](crate::inspector::tick), changes what must change before a frame).
 pub fn draw(frame: &mut Frame, app: &App) {
     let tc = app.truecolor();
     let area = frame.area();

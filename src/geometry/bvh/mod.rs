@@ -3,7 +3,7 @@
 //! skips everything inside it, so a ray costs about `log n` box tests instead of
 //! `n` object tests.
 //!
-//! Each node has up to [`WIDTH`] children (Wald et al., "Getting Rid of Packets",
+//! Each node has up to [`node::WIDTH`] children (Wald et al., "Getting Rid of Packets",
 //! 2008; Embree's BVH4): one visit tests four boxes at once with SIMD, and the
 //! tree is half as deep as a binary one. It is built with the binned surface
 //! area heuristic, on all cores ([`build`]). Traversal
@@ -15,7 +15,7 @@
 //! is made robust in the manner of Ize ("Robust BVH Ray Traversal", JCGT 2013):
 //! every rounding of the single-precision test is bounded, and the interval is
 //! widened by that bound, so a ray that meets a box in exact arithmetic is never
-//! culled ([`RayBox4`]).
+//! culled ([`traverse::RayBox4`]).
 
 pub mod node; // the node layout: four single-precision boxes, packed children
 pub mod build; // building it: the binned surface area heuristic, on all cores
@@ -66,7 +66,7 @@ impl Bvh {
         self.nodes.len() * std::mem::size_of::<Node>() + self.order.len() * 4
     }
 
-    /// Nodes in the tree (each with up to [`WIDTH`] boxes).
+    /// Nodes in the tree (each with up to [`node::WIDTH`] boxes).
     pub fn node_count(&self) -> usize {
         self.nodes.len()
     }
