@@ -6,6 +6,7 @@
 use glam::DVec2;
 
 use crate::figure::pen::{Pen, Rgb, palette};
+use crate::figure::svg::{Paint as SvgPaint, Svg};
 use tiny_skia::{
     Color, FillRule, Mask, Paint, PathBuilder, Pixmap, Rect, Stroke, StrokeDash, Transform,
 };
@@ -28,6 +29,8 @@ pub struct Figure {
     clip: Mask,
     scale: f64,
     offset: DVec2,
+    /// The same drawing as SVG, when asked for ([`Figure::with_svg`]).
+    pub(super) svg: Option<Svg>,
 }
 
 impl Figure {
@@ -55,7 +58,26 @@ impl Figure {
             clip,
             scale: 1.0,
             offset: DVec2::ZERO,
+            svg: None,
         })
+    }
+
+    /// The same figure, also recording every shape as SVG (see [`Figure::svg`]).
+    pub fn with_svg(mut self) -> Self {
+        let f = self.frame;
+        let (w, h) = (self.pixmap.width(), self.pixmap.height());
+        self.svg = Some(Svg::new(
+            w,
+            h,
+            palette::PAPER,
+            [f.left(), f.top(), f.width(), f.height()],
+        ));
+        self
+    }
+
+    /// The figure as an SVG document, if it was made [`Figure::with_svg`].
+    pub fn svg(&self) -> Option<String> {
+        self.svg.as_ref().map(Svg::document)
     }
 
     /// The plot frame, in pixels.
@@ -113,6 +135,14 @@ impl Figure {
     }
 
     pub(super) fn stroke_px(&mut self, points: &[DVec2], pen: Pen, close: bool) {
+        if let Some(svg) = &mut self.svg {
+            let paint = SvgPaint {
+                fill: None,
+                stroke: Some(pen),
+                clip: true,
+            };
+            svg.path(points, close, paint);
+        }
         let Some(path) = polyline(points, close) else {
             return;
         };
@@ -134,6 +164,14 @@ impl Figure {
     }
 
     fn fill_px(&mut self, points: &[DVec2], fill: Rgb, alpha: u8) {
+        if let Some(svg) = &mut self.svg {
+            let paint = SvgPaint {
+                fill: Some((fill, alpha)),
+                stroke: None,
+                clip: true,
+            };
+            svg.path(points, true, paint);
+        }
         if let Some(path) = polyline(points, true) {
             self.pixmap.fill_path(
                 &path,
@@ -243,6 +281,14 @@ impl Figure {
     /// A filled dot of `radius` pixels at `p`, with an outline.
     pub fn dot(&mut self, p: DVec2, radius: f32, fill: Rgb, outline: Option<Rgb>) {
         let c = self.to_px(p);
+        if let Some(svg) = &mut self.svg {
+            let paint = SvgPaint {
+                fill: Some((fill, 255)),
+                stroke: outline.map(|o| Pen::solid(o, 1.2)),
+                clip: true,
+            };
+            svg.circle(c, radius, paint);
+        }
         if let Some(path) = PathBuilder::from_circle(c.x as f32, c.y as f32, radius) {
             self.pixmap.fill_path(
                 &path,
@@ -285,6 +331,24 @@ impl Figure {
     /// A thin border around the frame.
     pub fn frame_border(&mut self) {
         let f = self.frame;
+        if let Some(svg) = &mut self.svg {
+            let corners = [
+                (f.left(), f.top()),
+                (f.right(), f.top()),
+                (f.right(), f.bottom()),
+                (f.left(), f.bottom()),
+            ];
+            let points: Vec<DVec2> = corners
+                .iter()
+                .map(|&(x, y)| DVec2::new(f64::from(x), f64::from(y)))
+                .collect();
+            let paint = SvgPaint {
+                fill: None,
+                stroke: Some(Pen::solid([180, 180, 180], 1.0)),
+                clip: false,
+            };
+            svg.path(&points, true, paint);
+        }
         let path = PathBuilder::from_rect(f);
         self.pixmap.stroke_path(
             &path,
@@ -306,6 +370,9 @@ impl Figure {
     /// Copies `panel` onto this page with its top-left corner at pixel `(x, y)`:
     /// how a figure of several panels is put together.
     pub fn paste(&mut self, panel: &Figure, x: i32, y: i32) {
+        if let (Some(svg), Some(inner)) = (&mut self.svg, &panel.svg) {
+            svg.paste(inner, x, y);
+        }
         self.pixmap.draw_pixmap(
             x,
             y,
@@ -320,6 +387,9 @@ impl Figure {
     /// onto the page with its top-left corner at pixel `(x, y)`: a rendered
     /// image inside a figure, pixel for pixel.
     pub fn image(&mut self, x: u32, y: u32, width: u32, rgb: &[u8]) {
+        if let Some(svg) = &mut self.svg {
+            svg.image(x, y, width, rgb);
+        }
         let (w, h) = (self.pixmap.width(), self.pixmap.height());
         let data = self.pixmap.data_mut();
         for (i, p) in rgb.chunks_exact(3).enumerate() {

@@ -10,3 +10,4 @@ pub mod text; // text in the embedded font: widths, wrapping, captions
 pub mod clip; // 2D clipping to a frame
 pub mod labels; // labels placed so that none collides
 pub mod legend; // a figure's legend box
+pub mod svg; // the same figure as SVG, shape for shape

@@ -47,6 +47,9 @@ impl Figure {
             Anchor::Center => at.x as f32 - width / 2.0,
             Anchor::Right => at.x as f32 - width,
         };
+        if let Some(svg) = &mut self.svg {
+            svg.text(DVec2::new(f64::from(x0), at.y), text, size, color, clip);
+        }
         for (halo, c) in [(true, palette::PAPER), (false, color)] {
             let mut x = x0;
             for ch in text.chars() {
