@@ -9,8 +9,8 @@
 
 use glam::DVec2;
 
-use crate::figure::canvas::Figure;
-use crate::figure::pen::Rgb;
+use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::pen::{Pen, Rgb, palette};
 
 /// An axis-aligned box in pixels (y down).
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -101,6 +101,35 @@ pub struct Placed {
     pub anchor: DVec2,
     /// A line from the box to the anchor, when the label had to move away.
     pub leader: Option<[DVec2; 2]>,
+}
+
+/// The gray of a leader line from a moved label to what it names.
+const LEADER: Rgb = [120, 120, 120];
+
+impl Placed {
+    /// Draws the label where it was placed: its leader line, its box when
+    /// boxed, its text; line widths times `k` (a figure's size).
+    pub fn draw(&self, fig: &mut Figure, k: f32) {
+        if let Some([a, b]) = self.leader {
+            fig.line_px(a, b, Pen::solid(LEADER, 0.9).scaled(k));
+        }
+        if self.label.boxed {
+            fig.rect_px(
+                self.rect.min,
+                self.rect.max,
+                Some((palette::PAPER, 240)),
+                Some(Pen::solid(self.label.color, 1.2).scaled(k)),
+            );
+        }
+        fig.text_px(
+            self.baseline,
+            &self.label.text,
+            self.label.size,
+            self.label.color,
+            Anchor::Left,
+            false,
+        );
+    }
 }
 
 /// The box a label of `text` takes with its baseline start at `at`.

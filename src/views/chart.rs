@@ -230,17 +230,7 @@ fn draw_points(
     };
     let placed = place(labels.collect(), &avoid, &lines, frame);
     for placed in &placed {
-        if let Some([a, b]) = placed.leader {
-            fig.line_px(a, b, Pen::solid([120, 120, 120], 0.9));
-        }
-        fig.text_px(
-            placed.baseline,
-            &placed.label.text,
-            placed.label.size,
-            placed.label.color,
-            Anchor::Left,
-            false,
-        );
+        placed.draw(fig, 1.0);
     }
     placed
 }

@@ -70,17 +70,7 @@ fn place(fig: &mut Figure, labels: Vec<Label>, lines: &[[DVec2; 2]]) {
     // Every line counts against a spot twice over, so a label prefers a clear one.
     let doubled: Vec<[DVec2; 2]> = px.iter().chain(px.iter()).copied().collect();
     for p in labels::place(labels, &[], &doubled, frame) {
-        if let Some([a, b]) = p.leader {
-            fig.line_px(a, b, Pen::solid([120, 120, 120], 0.9));
-        }
-        fig.text_px(
-            p.baseline,
-            &p.label.text,
-            p.label.size,
-            p.label.color,
-            Anchor::Left,
-            false,
-        );
+        p.draw(fig, 1.0);
     }
 }
 

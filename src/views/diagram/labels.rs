@@ -4,11 +4,11 @@
 
 use glam::DVec2;
 
-use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::canvas::Figure;
 use crate::figure::clip::clip_line;
 use crate::figure::labels::{Label, Placed, PxRect, Target};
 use crate::figure::pen::Rgb;
-use crate::figure::pen::{Pen, palette};
+use crate::figure::pen::palette;
 use crate::scene::Scene;
 use crate::views::diagram::layout::Layout;
 use crate::views::diagram::options::{Labels, Options};
@@ -289,23 +289,5 @@ pub(super) fn lines_px(fig: &Figure, lay: &Layout, scale: &Scale) -> Vec<([DVec2
 }
 
 pub(super) fn draw_label(fig: &mut Figure, p: &Placed, scale: &Scale) {
-    if let Some([a, b]) = p.leader {
-        fig.line_px(a, b, scale.pen(Pen::solid([120, 120, 120], 0.9)));
-    }
-    if p.label.boxed {
-        fig.rect_px(
-            p.rect.min,
-            p.rect.max,
-            Some((palette::PAPER, 240)),
-            Some(scale.pen(Pen::solid(p.label.color, 1.2))),
-        );
-    }
-    fig.text_px(
-        p.baseline,
-        &p.label.text,
-        p.label.size,
-        p.label.color,
-        Anchor::Left,
-        false,
-    );
+    p.draw(fig, scale.k as f32);
 }

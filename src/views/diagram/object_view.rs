@@ -192,17 +192,7 @@ fn own_space(
     };
     lines.extend((0..48).map(|k| ([rim(k), rim(k + 1)], 2)));
     for p in labels::place_weighted(labels, &dots, &lines, frame) {
-        if let Some([a, b]) = p.leader {
-            fig.line_px(a, b, Pen::solid([120, 120, 120], 0.9));
-        }
-        fig.text_px(
-            p.baseline,
-            &p.label.text,
-            p.label.size,
-            p.label.color,
-            Anchor::Left,
-            false,
-        );
+        p.draw(&mut fig, 1.0);
     }
     let title = fig.to_px(DVec2::new(vlo.x, vhi.y)) + DVec2::new(4.0, -f64::from(sz) * 0.6);
     fig.text_px(
