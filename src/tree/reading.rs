@@ -27,6 +27,17 @@ pub fn read(path: &Path) -> anyhow::Result<TraceDocument> {
 /// position (`L:C: …`) for a syntax error, else ` field: …`, to follow the
 /// file's name.
 pub fn parse(text: &str) -> Result<TraceDocument, String> {
+    // The format and version first, read leniently: another version's fields
+    // differ, and its reader wants to hear which version it has, not which
+    // field this version lacks.
+    if let Ok(Header { format, version }) = serde_json::from_str::<Header>(text)
+        && (format != FORMAT || version != u64::from(VERSION))
+    {
+        return Err(format!(
+            " a {} version {version} document; this raytree reads {FORMAT} version {VERSION}",
+            format.escape_debug(),
+        ));
+    }
     let trace: TraceDocument = serde_json::from_str(text).map_err(|e| {
         format!(
             "{}:{}: not a raytree trace: {}",
@@ -35,15 +46,15 @@ pub fn parse(text: &str) -> Result<TraceDocument, String> {
             printable(without_position(&e.to_string()))
         )
     })?;
-    if trace.format != FORMAT || trace.version != VERSION {
-        return Err(format!(
-            " a {} version {} document; this raytree reads {FORMAT} version {VERSION}",
-            trace.format.escape_debug(),
-            trace.version,
-        ));
-    }
     trace_check::structure(&trace).map_err(|e| format!(" {e}"))?;
     Ok(trace)
+}
+
+/// What every version of the document starts with.
+#[derive(serde::Deserialize)]
+struct Header {
+    format: String,
+    version: u64,
 }
 
 /// A saved trace with the scene it was made from, when that is at hand.

@@ -113,6 +113,20 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             broken(|v| v["version"] = json!(1)),
             "a raytree-trace version 1 document; this raytree reads raytree-trace version",
         ),
+        (
+            // An older raytree's trace has other fields too: the version is
+            // named before any field is (it once said "expected struct RootRecord").
+            "old-version-other-fields",
+            broken(|v| {
+                v["version"] = json!(3);
+                v["samples"][0]["tree"]["nodes"][0]["hit"]
+                    .as_object_mut()
+                    .unwrap()
+                    .remove("object_normal");
+                v["retired_field"] = json!(true);
+            }),
+            "a raytree-trace version 3 document; this raytree reads raytree-trace version",
+        ),
     ];
     let scene = whitted_text();
     for (name, text, expected) in &cases {
