@@ -73,6 +73,11 @@ pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
             continue;
         }
         let name = item.file_name().to_string_lossy().into_owned();
+        // Only a folder named as a lesson (two digits first) is one; a
+        // teacher's drafts or notes beside the lessons are passed over.
+        if !name.starts_with(|c: char| c.is_ascii_digit()) {
+            continue;
+        }
         let number = number_of(&name).ok_or_else(|| {
             format!(
                 "{at}/{name}: a lesson folder is NN-topic (two digits, a dash, lowercase words)"

@@ -182,3 +182,30 @@ fn a_broken_lesson_is_one_line_naming_file_and_line() {
     );
     assert_eq!(err.lines().count(), 1, "{err}");
 }
+
+/// A folder that is not a lesson (a teacher's `drafts/`, notes) is passed
+/// over, so it breaks no lesson; one named as a lesson but misnumbered is
+/// still refused, naming it.
+#[test]
+fn a_folder_that_is_no_lesson_is_passed_over() {
+    let dir = tempfile::tempdir().unwrap();
+    let lesson = dir.path().join("07-light");
+    std::fs::create_dir(&lesson).unwrap();
+    std::fs::write(
+        lesson.join("lesson.toml"),
+        "title = \"Light\"\nsummary = \"the light\"\n",
+    )
+    .unwrap();
+    std::fs::create_dir(dir.path().join("drafts")).unwrap();
+    std::fs::create_dir(dir.path().join(".cache")).unwrap();
+    let dir_arg = dir.path().display().to_string();
+    let (ok, list, err) = raytree(&["lesson", "--lessons", &dir_arg]);
+    assert!(ok, "{err}");
+    assert!(list.contains("Light") && !list.contains("drafts"), "{list}");
+    std::fs::create_dir(dir.path().join("8-shadows")).unwrap();
+    let (ok, _, err) = raytree(&["lesson", "--lessons", &dir_arg]);
+    assert!(
+        !ok && err.contains("8-shadows: a lesson folder is NN-topic"),
+        "{err}"
+    );
+}
