@@ -85,7 +85,7 @@ pub fn run(args: &Args) -> Result<()> {
         .map_err(|_| anyhow!("not enough memory for a {}×{} image", s.width, s.height))?;
     let summary = report(&traced, &rays, args.seed, pupil, (s.width, s.height));
     if !args.quiet {
-        print!("{summary}");
+        output::print(summary)?;
     }
     let sparse = sparse_image(&traced, s.width, s.height, 0);
     let figure = if args.no_key {
@@ -130,7 +130,7 @@ pub fn run(args: &Args) -> Result<()> {
     };
     pending.commit(&figure.png())?;
     if !args.quiet {
-        eprintln!("wrote {}", path.display());
+        output::note(&format!("wrote {}", path.display()))?;
     }
     Ok(())
 }

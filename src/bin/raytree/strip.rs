@@ -121,7 +121,7 @@ pub fn run(args: &Args) -> Result<()> {
             } else {
                 ""
             };
-            println!("{label}: {change}{from}");
+            output::print(format!("{label}: {change}{from}\n"))?;
         }
         frames.push(Frame { rgb, label, change });
         previous = Some(now);
@@ -145,11 +145,11 @@ pub fn run(args: &Args) -> Result<()> {
         .context("the strip is too large to draw")?;
     pending.commit(&figure.png())?;
     if !args.quiet {
-        eprintln!(
+        output::note(&format!(
             "wrote {} ({} frames of {width}×{height})",
             out.display(),
             frames.len()
-        );
+        ))?;
     }
     Ok(())
 }
