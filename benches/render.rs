@@ -69,11 +69,11 @@ fn whitted_640x480(bencher: Bencher) {
     scene.settings.height = 480;
     scene.settings.spp = 1;
     scene.settings.max_depth = 8;
-    let hidden = ProgressBar::hidden();
-    let (_, rays) = render::render_counting(&scene, &hidden).unwrap();
+    let quiet = raytree::Progress::QUIET;
+    let (_, rays) = render::render_counting(&scene, &quiet).unwrap();
     bencher
         .counter(ItemsCount::new(rays.total()))
-        .bench(|| render::render(&scene, &hidden).unwrap());
+        .bench(|| render::render(&scene, &quiet).unwrap());
 }
 
 /// Recording a whole pixel's ray tree (`raytree trace`, the inspector): the mean

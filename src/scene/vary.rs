@@ -4,7 +4,8 @@
 //! `render.max_depth`, `lights[0].position[1]`; a render setting may drop its
 //! `render.`), set in the file's JSON, and the whole scene is read again by
 //! [`crate::scene::loader`], so a varied value is checked exactly as the same
-//! value written in the file would be.
+//! value written in the file would be. The frames of a strip share one size:
+//! the scene's shape, 320 pixels wide unless a width or a height is given.
 
 use serde_json::Value as Json;
 
@@ -15,6 +16,9 @@ use crate::scene::settings::RenderSettings;
 
 /// The most frames a filmstrip takes.
 pub const MAX_VALUES: usize = 12;
+
+/// Frames are this wide unless a width or a height is given.
+pub const FRAME_WIDTH: u32 = 320;
 
 /// A field and the values it takes in turn.
 #[derive(Clone, Debug, PartialEq)]
@@ -66,6 +70,78 @@ pub fn parse(spec: &str) -> Result<Variation, String> {
         path: path.to_owned(),
         values,
     })
+}
+
+impl Variation {
+    /// The path as a word for a file name: `lights[0].position[1]` →
+    /// `lights-0-position-1`.
+    pub fn file_word(&self) -> String {
+        self.path
+            .split(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .filter(|w| !w.is_empty())
+            .collect::<Vec<_>>()
+            .join("-")
+    }
+
+    /// Refuses a field the frames cannot differ in (their size) and one the
+    /// settings given (`overrides`, the command line's) already set.
+    pub fn check(&self, overrides: &Overrides) -> Result<(), String> {
+        let path = &self.path;
+        if ["width", "height", "render.width", "render.height"].contains(&path.as_str()) {
+            return Err(format!(
+                "--vary {path}: the frames of a strip share one size; give --width and --height instead"
+            ));
+        }
+        let setting = path.strip_prefix("render.").unwrap_or(path);
+        let given =
+            serde_json::to_value(overrides).map_err(|e| format!("the settings given: {e}"))?;
+        if given.get(setting).is_some() {
+            return Err(format!(
+                "--vary {path} and --{} both set {setting}: give one",
+                setting.replace('_', "-")
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// The frames' scenes: the scene of `text` (file `file`, whose own settings
+/// are `own`) once per value of `variation`, with `overrides` applied and
+/// every frame one size ([`frame_size`]). Errors are one line, as
+/// [`Variation::check`] and [`scene_with`] give them.
+pub fn frames(
+    text: &str,
+    file: &str,
+    own: &RenderSettings,
+    overrides: &Overrides,
+    variation: &Variation,
+) -> Result<Vec<Scene>, String> {
+    variation.check(overrides)?;
+    let overrides = frame_size(own, overrides);
+    let path = &variation.path;
+    variation
+        .values
+        .iter()
+        .map(|&v| scene_with(text, file, &overrides, path, v))
+        .collect()
+}
+
+/// `overrides` with both sides of the frames given, keeping the scene's shape
+/// (`own`): one side given, the other follows; none, [`FRAME_WIDTH`] wide.
+pub fn frame_size(own: &RenderSettings, overrides: &Overrides) -> Overrides {
+    let mut out = *overrides;
+    let aspect = f64::from(own.height) / f64::from(own.width);
+    let side = |v: f64| v.round().max(1.0) as u32;
+    match (out.width, out.height) {
+        (None, None) => {
+            out.width = Some(FRAME_WIDTH);
+            out.height = Some(side(f64::from(FRAME_WIDTH) * aspect));
+        }
+        (Some(w), None) => out.height = Some(side(f64::from(w) * aspect)),
+        (None, Some(h)) => out.width = Some(side(f64::from(h) / aspect)),
+        (Some(_), Some(_)) => {}
+    }
+    out
 }
 
 /// The scene of `text` (file `file`) with `overrides` applied to its render
@@ -291,6 +367,63 @@ mod tests {
         };
         let s = scene_with(WHITTED, "w.json", &o, "render.max_depth", 2.0).unwrap();
         assert_eq!((s.settings.width, s.settings.max_depth), (40, 2));
+    }
+
+    #[test]
+    fn frames_share_one_size_in_the_scene_s_shape() {
+        let own = loader::parse(WHITTED, "whitted.json").unwrap().settings;
+        let v = parse("max_depth=1..3").unwrap();
+        let size = |o: &Overrides| {
+            let scenes = frames(WHITTED, "whitted.json", &own, o, &v).unwrap();
+            assert_eq!(scenes.len(), 3);
+            let sizes: Vec<(u32, u32)> = scenes
+                .iter()
+                .map(|s| (s.settings.width, s.settings.height))
+                .collect();
+            assert!(sizes.iter().all(|&s| s == sizes[0]), "{sizes:?}");
+            let depths: Vec<u32> = scenes.iter().map(|s| s.settings.max_depth).collect();
+            assert_eq!(depths, [1, 2, 3]);
+            (scenes[0].settings.width, scenes[0].settings.height)
+        };
+        let aspect =
+            |w: u32| (f64::from(w) * f64::from(own.height) / f64::from(own.width)).round() as u32;
+        assert_eq!(
+            size(&Overrides::default()),
+            (FRAME_WIDTH, aspect(FRAME_WIDTH))
+        );
+        let given = |width, height| Overrides {
+            width,
+            height,
+            ..Overrides::default()
+        };
+        assert_eq!(size(&given(Some(64), None)), (64, aspect(64)));
+        assert_eq!(size(&given(Some(64), Some(10))), (64, 10));
+        let (w, h) = size(&given(None, Some(48)));
+        assert_eq!((aspect(w).abs_diff(48) <= 1, h), (true, 48));
+    }
+
+    #[test]
+    fn a_strip_varies_neither_its_size_nor_a_setting_given() {
+        let own = RenderSettings::default();
+        let refused = |spec: &str, o: &Overrides| {
+            frames(WHITTED, "whitted.json", &own, o, &parse(spec).unwrap()).unwrap_err()
+        };
+        assert_eq!(
+            refused("render.width=64,128", &Overrides::default()),
+            "--vary render.width: the frames of a strip share one size; give --width and --height instead"
+        );
+        let o = Overrides {
+            max_depth: Some(3),
+            ..Overrides::default()
+        };
+        assert_eq!(
+            refused("render.max_depth=1..2", &o),
+            "--vary render.max_depth and --max-depth both set max_depth: give one"
+        );
+        assert_eq!(
+            parse("lights[0].position[1]=1,2").unwrap().file_word(),
+            "lights-0-position-1"
+        );
     }
 
     #[test]

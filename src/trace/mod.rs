@@ -13,4 +13,5 @@ pub mod pixel_record; // one pixel's record: what its rays' trees were made of
 pub mod aov; // per-pixel quantities that explain an image: what each is and how it reads
 pub mod aov_render; // rendering one, through a recorder
 pub mod forward; // rays from the lights to the eye, counted
+pub mod frames; // a filmstrip's frames in turn, each with how much it changed
 pub mod sweep; // speed against accuracy, measured

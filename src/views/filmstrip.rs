@@ -7,6 +7,8 @@ use glam::DVec2;
 
 use crate::figure::canvas::{Anchor, Figure};
 use crate::figure::pen::palette;
+use crate::scene::settings::RenderSettings;
+use crate::views::numbers::num;
 
 /// One frame: its image and its two lines of text.
 #[derive(Clone, Debug, PartialEq)]
@@ -17,6 +19,51 @@ pub struct Frame {
     pub label: String,
     /// Under the frame: how it differs from the one before.
     pub change: String,
+}
+
+impl Frame {
+    /// A frame of a strip that varies the field at `path`: labelled with its
+    /// `value`, and under it the share of pixels that `changed` from the frame
+    /// before (`None`: the first frame).
+    pub fn varied(rgb: Vec<u8>, path: &str, value: f64, changed: Option<f64>) -> Self {
+        Self {
+            rgb,
+            label: format!("{path} = {}", num(value)),
+            change: match changed {
+                None => "the first frame".to_owned(),
+                Some(share) => format!("{:.1}% of pixels changed", 100.0 * share),
+            },
+        }
+    }
+
+    /// The frame's line on standard output: its label and its change, with
+    /// what the change is measured against when there is a frame before.
+    pub fn line(&self, first: bool) -> String {
+        let from = if first {
+            ""
+        } else {
+            " (from the frame before, by more than 3/255)"
+        };
+        format!("{}: {}{from}\n", self.label, self.change)
+    }
+}
+
+/// The title of a strip of `file` varying `path` over `values`, its frames
+/// made with `settings` (the first frame's).
+pub fn title(file: &str, path: &str, values: &[f64], settings: &RenderSettings) -> String {
+    format!(
+        "{file}: {path} from {} to {} · {}×{} · {}{} · under each frame: the share of pixels that changed from the frame before by more than 3/255 (as raytree diff counts)",
+        num(values.first().copied().unwrap_or_default()),
+        num(values.last().copied().unwrap_or_default()),
+        settings.width,
+        settings.height,
+        settings.sampling(),
+        if path.ends_with("max_depth") {
+            String::new()
+        } else {
+            format!(" · max depth {}", settings.max_depth)
+        }
+    )
 }
 
 const MARGIN: f64 = 16.0;

@@ -9,5 +9,6 @@ pub mod explain; // the lecture's arithmetic of each step, written out
 pub mod diagram; // a pixel's rays drawn over the scene, in 2D
 pub mod aov_figure; // a per-pixel quantity with its color bar or key
 pub mod filmstrip; // frames side by side, one per value of a setting
+pub mod forward_figure; // a forward run: its counts in words, its sparse image beside the backward render
 pub mod difference; // two images side by side with where they differ
 pub mod chart; // speed against accuracy as a chart

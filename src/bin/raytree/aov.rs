@@ -54,7 +54,7 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
     .ok_or_else(|| anyhow!("cannot draw a {}×{} figure", s.width, s.height))?;
     pending.commit(&figure.png())?;
     if !args.quiet {
-        eprintln!(
+        output::note(&format!(
             "wrote {} ({}, {}×{}) in {:.2} s on {}",
             path.display(),
             image.name,
@@ -62,7 +62,7 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
             s.height,
             started.elapsed().as_secs_f64(),
             crate::render::threads_word(threads)
-        );
+        ))?;
     }
     Ok(())
 }

@@ -97,13 +97,13 @@ pub fn run(args: &Args) -> Result<()> {
             num(100.0 * p.off)
         ));
     }
-    output::write_stdout(table.as_bytes())?;
+    output::print(table)?;
     output::note(&format!(
         "wrote {}{}",
         path.display(),
         args.csv
             .as_ref()
             .map_or(String::new(), |c| format!(" and {}", c.display()))
-    ));
+    ))?;
     Ok(())
 }

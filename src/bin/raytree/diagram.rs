@@ -132,6 +132,6 @@ pub fn run(args: &Args) -> Result<()> {
     .map_err(anyhow::Error::msg)?;
     pending.commit(&figure.png())?;
     let (w, h) = figure.size();
-    output::note(&format!("wrote {} ({w}×{h})", path.display()));
+    output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
     Ok(())
 }

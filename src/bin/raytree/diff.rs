@@ -54,15 +54,13 @@ pub fn run(args: &Args) -> Result<()> {
         )
         .context("the images are too large for a figure")?;
         pending.commit(&figure.png())?;
-        output::note(&format!("wrote {}", path.display()));
+        output::note(&format!("wrote {}", path.display()))?;
     }
-    output::write_stdout(
-        format!(
-            "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255\n",
-            d.mean,
-            d.max,
-            100.0 * d.share_over_3
-        )
-        .as_bytes(),
-    )
+    output::print(format!(
+        "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255\n",
+        d.mean,
+        d.max,
+        100.0 * d.share_over_3
+    ))?;
+    Ok(())
 }

@@ -125,7 +125,7 @@ pub fn run(args: &Args) -> Result<()> {
         }
         Generated::Icosphere { triangles, .. } => icosphere(*triangles, path)?,
     }
-    output::note(&format!("wrote {}", path.display()));
+    output::note(&format!("wrote {}", path.display()))?;
     Ok(())
 }
 
@@ -152,7 +152,7 @@ fn icosphere(triangles: u64, path: &Path) -> Result<()> {
         "wrote {} ({} triangles)",
         obj.display(),
         20u64 << (2 * levels)
-    ));
+    ))?;
     let text = generate::icosphere_scene(&name, 20 << (2 * levels));
     scene_file.commit(text.as_bytes())
 }

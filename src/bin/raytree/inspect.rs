@@ -1,6 +1,5 @@
 //! `raytree inspect`: the terminal inspector, on a scene or a saved trace.
 
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use anyhow::{Result, bail};
@@ -10,6 +9,7 @@ use raytree::scene::source;
 use raytree::tree::reading;
 
 use crate::args::{SceneArgs, parse_pixel};
+use crate::output;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -90,7 +90,7 @@ pub fn run(args: &Args) -> Result<()> {
         app.set_message(note.clone());
     }
     app.set_colors(truecolor, note);
-    if !std::io::stdout().is_terminal() {
+    if !output::stdout_is_terminal() {
         bail!("raytree inspect needs a terminal (standard output is not one)");
     }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))

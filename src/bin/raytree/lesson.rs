@@ -1,7 +1,6 @@
 //! `raytree lesson`: the lessons, and one lesson's guided step-through, in
 //! the inspector when standard output is a terminal, else as text.
 
-use std::io::IsTerminal;
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
@@ -41,13 +40,14 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
-            if !args.text && std::io::stdout().is_terminal() {
+            if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
             }
             lesson::step_through_text(&loaded, &walk)
         }
     };
-    output::write_stdout(text.as_bytes())
+    output::print(text)?;
+    Ok(())
 }
 
 /// Opens the lesson's step-through in the inspector, at its first stop.

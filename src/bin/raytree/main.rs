@@ -1,6 +1,10 @@
 //! The `raytree` command line: parse, dispatch to the command's file, report.
 //! Each command lives in a file of its own; the argument groups they share are
-//! in `args.rs`, the output-file helpers in `output.rs`.
+//! in `args.rs`; everything printed and every file written goes through
+//! `output.rs`, the one door out (which the lint below keeps the only one).
+
+// `print!` and `eprint!` panic on a closed pipe: write through `output` instead.
+#![deny(clippy::print_stdout, clippy::print_stderr)]
 
 mod aov;
 mod args;
@@ -79,10 +83,18 @@ fn main() -> ExitCode {
         Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
     };
+    finish(result)
+}
+
+/// The exit code of a command's result, its error reported in one line. A
+/// closed pipe anywhere (`raytree trace … | head`) is no failure: the reader
+/// has what it wanted, so the program ends quietly with exit 0.
+fn finish(result: anyhow::Result<()>) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        Err(e) if output::closed_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            output::note(&format!("error: {}", printable(&format!("{e:#}"))));
+            output::last_word(&format!("error: {}", printable(&format!("{e:#}"))));
             ExitCode::FAILURE
         }
     }
@@ -115,8 +127,12 @@ fn usage_error(e: &clap::Error) -> ExitCode {
             | ErrorKind::DisplayVersion
             | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand
     ) {
-        let _ = e.print();
-        return ExitCode::from(if e.use_stderr() { 2 } else { 0 });
+        let printed = output::clap_text(e);
+        if e.use_stderr() {
+            // The help of a command line that names no command: a usage error.
+            return ExitCode::from(2);
+        }
+        return finish(printed.map_err(anyhow::Error::from));
     }
     let text = e.render().to_string();
     // clap's message runs until its usage: the problem, then what it names
@@ -151,7 +167,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         level = sub;
     }
     let command = command.join(" ");
-    output::note(&format!(
+    output::last_word(&format!(
         "error: {} (see {command} --help)",
         printable(&message)
     ));

@@ -1,16 +1,79 @@
-//! Output files and streams: every file a command writes is a pending file
-//! (`raytree::io::output`) until it is committed, never one of the command's
-//! inputs; SIGINT, SIGTERM and SIGHUP remove every pending file and give the
-//! terminal back; default output names; standard output that tolerates a
-//! closed pipe; progress bars.
+//! The one door out: everything the binary prints, and the files it writes.
+//!
+//! Standard output and standard error are written here and nowhere else (the
+//! binary denies `print!` and `eprint!`), with `std::io::Write`: a write that
+//! fails is an `io::Error` carried up with `?` to `main`, never a panic. There
+//! [`closed_pipe`] finds a broken pipe in the error's chain (the reader went
+//! away, as `| head` does) and the program ends quietly with exit 0; any other
+//! failure (a full disk) is one line and exit 1. Rust ignores SIGPIPE, so a
+//! closed pipe always arrives as that error.
+//!
+//! Every file a command writes is a pending file (`raytree::io::output`) until
+//! it is committed, never one of the command's inputs; SIGINT, SIGTERM and
+//! SIGHUP remove every pending file and give the terminal back; default
+//! output names; progress bars.
 
-use std::io::Write;
+use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 
 use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raytree::io::image_file::{self, Format};
 use raytree::io::output::{self, PendingFile};
+
+/// Writes `text` to standard output, all of it, and flushes it: a table, a
+/// trace, a line of figures.
+pub fn print(text: impl AsRef<[u8]>) -> io::Result<()> {
+    write_all(io::stdout().lock(), "output", text.as_ref())
+}
+
+/// A line on standard error: what was written, a warning.
+pub fn note(line: &str) -> io::Result<()> {
+    write_all(io::stderr().lock(), "error", format!("{line}\n").as_bytes())
+}
+
+/// The program's last line on standard error, an error or a signal: when it
+/// cannot be written there is nothing left to do, and the exit code says it.
+pub fn last_word(line: &str) {
+    let _ = note(line);
+}
+
+/// clap's help or version text, where clap sends it (standard error for a
+/// command line that names no command).
+pub fn clap_text(e: &clap::Error) -> io::Result<()> {
+    let stream = if e.use_stderr() { "error" } else { "output" };
+    e.print().map_err(|e| failed(stream, &e))
+}
+
+/// Whether standard output is a terminal (the inspector needs one).
+pub fn stdout_is_terminal() -> bool {
+    io::stdout().is_terminal()
+}
+
+/// Whether `e` is, or was caused by, a closed pipe: the reader of standard
+/// output (or error) went away, which ends the program quietly.
+pub fn closed_pipe(e: &anyhow::Error) -> bool {
+    e.chain()
+        .filter_map(|cause| cause.downcast_ref::<io::Error>())
+        .any(|io| io.kind() == io::ErrorKind::BrokenPipe)
+}
+
+/// Writes `bytes` to `stream` (standard `name`) and flushes it; a failure
+/// keeps its kind and names the stream.
+fn write_all(mut stream: impl Write, name: &str, bytes: &[u8]) -> io::Result<()> {
+    stream
+        .write_all(bytes)
+        .and_then(|()| stream.flush())
+        .map_err(|e| failed(name, &e))
+}
+
+/// `e`, of the same kind, as "cannot write to standard `name`: reason".
+fn failed(name: &str, e: &io::Error) -> io::Error {
+    io::Error::new(
+        e.kind(),
+        format!("cannot write to standard {name}: {}", output::io_reason(e)),
+    )
+}
 
 /// Opens `path` for writing as a pending file (removed on a signal), refusing
 /// it when it is one of `inputs`, the files the command reads.
@@ -46,16 +109,10 @@ pub fn clean_up_on_signals() {
                 SIGTERM => "terminated (SIGTERM)",
                 _ => "hung up (SIGHUP)",
             };
-            note(&format!("\n{what}: no output written"));
+            last_word(&format!("\n{what}: no output written"));
             std::process::exit(128 + signal);
         }
     });
-}
-
-/// A line on standard error; one that cannot be written (a closed or full
-/// stream) is dropped rather than ending the program in a panic.
-pub fn note(line: &str) {
-    let _ = writeln!(std::io::stderr().lock(), "{line}");
 }
 
 /// `given`, or `default` (a name in the current folder).
@@ -71,19 +128,6 @@ pub fn require_png(path: &Path, what: &str) -> Result<()> {
     Ok(())
 }
 
-/// Writes to standard output; a closed pipe (`| head`) is not an error, a full
-/// disk is.
-pub fn write_stdout(bytes: &[u8]) -> Result<()> {
-    let mut out = std::io::stdout().lock();
-    match out.write_all(bytes).and_then(|()| out.flush()) {
-        Err(e) if e.kind() != std::io::ErrorKind::BrokenPipe => Err(anyhow::anyhow!(
-            "cannot write to standard output: {}",
-            output::io_reason(&e)
-        )),
-        _ => Ok(()),
-    }
-}
-
 /// The library's `(done, total)` reports, drawn on `bar`.
 pub fn on_bar(bar: &ProgressBar) -> impl Fn(u64, u64) + Sync + '_ {
     |done, total| {
@@ -93,7 +137,10 @@ pub fn on_bar(bar: &ProgressBar) -> impl Fn(u64, u64) + Sync + '_ {
 }
 
 /// A bar on stderr, drawn only when stderr is a terminal (hidden when `quiet`),
-/// with `template` as indicatif writes it.
+/// with `template` as indicatif writes it. A bar never fails the program:
+/// indicatif hides it when stderr is not a terminal (a pipe, closed or not)
+/// and drops its own write errors (of the calls made here, only
+/// `set_tab_width` would panic on one; it is not used).
 pub fn progress_bar(quiet: bool, template: &str) -> ProgressBar {
     if quiet {
         return ProgressBar::hidden();

@@ -46,7 +46,8 @@ pub struct Args {
 
 pub fn run(args: &Args) -> Result<()> {
     if args.slips {
-        return output::write_stdout(slips().as_bytes());
+        output::print(slips())?;
+        return Ok(());
     }
     let source = match &args.source {
         Some(path) => path.clone(),
@@ -82,7 +83,7 @@ pub fn run(args: &Args) -> Result<()> {
         if args.srgb { ", encoded as sRGB" } else { "" },
         repaired.len(),
         if repaired.len() == 1 { "" } else { "s" }
-    ));
+    ))?;
     Ok(())
 }
 

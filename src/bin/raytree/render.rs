@@ -87,12 +87,12 @@ pub fn run(args: &Args) -> Result<()> {
             s.sampling(),
             s.max_depth,
             threads_word(threads)
-        ));
+        ))?;
     }
     if let Some(r) = rays {
         // The counts are what --stats asked for: standard output, as strip and
         // forward print their figures; notes stay on standard error.
-        output::write_stdout(stats(&r, seconds).as_bytes())?;
+        output::print(stats(&r, seconds))?;
     }
     Ok(())
 }

@@ -45,9 +45,12 @@ pub fn run(args: &Args) -> Result<()> {
     match (pending, &args.output) {
         (Some(file), Some(path)) => {
             file.commit(text.as_bytes())?;
-            output::note(&format!("wrote {}", path.display()));
+            output::note(&format!("wrote {}", path.display()))?;
             Ok(())
         }
-        _ => output::write_stdout(text.as_bytes()),
+        _ => {
+            output::print(text)?;
+            Ok(())
+        }
     }
 }

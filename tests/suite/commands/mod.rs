@@ -6,6 +6,7 @@ mod chart;
 mod fuzz;
 mod inputs;
 mod outputs;
+mod pipes;
 mod postscript;
 mod signals;
 mod strip;
