@@ -172,3 +172,16 @@ pub fn matches_golden(fig: &raytree::figure::canvas::Figure, path: &std::path::P
         path.display()
     );
 }
+
+/// The commands `raytree --help` lists (`help` left out), in its order.
+pub fn command_names(help: &str) -> Vec<&str> {
+    help.lines()
+        .skip_while(|l| !l.starts_with("Commands:"))
+        .skip(1)
+        .take_while(|l| !l.trim().is_empty())
+        // A command's line is indented two spaces; a wrapped description, more.
+        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
+        .filter_map(|l| l.split_whitespace().next())
+        .filter(|n| *n != "help")
+        .collect()
+}

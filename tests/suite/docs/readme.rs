@@ -341,16 +341,7 @@ fn the_readme_shows_every_command() {
         .output()
         .unwrap();
     let help = String::from_utf8(out.stdout).unwrap();
-    let names: Vec<&str> = help
-        .lines()
-        .skip_while(|l| !l.starts_with("Commands:"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        // A command's line is indented two spaces; a wrapped description, more.
-        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
-        .filter_map(|l| l.split_whitespace().next())
-        .filter(|n| *n != "help")
-        .collect();
+    let names = crate::common::command_names(&help);
     assert!(
         !names.is_empty(),
         "raytree --help lists no commands: {help}"

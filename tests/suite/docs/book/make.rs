@@ -178,16 +178,7 @@ fn commands() -> Result<String, String> {
          `raytree COMMAND --help`): this page is made from that help, so it cannot drift from the program.\n\n",
     );
     let _ = write!(out, "## raytree\n\n```text\n{}```\n", top);
-    let names: Vec<&str> = top
-        .lines()
-        .skip_while(|l| !l.starts_with("Commands:"))
-        .skip(1)
-        .take_while(|l| !l.trim().is_empty())
-        // A command's line is indented two spaces; a wrapped description, more.
-        .filter(|l| l.starts_with("  ") && !l.starts_with("   "))
-        .filter_map(|l| l.split_whitespace().next())
-        .filter(|n| *n != "help")
-        .collect();
+    let names = crate::common::command_names(&top);
     if names.is_empty() {
         return Err("raytree --help lists no commands".to_owned());
     }
