@@ -70,6 +70,18 @@ impl RenderSettings {
         self.spp.isqrt()
     }
 
+    /// The most primary rays a pixel may trace: `spp` on a grid; with
+    /// adaptive subdivision, every corner of a `2^levels` grid of squares
+    /// once, `(2^levels + 1)²`.
+    pub fn max_samples(&self) -> u32 {
+        match self.aa {
+            Antialiasing::Grid => self.spp,
+            Antialiasing::Adaptive { levels, .. } => {
+                (1u32 << levels.min(15)).pow(2) + 2 * (1 << levels.min(15)) + 1
+            }
+        }
+    }
+
     /// Checks the settings, naming the first that is wrong and why.
     pub fn validate(&self) -> Result<(), (&'static str, String)> {
         for (field, side) in [("width", self.width), ("height", self.height)] {

@@ -49,18 +49,19 @@ fn target(trace: &TraceDocument) -> Result<(), String> {
                     p.x, p.y, s.width, s.height
                 ));
             }
-            if trace.samples.len() > s.spp as usize {
+            let most = s.max_samples();
+            if trace.samples.len() > most as usize {
+                let at_most = if most == s.spp { "" } else { "at most " };
                 return Err(format!(
-                    "samples: {} samples, but a pixel has {}",
+                    "samples: {} samples, but a pixel has {at_most}{most}",
                     trace.samples.len(),
-                    s.spp
                 ));
             }
             for (k, sample) in trace.samples.iter().enumerate() {
-                if sample.index >= s.spp || sample.camera.is_none() || sample.position.is_none() {
+                if sample.index >= most || sample.camera.is_none() || sample.position.is_none() {
                     return Err(format!(
-                        "samples[{k}]: a pixel's sample needs an index below {} (got {}), a position and a camera stage",
-                        s.spp, sample.index
+                        "samples[{k}]: a pixel's sample needs an index below {most} (got {}), a position and a camera stage",
+                        sample.index
                     ));
                 }
             }

@@ -209,3 +209,46 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
         "{e}"
     );
 }
+
+/// Adaptive sampling traces each pixel's corners, shared ones once: up to
+/// (2^levels + 1)² primary rays, not `spp`. Its trace is written and read back
+/// (it was refused on every pixel: "68 samples, but a pixel has 1").
+#[test]
+fn an_adaptive_trace_is_written_and_read_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("adaptive.json");
+    let run = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args([
+            "trace",
+            "scenes/whitted.json",
+            "--pixel",
+            "416,209",
+            "--aa",
+            "adaptive",
+            "--json",
+            "-o",
+        ])
+        .arg(&out)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(
+        run.status.success(),
+        "{}",
+        String::from_utf8_lossy(&run.stderr)
+    );
+    let trace = reading::read(&out).unwrap_or_else(|e| panic!("{e}"));
+    // 3 levels: at most a 9 × 9 grid of corners; the glass edge subdivides, so more than 4.
+    assert!(
+        (5..=81).contains(&trace.samples.len()),
+        "{}",
+        trace.samples.len()
+    );
+    let mut v: Value = serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let extra = v["samples"][0].clone();
+    for _ in 0..82 {
+        v["samples"].as_array_mut().unwrap().push(extra.clone());
+    }
+    let e = reading::parse(&v.to_string()).unwrap_err();
+    assert!(e.contains("but a pixel has at most 81"), "{e}");
+}
