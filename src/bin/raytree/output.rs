@@ -10,8 +10,8 @@
 //!
 //! Every file a command writes is a pending file (`raytree::io::output`) until
 //! it is committed, never one of the command's inputs; an outside program a
-//! command runs (Ghostscript) is a [`Helper`]; SIGINT, SIGTERM and SIGHUP
-//! end the helper, remove its folder and every pending file and give the
+//! command runs (Ghostscript) is a [`Helper`]; SIGINT, SIGTERM, SIGHUP and
+//! SIGQUIT end the helper, remove its folder and every pending file and give the
 //! terminal back; default output names; progress bars.
 
 use std::io::{self, IsTerminal, Write};
@@ -95,12 +95,15 @@ pub fn create(path: &Path, inputs: &[PathBuf]) -> Result<PendingFile> {
     PendingFile::create(path)
 }
 
-/// On SIGINT, SIGTERM or SIGHUP: give the terminal back, remove every pending
+/// On SIGINT, SIGTERM, SIGHUP or SIGQUIT: give the terminal back, remove every pending
 /// file, say so in one line and exit with 128 + the signal's number (130 for
 /// Ctrl-C), as shells do.
 pub fn clean_up_on_signals() {
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGTERM};
-    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP]) else {
+    use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM};
+    // SIGQUIT too: its default (a core dump) would leave the inspector's
+    // terminal raw, and pending files behind.
+    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP, SIGQUIT])
+    else {
         return;
     };
     std::thread::spawn(move || {
@@ -113,6 +116,7 @@ pub fn clean_up_on_signals() {
             let what = match signal {
                 SIGINT => "interrupted",
                 SIGTERM => "terminated (SIGTERM)",
+                SIGQUIT => "quit (SIGQUIT)",
                 _ => "hung up (SIGHUP)",
             };
             last_word(&format!("\n{what}: no output written"));

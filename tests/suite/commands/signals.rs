@@ -1,4 +1,4 @@
-//! SIGINT, SIGTERM and SIGHUP end raytree cleanly (issue 12): a writing command
+//! SIGINT, SIGTERM, SIGHUP and SIGQUIT (issue 29) end raytree cleanly (issue 12): a writing command
 //! leaves no pending file and exits 128 + the signal's number; the inspector
 //! gives the terminal back (main screen, cooked mode) before it exits;
 //! `raytree postscript` ends Ghostscript and removes its folder (issue 29).
@@ -9,7 +9,7 @@ use std::time::{Duration, Instant};
 
 use crate::inspector::tmux::{Session, has_tmux};
 
-const SIGNALS: [(&str, i32); 3] = [("INT", 2), ("TERM", 15), ("HUP", 1)];
+const SIGNALS: [(&str, i32); 4] = [("INT", 2), ("TERM", 15), ("HUP", 1), ("QUIT", 3)];
 
 fn kill(signal: &str, pid: u32) {
     let sent = Command::new("kill")
