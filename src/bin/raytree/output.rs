@@ -146,12 +146,10 @@ fn helper() -> MutexGuard<'static, Option<Running>> {
 /// returns the lock, still held.
 fn end_helper() -> MutexGuard<'static, Option<Running>> {
     let mut slot = helper();
-    if let Some(mut running) = slot.take() {
-        if let Some(child) = running.child.as_mut() {
-            let _ = child.kill();
-            let _ = child.wait();
-        }
-        // Dropping the folder removes it.
+    // Dropping what was taken removes the folder.
+    if let Some(child) = slot.take().as_mut().and_then(|r| r.child.as_mut()) {
+        let _ = child.kill();
+        let _ = child.wait();
     }
     slot
 }
