@@ -131,9 +131,10 @@ impl App {
         }
     }
 
-    /// Takes the newest picture the worker finished, if any.
-    pub(super) fn receive_picture(&mut self) {
-        self.image.receive();
+    /// Takes the newest picture the worker finished, if any; returns whether
+    /// one came.
+    pub(super) fn receive_picture(&mut self) -> bool {
+        self.image.receive()
     }
 
     /// Asks the worker for the picture of the image pane's window.
@@ -311,7 +312,7 @@ impl App {
     }
 
     /// The image pane's picture, once traced.
-    pub(super) fn picture(&self) -> Option<&Picture> {
+    pub fn picture(&self) -> Option<&Picture> {
         self.image.picture()
     }
 

@@ -88,10 +88,15 @@ impl ImageView {
         }
     }
 
-    /// Takes the newest picture the worker finished, if one came.
-    pub fn receive(&mut self) {
-        if let Some(p) = self.worker.as_ref().and_then(Worker::receive) {
-            self.picture = Some(p);
+    /// Takes the newest picture the worker finished, if one came; returns
+    /// whether one did.
+    pub fn receive(&mut self) -> bool {
+        match self.worker.as_ref().and_then(Worker::receive) {
+            Some(p) => {
+                self.picture = Some(p);
+                true
+            }
+            None => false,
         }
     }
 

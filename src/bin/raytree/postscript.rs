@@ -115,7 +115,10 @@ fn find_lecture() -> Result<PathBuf> {
 /// The first page Ghostscript draws of `program`: 8-bit RGB, or 16-bit when
 /// the levels are to be re-encoded, as a PNG file's bytes.
 fn ghostscript(program: &str, deep: bool, timeout: Duration) -> Result<Vec<u8>> {
-    let dir = tempfile::tempdir().context("cannot make a temporary folder")?;
+    let dir = tempfile::Builder::new()
+        .prefix("raytree-postscript-")
+        .tempdir()
+        .context("cannot make a temporary folder")?;
     let page = dir.path().join("page.png");
     let mut child = Command::new("gs")
         .args([
@@ -142,15 +145,17 @@ fn ghostscript(program: &str, deep: bool, timeout: Duration) -> Result<Vec<u8>> 
             ),
             _ => anyhow::anyhow!("cannot run Ghostscript (gs): {e}"),
         })?;
-    if let Some(mut stdin) = child.stdin.take() {
+    let stdin = child.stdin.take();
+    // From here a signal, or an error, ends Ghostscript and removes the folder.
+    let gs = output::Helper::start(child, dir);
+    if let Some(mut stdin) = stdin {
         // A program that stops reading early is Ghostscript's error to report.
         let _ = stdin.write_all(program.as_bytes());
     }
     let start = Instant::now();
-    while child.try_wait()?.is_none() {
+    while gs.try_wait()?.is_none() {
         if start.elapsed() > timeout {
-            let _ = child.kill();
-            let _ = child.wait();
+            // Dropping `gs` kills Ghostscript.
             bail!(
                 "Ghostscript did not finish within {} s (--timeout)",
                 timeout.as_secs()
@@ -158,7 +163,7 @@ fn ghostscript(program: &str, deep: bool, timeout: Duration) -> Result<Vec<u8>> 
         }
         std::thread::sleep(Duration::from_millis(20));
     }
-    let out = child.wait_with_output()?;
+    let out = gs.output()?;
     if !out.status.success() {
         let said = String::from_utf8_lossy(&out.stdout).into_owned()
             + &String::from_utf8_lossy(&out.stderr);

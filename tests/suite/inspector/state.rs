@@ -275,3 +275,71 @@ fn image_pane_shows_the_render_in_half_blocks_with_the_cursor() {
         "the cursor is marked"
     );
 }
+
+/// Issue 29: idle, the inspector drew a frame every 30 ms. It draws one when
+/// something changed: an input event, the terminal's size, a picture from
+/// the worker.
+#[test]
+fn idle_the_inspector_draws_no_frame() {
+    use raytree::inspector::Frames;
+    let mut app = app_at(Some((320, 240)));
+    app.render_picture_now();
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    let mut frames = Frames::default();
+    assert!(
+        frames.frame(&mut terminal, &mut app).unwrap(),
+        "the first frame"
+    );
+    for _ in 0..100 {
+        frames.frame(&mut terminal, &mut app).unwrap();
+    }
+    assert_eq!(frames.drawn(), 1, "idle frames drawn");
+    frames.input();
+    assert!(
+        frames.frame(&mut terminal, &mut app).unwrap(),
+        "after a key"
+    );
+    assert!(!frames.frame(&mut terminal, &mut app).unwrap());
+    terminal.backend_mut().resize(120, 40);
+    assert!(
+        frames.frame(&mut terminal, &mut app).unwrap(),
+        "after a resize"
+    );
+    assert!(!frames.frame(&mut terminal, &mut app).unwrap());
+    assert_eq!(frames.drawn(), 3);
+}
+
+/// The worker's pictures are drawn as they come (coarse, then complete), and
+/// once the complete one is shown nothing more is.
+#[test]
+fn a_picture_from_the_worker_is_drawn_and_then_nothing() {
+    use raytree::inspector::Frames;
+    let mut app = App::new(
+        raytree::scene::loader::whitted(),
+        SceneSource::new("scenes/whitted.json", ""),
+        None,
+        true,
+    );
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    let mut frames = Frames::default();
+    let started = std::time::Instant::now();
+    while !app.picture().is_some_and(|p| p.complete)
+        && started.elapsed() < std::time::Duration::from_secs(60)
+    {
+        frames.frame(&mut terminal, &mut app).unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    frames.frame(&mut terminal, &mut app).unwrap();
+    assert!(
+        app.picture().is_some_and(|p| p.complete),
+        "no complete picture"
+    );
+    let drawn = frames.drawn();
+    // The first frame, and at least the complete picture's.
+    assert!(drawn >= 2, "{drawn} frames");
+    for _ in 0..50 {
+        frames.frame(&mut terminal, &mut app).unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(2));
+    }
+    assert_eq!(frames.drawn(), drawn, "frames drawn idle");
+}
