@@ -303,7 +303,14 @@ impl Builder<'_> {
                 if (0.0..=max).contains(&v) {
                     Ok(v)
                 } else {
-                    Err(self.invalid(at(f), format_args!("must be from 0 to {max}, got {v}")))
+                    Err(self.invalid(
+                        at(f),
+                        format_args!(
+                            "must be from 0 to {}, got {}",
+                            limits::num(max),
+                            limits::num(v)
+                        ),
+                    ))
                 }
             };
         let (low, high) = limits::IOR;
@@ -315,7 +322,7 @@ impl Builder<'_> {
         if reflective + transparent > 1.0 {
             return Err(self.invalid(
                 format_args!("materials.{name}"),
-                format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {reflective} + {transparent}"),
+                format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {} + {}", limits::num(reflective), limits::num(transparent)),
             ));
         }
         let max = limits::MAX_COEFFICIENT;

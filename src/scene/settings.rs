@@ -4,6 +4,7 @@
 use crate::methods::{
     Accel, Antialiasing, IntersectionMethods, Offset, SphereMethod, TriangleMethod, Weights,
 };
+use crate::scene::limits;
 
 /// How to render: image size, sampling, recursion limits and methods.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -112,7 +113,7 @@ impl RenderSettings {
                 "cutoff",
                 format!(
                     "must be a number from 0 up to (not including) 1, got {}",
-                    self.cutoff
+                    limits::num(self.cutoff)
                 ),
             ));
         }
@@ -122,7 +123,8 @@ impl RenderSettings {
             return Err((
                 "aa",
                 format!(
-                    "adaptive needs a threshold ≥ 0 and at most 6 levels, got {threshold} and {levels}"
+                    "adaptive needs a threshold ≥ 0 and at most 6 levels, got {} and {levels}",
+                    limits::num(threshold)
                 ),
             ));
         }
@@ -131,7 +133,7 @@ impl RenderSettings {
         {
             return Err((
                 "offset",
-                format!("an epsilon must be a number > 0, got {e}"),
+                format!("an epsilon must be a number > 0, got {}", limits::num(e)),
             ));
         }
         Ok(())

@@ -195,6 +195,37 @@ fn numbers_outside_the_limits_and_left_handed_frames_are_refused() {
             r#"{"camera": {"fov": 0.0001}}"#,
             ": camera.fov: must be from 0.001 to 179.999 degrees, got 0.0001",
         ),
+        // A number is echoed as short as it reads, not as 300 digits (issue 29).
+        (
+            "fov-tiny",
+            r#"{"camera": {"fov": 1e-300}}"#,
+            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e-300",
+        ),
+        (
+            "fov-huge",
+            r#"{"camera": {"fov": 1e300}}"#,
+            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e300",
+        ),
+        (
+            "reflective-tiny",
+            r#"{"materials": {"m": {"reflective": -1e-300}}}"#,
+            ": materials.m.reflective: must be from 0 to 1, got -1e-300",
+        ),
+        (
+            "shininess-huge",
+            r#"{"materials": {"m": {"shininess": 1e300}}}"#,
+            ": materials.m.shininess: must be from 0 to 1e6, got 1e300",
+        ),
+        (
+            "cutoff-tiny",
+            r#"{"render": {"cutoff": -1e-300}}"#,
+            ": render.cutoff: must be a number from 0 up to (not including) 1, got -1e-300",
+        ),
+        (
+            "epsilon-tiny",
+            r#"{"render": {"offset": {"epsilon": -1e-300}}}"#,
+            ": render.offset: an epsilon must be a number > 0, got -1e-300",
+        ),
         (
             "left-handed",
             r#"{"camera": {"u": [-1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 1}}"#,
