@@ -120,7 +120,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         };
         // serde quotes an unknown key as written: a newline or an escape in it
         // would break the one-line message or reach the terminal.
-        let message = strict::printable(&message);
+        let message = strict::printable(&strict::in_users_words(&message));
         SceneError::Syntax {
             file: file.to_owned(),
             line: e.line(),

@@ -88,27 +88,27 @@ fn the_strict_format_has_no_holes() {
         (
             "array-scene",
             "[]",
-            ":1:1: invalid type: sequence, expected struct SceneFile",
+            ":1:1: invalid type: sequence, expected a scene object",
         ),
         (
             "positional-object",
             r#"{"objects": [[null, {"center": [0, 0, 0], "radius": 1}]]}"#,
-            ":1:13: objects[0]: invalid type: sequence, expected struct ObjectFile",
+            ":1:13: objects[0]: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-sphere",
             r#"{"objects": [{"sphere": [[0, 0, 0], 1]}]}"#,
-            ":1:24: objects[0].sphere: invalid type: sequence, expected struct SphereFile",
+            ":1:24: objects[0].sphere: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-render",
             r#"{"render": [64, 48]}"#,
-            ":1:11: render: invalid type: sequence, expected struct Overrides",
+            ":1:11: render: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-rotate",
             r#"{"objects": [{"sphere": {}, "transform": [{"rotate": [[0, 1, 0], 45]}]}]}"#,
-            "objects[0].transform[0].rotate: invalid type: sequence, expected struct RotateFile",
+            "objects[0].transform[0].rotate: invalid type: sequence, expected an object {…}",
         ),
         (
             "duplicate-material",
@@ -295,5 +295,105 @@ fn the_most_extreme_valid_scene_renders_and_traces_finite_numbers() {
             "{x},{y}: the trace is the render"
         );
         assert!(json.len() > 1000);
+    }
+}
+
+/// Whether `message` names a Rust type (`struct SceneFile`, `f64`, `usize`)
+/// where a user should read a word of the format.
+pub fn names_a_rust_type(message: &str) -> bool {
+    message.contains("struct ")
+        || message.contains("enum ")
+        || message
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .any(|w| {
+                matches!(
+                    w,
+                    "f32"
+                        | "f64"
+                        | "u8"
+                        | "u16"
+                        | "u32"
+                        | "u64"
+                        | "usize"
+                        | "i32"
+                        | "i64"
+                        | "isize"
+                )
+            })
+}
+
+/// A value of the wrong type is named in the format's words: a number, a
+/// whole number, a scene object, never `f64` or `struct SceneFile` (issue 29).
+#[test]
+fn wrong_types_are_named_in_the_users_words() {
+    let cases = [
+        (
+            "string-for-number",
+            r#"{"camera": {"fov": "x"}}"#,
+            ":1:22: camera.fov: invalid type: string \"x\", expected a number",
+        ),
+        (
+            "float-for-count",
+            r#"{"render": {"width": 1.5}}"#,
+            ":1:24: render.width: invalid type: floating point `1.5`, expected a whole number",
+        ),
+        (
+            "negative-count",
+            r#"{"render": {"width": -1}}"#,
+            ":1:23: render.width: invalid value: integer `-1`, expected a whole number",
+        ),
+        (
+            "array-scene",
+            "[]",
+            ":1:1: invalid type: sequence, expected a scene object",
+        ),
+        (
+            "string-for-point",
+            r#"{"camera": {"eye": "x"}}"#,
+            ":1:22: camera.eye: invalid type: string \"x\", expected",
+        ),
+        (
+            "string-in-point",
+            r#"{"camera": {"eye": [0, "x", 0]}}"#,
+            "camera.eye",
+        ),
+        (
+            "string-for-color",
+            r#"{"lights": [{"position": [0, 1, 0], "color": [1, 1, "x"]}]}"#,
+            "lights[0].color",
+        ),
+        (
+            "string-for-depth",
+            r#"{"render": {"max_depth": "x"}}"#,
+            "render.max_depth: invalid type: string \"x\", expected a whole number",
+        ),
+        (
+            "number-for-object",
+            r#"{"objects": [5]}"#,
+            "objects[0]: invalid type: integer `5`, expected",
+        ),
+        (
+            "number-for-material",
+            r#"{"materials": {"m": 5}}"#,
+            "materials.m: invalid type: integer `5`, expected",
+        ),
+        (
+            "string-for-offset",
+            r#"{"render": {"offset": {"epsilon": "x"}}}"#,
+            "render.offset",
+        ),
+        (
+            "string-for-spp",
+            r#"{"render": {"spp": "x"}}"#,
+            "render.spp",
+        ),
+    ];
+    for (name, text, expected) in cases {
+        let e = scene_refused(name, text);
+        assert!(
+            e.starts_with(expected) || e.contains(expected),
+            "{name}: {e}"
+        );
+        assert!(!names_a_rust_type(&e), "{name}: {e}");
     }
 }

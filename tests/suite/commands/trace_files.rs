@@ -105,9 +105,29 @@ fn every_broken_trace_is_one_line_and_exit_1() {
         (
             "null-number",
             broken(|v| v["color"][0] = Value::Null),
-            "not a raytree trace: invalid type: null, expected f64",
+            "not a raytree trace: invalid type: null, expected a number",
         ),
         ("array", b"[]".to_vec(), "not a raytree trace"),
+        (
+            "array-is-no-trace-object",
+            b"[]".to_vec(),
+            "not a raytree trace: invalid length 0, expected a trace object",
+        ),
+        (
+            "string-for-a-pixel",
+            broken(|v| v["pixel"]["x"] = json!("a")),
+            "not a raytree trace: invalid type: string \"a\", expected a whole number",
+        ),
+        (
+            "fraction-for-a-depth",
+            broken(|v| v["settings"]["max_depth"] = json!(2.5)),
+            "not a raytree trace: invalid type: floating point `2.5`, expected a whole number",
+        ),
+        (
+            "number-for-a-root",
+            broken(|v| v["samples"][0]["tree"] = json!(1)),
+            "not a raytree trace: invalid type: integer `1`, expected",
+        ),
         (
             "old-version",
             broken(|v| v["version"] = json!(1)),
@@ -136,6 +156,7 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             e.starts_with("error: t.json") && e.contains(expected),
             "{name}: {e}"
         );
+        assert!(!super::inputs::names_a_rust_type(&e), "{name}: {e}");
     }
 }
 
