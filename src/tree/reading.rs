@@ -107,9 +107,14 @@ fn find_scene(trace: &TraceDocument, path: &Path) -> (Option<Scene>, Option<Stri
         None
     } else {
         let beside = path.parent().unwrap_or(Path::new("")).join(named);
-        match [beside, PathBuf::from(named)]
-            .into_iter()
+        let places = [beside, PathBuf::from(named)];
+        // A regular file first; else something there that is no file (a
+        // device, a folder), which loading then names for what it is.
+        match places
+            .iter()
             .find(|p| p.is_file())
+            .or_else(|| places.iter().find(|p| p.exists()))
+            .cloned()
         {
             Some(found) => Some(found),
             None => {

@@ -230,3 +230,38 @@ fn the_scene_is_found_beside_the_trace_then_from_the_working_folder() {
         "{e}"
     );
 }
+
+/// A scene the trace names that exists but is no scene file (a device, a
+/// folder) is said to be so, not "not found" (issue 29); the same for a scene
+/// given to `inspect` itself, refused before the terminal is touched.
+#[test]
+fn a_named_scene_that_is_no_file_is_said_to_be_so() {
+    let dir = tempfile::tempdir().unwrap();
+    for (named, why) in [
+        ("/dev/zero", "/dev/zero: not a regular file"),
+        ("folder", "folder: it is a directory"),
+    ] {
+        let mut v = serde_json::to_value(good_trace()).unwrap();
+        v["scene"]["file"] = json!(named);
+        let trace = dir.path().join("t.json");
+        std::fs::write(&trace, serde_json::to_vec(&v).unwrap()).unwrap();
+        std::fs::create_dir_all(dir.path().join("folder")).unwrap();
+        let opened = reading::open(&trace, None).unwrap();
+        assert!(opened.scene.is_none());
+        let note = opened.note.unwrap();
+        assert!(!note.contains("not found"), "{named}: {note}");
+        assert!(note.contains(why), "{named}: {note}");
+    }
+    for (name, arg, why) in [
+        (
+            "inspect-dev-zero",
+            "/dev/zero",
+            "/dev/zero: not a regular file",
+        ),
+        ("inspect-folder", ".", ".: it is a directory"),
+    ] {
+        let e = refused(name, &[], &["inspect", arg]);
+        assert!(!e.contains("not found"), "{name}: {e}");
+        assert!(e.contains(why), "{name}: {e}");
+    }
+}
