@@ -27,7 +27,10 @@ fn devices_and_pipes_are_refused_before_reading() {
     );
     let mesh = br#"{"objects": [{"mesh": {"file": "/dev/zero"}}]}"#;
     let e = refused("mesh-dev-zero", &[("m.json", mesh)], &["render", "m.json"]);
-    assert!(e.starts_with("error: /dev/zero: not a regular file"), "{e}");
+    assert!(
+        e.starts_with("error: m.json: objects[0].mesh.file: '/dev/zero' leaves the scene's folder"),
+        "{e}"
+    );
     let e = refused("diff-dev-zero", &[], &["diff", "/dev/zero", "/dev/zero"]);
     assert!(
         e.starts_with("error: cannot read /dev/zero: not a regular file"),
@@ -396,4 +399,69 @@ fn wrong_types_are_named_in_the_users_words() {
         );
         assert!(!names_a_rust_type(&e), "{name}: {e}");
     }
+}
+
+/// A mesh is read from the scene's folder or below it, never from elsewhere:
+/// `../`, an absolute path or a symlink out of the folder is refused in one
+/// line naming the field, whether or not the file it names exists (issue 29).
+#[cfg(unix)]
+#[test]
+fn a_mesh_must_stay_in_the_scenes_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = dir.path().join("scenes");
+    std::fs::create_dir_all(scenes.join("sub")).unwrap();
+    let tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::fs::write(dir.path().join("outside.obj"), tri).unwrap();
+    std::fs::write(scenes.join("inside.obj"), tri).unwrap();
+    std::os::unix::fs::symlink(dir.path(), scenes.join("up")).unwrap();
+    std::os::unix::fs::symlink(dir.path().join("outside.obj"), scenes.join("out.obj")).unwrap();
+    let run = |mesh: &str| {
+        let scene = format!(
+            r#"{{"render": {{"width": 4, "height": 3}}, "objects": [{{"mesh": {{"file": "{mesh}"}}}}]}}"#
+        );
+        std::fs::write(scenes.join("s.json"), scene).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(["render", "s.json", "-o", "out.png"])
+            .current_dir(&scenes)
+            .output()
+            .unwrap();
+        (out.status.code(), String::from_utf8(out.stderr).unwrap())
+    };
+    let outside = dir.path().join("outside.obj").display().to_string();
+    for mesh in [
+        "../outside.obj",
+        "sub/../../outside.obj",
+        outside.as_str(),
+        "up/outside.obj",
+        "out.obj",
+        "up/scenes/../outside.obj",
+        "../../../../../../../../etc/shadow",
+        "../../../../../../../../no/such/file.obj",
+        "up/no-such-file.obj",
+    ] {
+        let (code, e) = run(mesh);
+        assert_eq!(code, Some(1), "{mesh}: {e}");
+        assert_eq!(e.lines().count(), 1, "{mesh}: {e}");
+        assert!(
+            e.starts_with("error: s.json: objects[0].mesh.file: ")
+                && e.contains("leaves the scene's folder"),
+            "{mesh}: {e}"
+        );
+        assert!(
+            !e.contains("no such file") && !e.contains("permission"),
+            "{mesh}: {e}"
+        );
+    }
+    for mesh in [
+        "inside.obj",
+        "./inside.obj",
+        "sub/../inside.obj",
+        "up/scenes/inside.obj",
+    ] {
+        let (code, e) = run(mesh);
+        assert_eq!(code, Some(0), "{mesh}: {e}");
+    }
+    let (code, e) = run("sub/none.obj");
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("no such file"), "{e}");
 }
