@@ -58,7 +58,10 @@ fn look_at(eye: DVec3, c: &CameraFile) -> Result<CameraSpec, FieldError> {
     if !(low..=high).contains(&fov) {
         return Err(at(
             "fov",
-            format!("must be from {low} to {high} degrees, got {fov}"),
+            format!(
+                "must be from {low} to {high} degrees, got {}",
+                limits::num(fov)
+            ),
         ));
     }
     Ok(CameraSpec::LookAt {

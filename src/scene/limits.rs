@@ -123,11 +123,17 @@ fn show(v: DVec3) -> String {
     format!("[{}, {}, {}]", num(v.x), num(v.y), num(v.z))
 }
 
-/// A number as short as it reads: `1e9`, `0.001`, `-2`.
-fn num(x: f64) -> String {
+/// A number as short as it reads: `1e9`, `0.001`, `0.0001`, `-2`, `1e-5`,
+/// `1e-300` (never 300 digits): how an error quotes a number. Written out
+/// unless that takes more than two characters beyond the scientific form.
+pub fn num(x: f64) -> String {
     let plain = format!("{x}");
     let sci = format!("{x:e}");
-    if sci.len() < plain.len() { sci } else { plain }
+    if plain.len() > sci.len() + 2 {
+        sci
+    } else {
+        plain
+    }
 }
 
 #[cfg(test)]
@@ -145,6 +151,9 @@ mod tests {
         assert_eq!(direction(DVec3::new(0.0, 3.0, 0.0)), Ok(DVec3::Y));
         assert_eq!(length(0.0).unwrap_err(), "must be from 1e-9 to 1e9, got 0");
         assert_eq!(within(0.5, 0.01, 100.0), Ok(0.5));
+        for (x, shown) in [(1e-300, "1e-300"), (-1e300, "-1e300"), (1e-4, "0.0001")] {
+            assert_eq!(num(x), shown);
+        }
         assert!(color(DVec3::new(0.0, 1e7, 0.0)).is_err());
         assert!(color(DVec3::new(0.0, -0.1, 0.0)).is_err());
         assert!(scale(DVec3::new(-2.0, 1.0, 1.0)).is_ok());

@@ -120,7 +120,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         };
         // serde quotes an unknown key as written: a newline or an escape in it
         // would break the one-line message or reach the terminal.
-        let message = strict::printable(&message);
+        let message = strict::printable(&strict::in_users_words(&message));
         SceneError::Syntax {
             file: file.to_owned(),
             line: e.line(),
@@ -303,7 +303,14 @@ impl Builder<'_> {
                 if (0.0..=max).contains(&v) {
                     Ok(v)
                 } else {
-                    Err(self.invalid(at(f), format_args!("must be from 0 to {max}, got {v}")))
+                    Err(self.invalid(
+                        at(f),
+                        format_args!(
+                            "must be from 0 to {}, got {}",
+                            limits::num(max),
+                            limits::num(v)
+                        ),
+                    ))
                 }
             };
         let (low, high) = limits::IOR;
@@ -315,7 +322,7 @@ impl Builder<'_> {
         if reflective + transparent > 1.0 {
             return Err(self.invalid(
                 format_args!("materials.{name}"),
-                format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {reflective} + {transparent}"),
+                format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {} + {}", limits::num(reflective), limits::num(transparent)),
             ));
         }
         let max = limits::MAX_COEFFICIENT;
@@ -432,7 +439,8 @@ impl Builder<'_> {
     /// however many objects use it.
     fn mesh(&self, i: usize, m: &MeshFile) -> Result<Shape, SceneError> {
         self.check(format_args!("objects[{i}].mesh.file"), &m.file, |f| {
-            name_ok(f)
+            name_ok(f)?;
+            within(self.dir, f)
         })?;
         let path = self.dir.join(&m.file);
         let key = (
@@ -509,6 +517,53 @@ impl Builder<'_> {
 
 /// A name shown in traces, errors and the terminal: no control characters,
 /// which a terminal would obey (`\u{1b}[2J` clears the screen).
+/// A mesh's `file` stays in the scene's folder `dir` or below it: no `..`
+/// above the folder, no absolute path or symlink that resolves out of it (the
+/// deepest part of the path that exists is resolved). A path out is refused whether or not
+/// its file exists, so a scene cannot probe the machine's files.
+fn within(dir: &Path, file: &str) -> Result<(), String> {
+    use std::path::Component;
+    let leaves = || {
+        Err(format!(
+            "'{file}' leaves the scene's folder (a mesh is read from the scene's folder or one below it)"
+        ))
+    };
+    // A relative path climbing above the folder, by its words alone (an
+    // absolute path is judged by where it resolves, below).
+    let mut depth = 0usize;
+    for part in Path::new(file).components() {
+        match part {
+            Component::Normal(_) => depth += 1,
+            Component::ParentDir if depth > 0 => depth -= 1,
+            Component::ParentDir => return leaves(),
+            Component::CurDir | Component::RootDir | Component::Prefix(_) => {}
+        }
+    }
+    let dir = if dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        dir
+    };
+    let Ok(root) = std::fs::canonicalize(dir) else {
+        return Ok(());
+    };
+    let path = dir.join(file);
+    let mut part: &Path = &path;
+    loop {
+        if let Ok(real) = std::fs::canonicalize(part) {
+            return if real.starts_with(&root) {
+                Ok(())
+            } else {
+                leaves()
+            };
+        }
+        match part.parent() {
+            Some(up) => part = up,
+            None => return Ok(()),
+        }
+    }
+}
+
 fn name_ok(name: &str) -> Result<(), String> {
     match name.chars().find(|c| c.is_control()) {
         Some(c) => Err(format!(

@@ -4,6 +4,7 @@
 use crate::methods::{
     Accel, Antialiasing, IntersectionMethods, Offset, SphereMethod, TriangleMethod, Weights,
 };
+use crate::scene::limits;
 
 /// How to render: image size, sampling, recursion limits and methods.
 #[derive(Clone, Copy, Debug, PartialEq, serde::Serialize, serde::Deserialize)]
@@ -124,7 +125,7 @@ impl RenderSettings {
                 "cutoff",
                 format!(
                     "must be a number from 0 up to (not including) 1, got {}",
-                    self.cutoff
+                    limits::num(self.cutoff)
                 ),
             ));
         }
@@ -134,7 +135,8 @@ impl RenderSettings {
             return Err((
                 "aa",
                 format!(
-                    "adaptive needs a threshold ≥ 0 and at most 6 levels, got {threshold} and {levels}"
+                    "adaptive needs a threshold ≥ 0 and at most 6 levels, got {} and {levels}",
+                    limits::num(threshold)
                 ),
             ));
         }
@@ -143,7 +145,7 @@ impl RenderSettings {
         {
             return Err((
                 "offset",
-                format!("an epsilon must be a number > 0, got {e}"),
+                format!("an epsilon must be a number > 0, got {}", limits::num(e)),
             ));
         }
         Ok(())

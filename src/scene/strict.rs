@@ -22,6 +22,53 @@ pub fn printable(text: &str) -> String {
         .collect()
 }
 
+/// serde's message with the Rust type it expected (`f64`, `u32`, `struct
+/// SceneFile`, `a sequence of 3 f64 values`) said in the format's words (`a
+/// number`, `a whole number ≥ 0`, `a scene object`, `three numbers [x, y,
+/// z]`). Only what follows the last "expected " is a type: a key or a value
+/// the user wrote, quoted before it, is left as written.
+pub fn in_users_words(message: &str) -> String {
+    const EXPECTED: &str = "expected ";
+    let Some(at) = message.rfind(EXPECTED) else {
+        return message.to_owned();
+    };
+    let (head, tail) = message.split_at(at + EXPECTED.len());
+    let number = |t: &str| match t {
+        "f32" | "f64" => Some("a number"),
+        "u8" | "u16" | "u32" | "u64" | "u128" | "usize" => Some("a whole number ≥ 0"),
+        "i8" | "i16" | "i32" | "i64" | "i128" | "isize" => Some("a whole number"),
+        _ => None,
+    };
+    let words = if let Some(words) = number(tail) {
+        words.to_owned()
+    } else if let Some(n) = tail
+        .strip_prefix("a sequence of ")
+        .and_then(|t| t.split_once(' '))
+        .and_then(|(n, t)| number(t.strip_suffix(" values")?).map(|_| n))
+    {
+        match n {
+            "3" => "three numbers [x, y, z]".to_owned(),
+            n => format!("a list of {n} numbers"),
+        }
+    } else if let Some(name) = tail
+        .strip_prefix("struct ")
+        .or_else(|| tail.strip_prefix("tuple struct "))
+    {
+        // serde adds " with N elements" when an array stood for the struct.
+        match name.split(' ').next().unwrap_or(name) {
+            "SceneFile" | "Root" => "a scene object",
+            "TraceDocument" => "a trace object",
+            _ => "an object {…}",
+        }
+        .to_owned()
+    } else if tail.starts_with("enum ") {
+        "one of the names the format lists".to_owned()
+    } else {
+        return message.to_owned();
+    };
+    format!("{head}{words}")
+}
+
 /// Reads `T` (a struct) from a JSON object only.
 pub fn object<'de, D: Deserializer<'de>, T: Deserialize<'de>>(d: D) -> Result<T, D::Error> {
     T::deserialize(ObjectOnly(d))

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::source::BUILT_IN;
-use crate::scene::strict::printable;
+use crate::scene::strict::{in_users_words, printable};
 use crate::tree::document::{FORMAT, TraceDocument, VERSION};
 use crate::tree::trace_check;
 
@@ -43,7 +43,7 @@ pub fn parse(text: &str) -> Result<TraceDocument, String> {
             "{}:{}: not a raytree trace: {}",
             e.line(),
             e.column(),
-            printable(without_position(&e.to_string()))
+            printable(&in_users_words(without_position(&e.to_string())))
         )
     })?;
     trace_check::structure(&trace).map_err(|e| format!(" {e}"))?;
@@ -107,9 +107,14 @@ fn find_scene(trace: &TraceDocument, path: &Path) -> (Option<Scene>, Option<Stri
         None
     } else {
         let beside = path.parent().unwrap_or(Path::new("")).join(named);
-        match [beside, PathBuf::from(named)]
-            .into_iter()
+        let places = [beside, PathBuf::from(named)];
+        // A regular file first; else something there that is no file (a
+        // device, a folder), which loading then names for what it is.
+        match places
+            .iter()
             .find(|p| p.is_file())
+            .or_else(|| places.iter().find(|p| p.exists()))
+            .cloned()
         {
             Some(found) => Some(found),
             None => {

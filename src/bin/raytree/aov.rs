@@ -17,7 +17,7 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
     let aov = Aov::parse(name, &scene).map_err(|e| anyhow!("--aov: {e}"))?;
     let label = aov.name(&scene).replace(['=', '/', ' '], "-");
     let path = output::name_or(&args.output, || {
-        format!("{}-{label}.png", args.scene.stem())
+        output::stem_and(args.scene.stem(), &format!("-{label}.png"))
     });
     output::require_png(&path, "a per-pixel quantity")?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;

@@ -52,11 +52,11 @@ impl SceneArgs {
 
     /// The scene's file stem, or "whitted" for the built-in scene: the start of
     /// default output names.
-    pub fn stem(&self) -> String {
-        self.scene.as_ref().and_then(|p| p.file_stem()).map_or_else(
-            || "whitted".to_owned(),
-            |s| s.to_string_lossy().into_owned(),
-        )
+    pub fn stem(&self) -> &std::ffi::OsStr {
+        self.scene
+            .as_ref()
+            .and_then(|p| p.file_stem())
+            .unwrap_or("whitted".as_ref())
     }
 }
 

@@ -45,7 +45,9 @@ pub fn run(args: &Args) -> Result<()> {
         scene.settings.width = scene.settings.width.div_ceil(2);
         scene.settings.height = scene.settings.height.div_ceil(2);
     }
-    let path = output::name_or(&args.output, || format!("{}-chart.png", args.scene.stem()));
+    let path = output::name_or(&args.output, || {
+        output::stem_and(args.scene.stem(), "-chart.png")
+    });
     output::require_png(&path, "a chart")?;
     let inputs = args.scene.inputs(&scene);
     if let Some(csv) = args.csv.as_deref().filter(|c| same_file(c, &path)) {

@@ -96,8 +96,8 @@ fn parse_window(s: &str) -> Result<(DVec2, DVec2), String> {
 pub fn run(args: &Args) -> Result<()> {
     let (scene, source) = args.scene.load()?;
     let path = output::name_or(&args.output, || match args.target.pixel {
-        Some((x, y)) => format!("{}-diagram-{x}-{y}.png", args.scene.stem()),
-        None => format!("{}-diagram-ray.png", args.scene.stem()),
+        Some((x, y)) => output::stem_and(args.scene.stem(), &format!("-diagram-{x}-{y}.png")),
+        None => output::stem_and(args.scene.stem(), "-diagram-ray.png"),
     });
     output::require_png(&path, "a diagram")?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;

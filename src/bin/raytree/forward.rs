@@ -55,7 +55,7 @@ pub fn run(args: &Args) -> Result<()> {
         bail!("--pupil: must be a number > 0, got {pupil}");
     }
     let path = output::name_or(&args.output, || {
-        format!("{}-forward.png", args.scene.stem())
+        output::stem_and(args.scene.stem(), "-forward.png")
     });
     output::require_png(&path, "a forward trace")?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;

@@ -14,6 +14,7 @@
 //! SIGQUIT end the helper, remove its folder and every pending file and give the
 //! terminal back; default output names; progress bars.
 
+use std::ffi::{OsStr, OsString};
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ExitStatus, Output};
@@ -23,6 +24,7 @@ use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raytree::io::image_file::{self, Format};
 use raytree::io::output::{self, PendingFile};
+use raytree::scene::strict::printable;
 
 /// Writes `text` to standard output, all of it, and flushes it: a table, a
 /// trace, a line of figures.
@@ -30,9 +32,15 @@ pub fn print(text: impl AsRef<[u8]>) -> io::Result<()> {
     write_all(io::stdout().lock(), "output", text.as_ref())
 }
 
-/// A line on standard error: what was written, a warning.
+/// A line on standard error: what was written, a warning. Its control
+/// characters are escaped (`\u{1b}`), as an error's are: a file name in it is
+/// data, and never instructs the terminal or breaks the line.
 pub fn note(line: &str) -> io::Result<()> {
-    write_all(io::stderr().lock(), "error", format!("{line}\n").as_bytes())
+    write_all(
+        io::stderr().lock(),
+        "error",
+        format!("{}\n", printable(line)).as_bytes(),
+    )
 }
 
 /// The program's last line on standard error, an error or a signal: when it
@@ -119,7 +127,8 @@ pub fn clean_up_on_signals() {
                 SIGQUIT => "quit (SIGQUIT)",
                 _ => "hung up (SIGHUP)",
             };
-            last_word(&format!("\n{what}: no output written"));
+            let _ = write_all(io::stderr().lock(), "error", b"\n");
+            last_word(&format!("{what}: no output written"));
             std::process::exit(128 + signal);
         }
     });
@@ -197,8 +206,16 @@ impl Drop for Helper {
 }
 
 /// `given`, or `default` (a name in the current folder).
-pub fn name_or(given: &Option<PathBuf>, default: impl FnOnce() -> String) -> PathBuf {
+pub fn name_or(given: &Option<PathBuf>, default: impl FnOnce() -> OsString) -> PathBuf {
     given.clone().unwrap_or_else(|| PathBuf::from(default()))
+}
+
+/// A default output name: `stem` (an input's name, its bytes kept as they
+/// are, UTF-8 or not) followed by `ending` (`-chart.png`).
+pub fn stem_and(stem: &OsStr, ending: &str) -> OsString {
+    let mut name = stem.to_owned();
+    name.push(ending);
+    name
 }
 
 /// Refuses an output that is not a `.png`; `what` names the figure.

@@ -63,11 +63,8 @@ pub fn run(args: &Args) -> Result<()> {
     };
     let (program, repaired) = postscript::repair(program);
     let path = output::name_or(&args.output, || {
-        let stem = source.file_stem().map_or_else(
-            || "postscript".to_owned(),
-            |s| s.to_string_lossy().into_owned(),
-        );
-        format!("{stem}.png")
+        let stem = source.file_stem().unwrap_or("postscript".as_ref());
+        output::stem_and(stem, ".png")
     });
     output::require_png(&path, "a Ghostscript image")?;
     let pending = output::create(&path, std::slice::from_ref(&source))?;

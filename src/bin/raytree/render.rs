@@ -50,7 +50,7 @@ pub fn run(args: &Args) -> Result<()> {
         return crate::aov::run(args, name);
     }
     let (scene, _) = args.scene.load()?;
-    let path = output::name_or(&args.output, || format!("{}.png", args.scene.stem()));
+    let path = output::name_or(&args.output, || output::stem_and(args.scene.stem(), ".png"));
     let format = image_file::format_of(&path)?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
     // The clock starts before the threads do: their start-up is part of the time.

@@ -52,7 +52,10 @@ pub fn run(args: &Args) -> Result<()> {
     )
     .map_err(anyhow::Error::msg)?;
     let out = output::name_or(&args.output, || {
-        format!("{}-strip-{}.png", args.scene.stem(), args.vary.file_word())
+        output::stem_and(
+            args.scene.stem(),
+            &format!("-strip-{}.png", args.vary.file_word()),
+        )
     });
     output::require_png(&out, "a strip")?;
     let pending = output::create(&out, &args.scene.inputs(&base))?;

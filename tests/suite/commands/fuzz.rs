@@ -381,6 +381,9 @@ fn mutated(u: &mut Unstructured, seeds: &[Value]) -> String {
 }
 
 fn one_line(message: &str) -> Result<(), String> {
+    if super::inputs::names_a_rust_type(message) {
+        return Err(format!("names a Rust type: {message:?}"));
+    }
     match message.contains('\n') || message.is_empty() {
         true => Err(format!("not one line: {message:?}")),
         false => Ok(()),

@@ -27,7 +27,10 @@ fn devices_and_pipes_are_refused_before_reading() {
     );
     let mesh = br#"{"objects": [{"mesh": {"file": "/dev/zero"}}]}"#;
     let e = refused("mesh-dev-zero", &[("m.json", mesh)], &["render", "m.json"]);
-    assert!(e.starts_with("error: /dev/zero: not a regular file"), "{e}");
+    assert!(
+        e.starts_with("error: m.json: objects[0].mesh.file: '/dev/zero' leaves the scene's folder"),
+        "{e}"
+    );
     let e = refused("diff-dev-zero", &[], &["diff", "/dev/zero", "/dev/zero"]);
     assert!(
         e.starts_with("error: cannot read /dev/zero: not a regular file"),
@@ -88,27 +91,27 @@ fn the_strict_format_has_no_holes() {
         (
             "array-scene",
             "[]",
-            ":1:1: invalid type: sequence, expected struct SceneFile",
+            ":1:1: invalid type: sequence, expected a scene object",
         ),
         (
             "positional-object",
             r#"{"objects": [[null, {"center": [0, 0, 0], "radius": 1}]]}"#,
-            ":1:13: objects[0]: invalid type: sequence, expected struct ObjectFile",
+            ":1:13: objects[0]: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-sphere",
             r#"{"objects": [{"sphere": [[0, 0, 0], 1]}]}"#,
-            ":1:24: objects[0].sphere: invalid type: sequence, expected struct SphereFile",
+            ":1:24: objects[0].sphere: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-render",
             r#"{"render": [64, 48]}"#,
-            ":1:11: render: invalid type: sequence, expected struct Overrides",
+            ":1:11: render: invalid type: sequence, expected an object {…}",
         ),
         (
             "positional-rotate",
             r#"{"objects": [{"sphere": {}, "transform": [{"rotate": [[0, 1, 0], 45]}]}]}"#,
-            "objects[0].transform[0].rotate: invalid type: sequence, expected struct RotateFile",
+            "objects[0].transform[0].rotate: invalid type: sequence, expected an object {…}",
         ),
         (
             "duplicate-material",
@@ -195,6 +198,37 @@ fn numbers_outside_the_limits_and_left_handed_frames_are_refused() {
             r#"{"camera": {"fov": 0.0001}}"#,
             ": camera.fov: must be from 0.001 to 179.999 degrees, got 0.0001",
         ),
+        // A number is echoed as short as it reads, not as 300 digits (issue 29).
+        (
+            "fov-tiny",
+            r#"{"camera": {"fov": 1e-300}}"#,
+            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e-300",
+        ),
+        (
+            "fov-huge",
+            r#"{"camera": {"fov": 1e300}}"#,
+            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e300",
+        ),
+        (
+            "reflective-tiny",
+            r#"{"materials": {"m": {"reflective": -1e-300}}}"#,
+            ": materials.m.reflective: must be from 0 to 1, got -1e-300",
+        ),
+        (
+            "shininess-huge",
+            r#"{"materials": {"m": {"shininess": 1e300}}}"#,
+            ": materials.m.shininess: must be from 0 to 1e6, got 1e300",
+        ),
+        (
+            "cutoff-tiny",
+            r#"{"render": {"cutoff": -1e-300}}"#,
+            ": render.cutoff: must be a number from 0 up to (not including) 1, got -1e-300",
+        ),
+        (
+            "epsilon-tiny",
+            r#"{"render": {"offset": {"epsilon": -1e-300}}}"#,
+            ": render.offset: an epsilon must be a number > 0, got -1e-300",
+        ),
         (
             "left-handed",
             r#"{"camera": {"u": [-1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 1}}"#,
@@ -265,4 +299,169 @@ fn the_most_extreme_valid_scene_renders_and_traces_finite_numbers() {
         );
         assert!(json.len() > 1000);
     }
+}
+
+/// Whether `message` names a Rust type (`struct SceneFile`, `f64`, `usize`)
+/// where a user should read a word of the format.
+pub fn names_a_rust_type(message: &str) -> bool {
+    message.contains("struct ")
+        || message.contains("enum ")
+        || message
+            .split(|c: char| !c.is_ascii_alphanumeric())
+            .any(|w| {
+                matches!(
+                    w,
+                    "f32"
+                        | "f64"
+                        | "u8"
+                        | "u16"
+                        | "u32"
+                        | "u64"
+                        | "usize"
+                        | "i32"
+                        | "i64"
+                        | "isize"
+                )
+            })
+}
+
+/// A value of the wrong type is named in the format's words: a number, a
+/// whole number, a scene object, never `f64` or `struct SceneFile` (issue 29).
+#[test]
+fn wrong_types_are_named_in_the_users_words() {
+    let cases = [
+        (
+            "string-for-number",
+            r#"{"camera": {"fov": "x"}}"#,
+            ":1:22: camera.fov: invalid type: string \"x\", expected a number",
+        ),
+        (
+            "float-for-count",
+            r#"{"render": {"width": 1.5}}"#,
+            ":1:24: render.width: invalid type: floating point `1.5`, expected a whole number",
+        ),
+        (
+            "negative-count",
+            r#"{"render": {"width": -1}}"#,
+            ":1:23: render.width: invalid value: integer `-1`, expected a whole number",
+        ),
+        (
+            "array-scene",
+            "[]",
+            ":1:1: invalid type: sequence, expected a scene object",
+        ),
+        (
+            "string-for-point",
+            r#"{"camera": {"eye": "x"}}"#,
+            ":1:22: camera.eye: invalid type: string \"x\", expected",
+        ),
+        (
+            "string-in-point",
+            r#"{"camera": {"eye": [0, "x", 0]}}"#,
+            "camera.eye",
+        ),
+        (
+            "string-for-color",
+            r#"{"lights": [{"position": [0, 1, 0], "color": [1, 1, "x"]}]}"#,
+            "lights[0].color",
+        ),
+        (
+            "string-for-depth",
+            r#"{"render": {"max_depth": "x"}}"#,
+            "render.max_depth: invalid type: string \"x\", expected a whole number",
+        ),
+        (
+            "number-for-object",
+            r#"{"objects": [5]}"#,
+            "objects[0]: invalid type: integer `5`, expected",
+        ),
+        (
+            "number-for-material",
+            r#"{"materials": {"m": 5}}"#,
+            "materials.m: invalid type: integer `5`, expected",
+        ),
+        (
+            "string-for-offset",
+            r#"{"render": {"offset": {"epsilon": "x"}}}"#,
+            "render.offset",
+        ),
+        (
+            "string-for-spp",
+            r#"{"render": {"spp": "x"}}"#,
+            "render.spp",
+        ),
+    ];
+    for (name, text, expected) in cases {
+        let e = scene_refused(name, text);
+        assert!(
+            e.starts_with(expected) || e.contains(expected),
+            "{name}: {e}"
+        );
+        assert!(!names_a_rust_type(&e), "{name}: {e}");
+    }
+}
+
+/// A mesh is read from the scene's folder or below it, never from elsewhere:
+/// `../`, an absolute path or a symlink out of the folder is refused in one
+/// line naming the field, whether or not the file it names exists (issue 29).
+#[cfg(unix)]
+#[test]
+fn a_mesh_must_stay_in_the_scenes_folder() {
+    let dir = tempfile::tempdir().unwrap();
+    let scenes = dir.path().join("scenes");
+    std::fs::create_dir_all(scenes.join("sub")).unwrap();
+    let tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::fs::write(dir.path().join("outside.obj"), tri).unwrap();
+    std::fs::write(scenes.join("inside.obj"), tri).unwrap();
+    std::os::unix::fs::symlink(dir.path(), scenes.join("up")).unwrap();
+    std::os::unix::fs::symlink(dir.path().join("outside.obj"), scenes.join("out.obj")).unwrap();
+    let run = |mesh: &str| {
+        let scene = format!(
+            r#"{{"render": {{"width": 4, "height": 3}}, "objects": [{{"mesh": {{"file": "{mesh}"}}}}]}}"#
+        );
+        std::fs::write(scenes.join("s.json"), scene).unwrap();
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(["render", "s.json", "-o", "out.png"])
+            .current_dir(&scenes)
+            .output()
+            .unwrap();
+        (out.status.code(), String::from_utf8(out.stderr).unwrap())
+    };
+    let outside = dir.path().join("outside.obj").display().to_string();
+    for mesh in [
+        "../outside.obj",
+        "sub/../../outside.obj",
+        outside.as_str(),
+        "up/outside.obj",
+        "out.obj",
+        "up/scenes/../outside.obj",
+        "../../../../../../../../etc/shadow",
+        "../../../../../../../../no/such/file.obj",
+        "up/no-such-file.obj",
+    ] {
+        let (code, e) = run(mesh);
+        assert_eq!(code, Some(1), "{mesh}: {e}");
+        assert_eq!(e.lines().count(), 1, "{mesh}: {e}");
+        assert!(
+            e.starts_with("error: s.json: objects[0].mesh.file: ")
+                && e.contains("leaves the scene's folder"),
+            "{mesh}: {e}"
+        );
+        assert!(
+            !e.contains("no such file") && !e.contains("permission"),
+            "{mesh}: {e}"
+        );
+    }
+    for mesh in [
+        "inside.obj",
+        "./inside.obj",
+        "sub/../inside.obj",
+        "up/scenes/inside.obj",
+    ] {
+        let (code, e) = run(mesh);
+        assert_eq!(code, Some(0), "{mesh}: {e}");
+    }
+    let (code, e) = run("sub/none.obj");
+    assert_eq!(code, Some(1), "{e}");
+    assert!(e.contains("no such file"), "{e}");
 }

@@ -272,3 +272,79 @@ fn small_promises_hold() {
         }
     }
 }
+
+/// A file name is data, not a command to the terminal: a "wrote" line escapes
+/// its control characters as an error does (issue 29).
+#[cfg(unix)]
+#[test]
+fn a_success_line_escapes_the_file_names_it_names() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = br#"{"render": {"width": 4, "height": 3}, "objects": []}"#;
+    std::fs::write(dir.path().join("a\u{1b}]0;pwned\u{7}.json"), scene).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args([
+            "render",
+            "a\u{1b}]0;pwned\u{7}.json",
+            "-o",
+            "b\u{1b}[2J.png",
+        ])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(out.status.success(), "{stderr}");
+    assert!(!stderr.contains(['\u{1b}', '\u{7}']), "{stderr:?}");
+    assert!(stderr.starts_with("wrote b\\u{1b}[2J.png ("), "{stderr:?}");
+    assert!(dir.path().join("b\u{1b}[2J.png").exists());
+    // The default output name of a trace: the scene's stem, escaped when named.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["render", "a\u{1b}]0;pwned\u{7}.json"])
+        .current_dir(dir.path())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8(out.stderr).unwrap();
+    assert!(out.status.success(), "{stderr}");
+    assert!(
+        stderr.starts_with("wrote a\\u{1b}]0;pwned\\u{7}.png ("),
+        "{stderr:?}"
+    );
+    assert!(dir.path().join("a\u{1b}]0;pwned\u{7}.png").exists());
+}
+
+/// A default output name keeps the bytes of its scene's name, even when they
+/// are not UTF-8 (`\xff.json` writes `\xff.png`, not `\u{fffd}.png`).
+#[cfg(unix)]
+#[test]
+fn a_default_output_name_keeps_the_scene_names_bytes() {
+    use std::ffi::OsStr;
+    use std::os::unix::ffi::OsStrExt;
+    let dir = tempfile::tempdir().unwrap();
+    let scene = br#"{"render": {"width": 4, "height": 3}, "objects": []}"#;
+    std::fs::write(dir.path().join(OsStr::from_bytes(b"\xff.json")), scene).unwrap();
+    for (command, made) in [
+        (&["render"][..], &b"\xff.png"[..]),
+        (&["chart"][..], &b"\xff-chart.png"[..]),
+        (&["render", "--aov", "depth"][..], &b"\xff-depth.png"[..]),
+    ] {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(&command[..1])
+            .arg(OsStr::from_bytes(b"\xff.json"))
+            .args(&command[1..])
+            .current_dir(dir.path())
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{command:?}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(
+            dir.path().join(OsStr::from_bytes(made)).exists(),
+            "{command:?}: {:?}",
+            std::fs::read_dir(dir.path())
+                .unwrap()
+                .map(|e| e.unwrap().file_name())
+                .collect::<Vec<_>>()
+        );
+    }
+}

@@ -105,9 +105,29 @@ fn every_broken_trace_is_one_line_and_exit_1() {
         (
             "null-number",
             broken(|v| v["color"][0] = Value::Null),
-            "not a raytree trace: invalid type: null, expected f64",
+            "not a raytree trace: invalid type: null, expected a number",
         ),
         ("array", b"[]".to_vec(), "not a raytree trace"),
+        (
+            "array-is-no-trace-object",
+            b"[]".to_vec(),
+            "not a raytree trace: invalid length 0, expected a trace object",
+        ),
+        (
+            "string-for-a-pixel",
+            broken(|v| v["pixel"]["x"] = json!("a")),
+            "not a raytree trace: invalid type: string \"a\", expected a whole number",
+        ),
+        (
+            "fraction-for-a-depth",
+            broken(|v| v["settings"]["max_depth"] = json!(2.5)),
+            "not a raytree trace: invalid type: floating point `2.5`, expected a whole number",
+        ),
+        (
+            "number-for-a-root",
+            broken(|v| v["samples"][0]["tree"] = json!(1)),
+            "not a raytree trace: invalid type: integer `1`, expected",
+        ),
         (
             "old-version",
             broken(|v| v["version"] = json!(1)),
@@ -136,6 +156,7 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             e.starts_with("error: t.json") && e.contains(expected),
             "{name}: {e}"
         );
+        assert!(!super::inputs::names_a_rust_type(&e), "{name}: {e}");
     }
 }
 
@@ -251,4 +272,39 @@ fn an_adaptive_trace_is_written_and_read_back() {
     }
     let e = reading::parse(&v.to_string()).unwrap_err();
     assert!(e.contains("but a pixel has at most 81"), "{e}");
+}
+
+/// A scene the trace names that exists but is no scene file (a device, a
+/// folder) is said to be so, not "not found" (issue 29); the same for a scene
+/// given to `inspect` itself, refused before the terminal is touched.
+#[test]
+fn a_named_scene_that_is_no_file_is_said_to_be_so() {
+    let dir = tempfile::tempdir().unwrap();
+    for (named, why) in [
+        ("/dev/zero", "/dev/zero: not a regular file"),
+        ("folder", "folder: it is a directory"),
+    ] {
+        let mut v = serde_json::to_value(good_trace()).unwrap();
+        v["scene"]["file"] = json!(named);
+        let trace = dir.path().join("t.json");
+        std::fs::write(&trace, serde_json::to_vec(&v).unwrap()).unwrap();
+        std::fs::create_dir_all(dir.path().join("folder")).unwrap();
+        let opened = reading::open(&trace, None).unwrap();
+        assert!(opened.scene.is_none());
+        let note = opened.note.unwrap();
+        assert!(!note.contains("not found"), "{named}: {note}");
+        assert!(note.contains(why), "{named}: {note}");
+    }
+    for (name, arg, why) in [
+        (
+            "inspect-dev-zero",
+            "/dev/zero",
+            "/dev/zero: not a regular file",
+        ),
+        ("inspect-folder", ".", ".: it is a directory"),
+    ] {
+        let e = refused(name, &[], &["inspect", arg]);
+        assert!(!e.contains("not found"), "{name}: {e}");
+        assert!(e.contains(why), "{name}: {e}");
+    }
 }

@@ -92,7 +92,9 @@ fn the_hierarchy_finds_the_same_hits_as_testing_every_object() {
     let (mut saved, mut all) = (0u64, 0u64);
     for seed in 1..=6 {
         let text = random_scene(seed, 60 * seed as usize, dir.path());
-        let mut brute = raytree::scene::loader::parse(&text, "random.json").unwrap();
+        // Named in its mesh's folder: a mesh is read from the scene's folder.
+        let file = dir.path().join("random.json").display().to_string();
+        let mut brute = raytree::scene::loader::parse(&text, &file).unwrap();
         brute.settings.accel = Accel::None;
         let mut bvh = brute.clone();
         bvh.settings.accel = Accel::Bvh;
