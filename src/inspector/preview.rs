@@ -31,12 +31,23 @@ pub struct Window {
 }
 
 impl Window {
-    /// The image pixel under dot `(i, j)`, if the dot is over the image.
+    /// The image pixel under dot `(i, j)`, if the dot is over the image (as
+    /// the pixel loop maps it).
     pub fn pixel_at(&self, i: u16, j: u16, width: u32, height: u32) -> Option<(u32, u32)> {
-        let x = self.left + (f64::from(i) + 0.5) * self.scale;
-        let y = self.top + (f64::from(j) + 0.5) * self.scale;
-        (x >= 0.0 && y >= 0.0 && x < f64::from(width) && y < f64::from(height))
-            .then_some((x as u32, y as u32))
+        self.cells(1)
+            .pixel(u32::from(i), u32::from(j), width, height)
+    }
+
+    /// The window as the pixel loop's cells, one traced every `step` dots.
+    fn cells(&self, step: u16) -> Pixels {
+        Pixels::Window {
+            left: self.left,
+            top: self.top,
+            scale: self.scale,
+            cols: u32::from(self.cols),
+            rows: u32::from(self.rows),
+            step: u32::from(step),
+        }
     }
 
     /// The dot over the center of image pixel `(x, y)`, if it is in the pane.
@@ -72,14 +83,7 @@ pub fn render_picture(
     let tracer = Tracer::new(scene);
     let camera = scene.camera();
     let step: u16 = if pass == 0 { 4 } else { 1 };
-    let pixels = Pixels::Window {
-        left: window.left,
-        top: window.top,
-        scale: window.scale,
-        cols: u32::from(window.cols),
-        rows: u32::from(window.rows),
-        step: u32::from(step),
-    };
+    let pixels = window.cells(step);
     let traced = trace_pixels(
         scene,
         pixels,
