@@ -55,8 +55,9 @@ impl Plane {
 }
 
 /// Drops the coordinate along the normal's largest axis, so a checkerboard on the
-/// plane is a 2D pattern in the two other world axes and a point rounded a hair
-/// below the plane can never fall into the next layer of 3D cells.
+/// plane is a 2D pattern in the two other axes of the plane's own space (the
+/// world's, unless the plane has a transform) and a point rounded a hair below
+/// the plane can never fall into the next layer of 3D cells.
 fn flatten(p: DVec3, n: DVec3) -> DVec3 {
     let a = n.abs();
     if a.x >= a.y && a.x >= a.z {

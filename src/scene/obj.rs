@@ -216,6 +216,25 @@ mod tests {
     }
 
     #[test]
+    fn vertex_normals_are_unit_before_they_are_mixed() {
+        // Two vertex normals, one five times longer: made unit length first, their
+        // mix at the midpoint of the edge between them is halfway (45°); mixed as
+        // written, it would lean toward the long one (atan 5 ≈ 78.7°).
+        let obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 5 0 0\nf 1//1 2//2 3//1\n";
+        let m = parse(obj.as_bytes(), "long.obj", true).unwrap();
+        assert_eq!(m.normals, vec![DVec3::Z, DVec3::X]);
+        let ray = crate::math::ray::Ray::new(DVec3::new(0.5, 0.0, 1.0), DVec3::NEG_Z);
+        let s = m.surface(&ray, 1.0, 0, crate::methods::TriangleMethod::Watertight);
+        let halfway = DVec3::new(1.0, 0.0, 1.0).normalize();
+        // Two unit vectors mixed half and half and normalized: a few ulps apart.
+        assert!(
+            (s.shading_normal - halfway).length() < 1e-15,
+            "{:?}",
+            s.shading_normal
+        );
+    }
+
+    #[test]
     fn errors_name_the_file_and_line() {
         let cases = [
             (

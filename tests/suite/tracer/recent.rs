@@ -127,3 +127,57 @@ fn a_recorded_trace_shows_the_recent_blocker() {
         "{text}"
     );
 }
+
+#[test]
+fn a_mesh_tried_first_costs_its_own_boxes_and_triangles() {
+    // The umbrella as a mesh of 8 triangles: tried first, it is still one
+    // object's test, but that test walks the mesh's own hierarchy, so the
+    // counts show boxes and triangles, not "one primitive and no box"
+    // (book/src/trace-format.md, `recent`).
+    let dir = std::env::temp_dir().join(format!("raytree-recent-mesh-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let mut obj = String::new();
+    for i in 0..=4 {
+        let z = -20.0 + 10.0 * f64::from(i);
+        obj += &format!("v -20 5 {z}\nv 0 5 {z}\n");
+    }
+    for i in 0..4 {
+        let (a, b, c, d) = (2 * i + 1, 2 * i + 2, 2 * i + 3, 2 * i + 4);
+        obj += &format!("f {a} {b} {d}\nf {a} {d} {c}\n");
+    }
+    std::fs::write(dir.join("umbrella.obj"), obj).unwrap();
+    let text = r#"{ "camera": { "eye": [0, 2, -10], "look_at": [0, 0, 0] },
+        "materials": { "m": { "color": [0.5, 0.5, 0.5] } },
+        "lights": [{ "name": "sun", "position": [0, 50, 0] }],
+        "objects": [
+            { "name": "floor", "plane": { "point": [0, 0, 0], "normal": [0, 1, 0] }, "material": "m" },
+            { "name": "umbrella", "mesh": { "file": "umbrella.obj" }, "material": "m" }
+        ] }"#;
+    std::fs::write(dir.join("scene.json"), text).unwrap();
+    let scene = raytree::scene::loader::load(&dir.join("scene.json")).unwrap();
+    std::fs::remove_dir_all(&dir).unwrap();
+    let tracer = Tracer::new(&scene);
+    let mut rec = Shadows::default();
+    for x in [-5.0, -6.0] {
+        tracer.trace_primary(down_to(x), &mut rec);
+    }
+    let [first, second] = rec.0.as_slice() else {
+        panic!("two shadow rays: {:?}", rec.0);
+    };
+    assert!(matches!(
+        first.outcome,
+        ShadowOutcome::Blocked { object: 1, .. }
+    ));
+    assert_eq!(
+        second.recent,
+        Some(RecentTry {
+            object: 1,
+            blocks: true
+        })
+    );
+    // The mesh's own boxes, and at least the triangle that blocks.
+    assert!(
+        second.tested.boxes > 0 && second.tested.primitives >= 1,
+        "{second:?}"
+    );
+}

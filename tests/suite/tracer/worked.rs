@@ -176,3 +176,49 @@ fn total_internal_reflection_sends_the_refracted_share_to_the_reflection() {
         "incidence {incidence}"
     );
 }
+
+#[test]
+fn a_turned_plane_turns_its_checker_cells() {
+    // A floor y = 0 turned 45° about y, cells of side 1 colored 1 and 0.2, lit
+    // only by ambient light (k_a = 1), so a pixel's color is its cell's. The cells
+    // are laid out in the plane's own space (scenes/README.md, `checker`): the
+    // world point (0.9, 0, 0.5) is (0.283, 0, 0.990) there (rotating back by
+    // -45°), cell (0, 0); in world axes it would be cell (0, 0) too, so the test
+    // probes (0.9, 0, -0.5): own space (0.990, 0, 0.283), cell (0, 0), but world
+    // cell (0, -1), the other color.
+    let s = scene(
+        r#"{ "camera": {"eye": [0, 10, 0], "look_at": [0, 0, 0], "up": [0, 0, -1]},
+             "ambient_light": [1, 1, 1],
+             "materials": {"m": {"checker": {"colors": [[1, 1, 1], [0.2, 0.2, 0.2]], "size": 1},
+                                 "ambient": 1, "diffuse": 0, "specular": 0}},
+             "lights": [],
+             "objects": [{"plane": {"point": [0, 0, 0], "normal": [0, 1, 0]},
+                          "transform": [{"rotate_y": 45}], "material": "m"}] }"#,
+    );
+    let tracer = Tracer::new(&s);
+    let color_at = |x: f64, z: f64| {
+        let ray = Ray::new(DVec3::new(x, 5.0, z), DVec3::NEG_Y);
+        tracer.trace_primary(ray, &mut NoRecorder)
+    };
+    let cell = |p: DVec3| {
+        let own = glam::DQuat::from_rotation_y(-45f64.to_radians()) * p;
+        (own.x.floor() + own.z.floor()).rem_euclid(2.0)
+    };
+    for (x, z) in [
+        (0.9, -0.5),
+        (0.9, 0.5),
+        (-0.3, -1.2),
+        (1.7, 0.4),
+        (2.5, -2.2),
+    ] {
+        let expected = if cell(DVec3::new(x, 0.0, z)) == 0.0 {
+            1.0
+        } else {
+            0.2
+        };
+        let got = color_at(x, z);
+        // Ambient only: the color is the cell's times k_a = 1, exact but for the
+        // product's rounding.
+        assert!(close(got, DVec3::splat(expected), TOL), "({x}, {z}): {got}");
+    }
+}
