@@ -590,3 +590,71 @@ fn no_nan_or_infinity_reaches_an_image() {
     }
     println!("{renders} renders (every shipped scene × every method), no NaN or infinity");
 }
+
+// ---------------------------------------------------------------------------
+// Cracks between boxes: two boxes sharing a face, seen from straight above by a
+// camera whose middle pixel row lies exactly in the shared plane.
+
+/// The slab test computed `0·∞ = NaN` for a ray lying in a face plane and let
+/// it fall to one side of `min`/`max` or the other. Where two boxes share a
+/// face across z, both let the whole row through to the floor beneath: a crack,
+/// like Möller–Trumbore's between triangles. Where they share one across x,
+/// one box took the row but lit it with its side's normal, a line across the
+/// top. The closed test counts such a ray inside both slabs, and the face it
+/// meets is the top it crosses, not the side it runs along.
+#[test]
+fn two_boxes_sharing_a_face_leave_no_crack() {
+    for axis in [0, 2] {
+        let (up, min2, max1) = if axis == 0 {
+            ("[1, 0, 0]", "[0, 0, -1]", "[0, 1, 1]")
+        } else {
+            ("[0, 0, 1]", "[-1, 0, 0]", "[1, 1, 0]")
+        };
+        let s = scene(&format!(
+            r#"{{ "camera": {{ "eye": [0, 5, 0], "look_at": [0, 0, 0], "up": {up}, "fov": 60 }},
+                 "render": {{ "width": 41, "height": 41 }},
+                 "lights": [{{ "position": [0.3, 10, 0.2] }}],
+                 "objects": [
+                   {{ "name": "floor", "plane": {{ "point": [0, -1, 0], "normal": [0, 1, 0] }} }},
+                   {{ "name": "one", "box": {{ "min": [-1, 0, -1], "max": {max1} }} }},
+                   {{ "name": "two", "box": {{ "min": {min2}, "max": [1, 1, 1] }} }}
+                 ] }}"#
+        ));
+        let tracer = Tracer::new(&s);
+        let camera = s.camera();
+        let (mut seam, mut through) = (0, Vec::new());
+        for y in 0..s.settings.height {
+            for x in 0..s.settings.width {
+                let ray = camera.pixel_ray(f64::from(x), f64::from(y));
+                let mut rec = FirstHit::default();
+                tracer.trace_primary(ray, &mut rec);
+                let Some(hit) = rec.hit else { continue };
+                // The boxes hide the floor from the eye wherever it lies under them.
+                if hit.object == 0 && hit.point.x.abs() <= 1.0 && hit.point.z.abs() <= 1.0 {
+                    through.push((x, y));
+                }
+                if ray.dir[axis] == 0.0 && hit.object != 0 {
+                    seam += 1;
+                    assert_eq!(
+                        hit.normal,
+                        DVec3::Y,
+                        "axis {axis}, pixel {x},{y}: the top, not a side"
+                    );
+                }
+            }
+        }
+        println!(
+            "boxes sharing a face across axis {axis}: {seam} pixels of the row in its plane on the boxes, {} through to the floor",
+            through.len()
+        );
+        assert_eq!(
+            through,
+            [],
+            "axis {axis}: pixels that see the floor under the boxes"
+        );
+        assert!(
+            seam > 10,
+            "axis {axis}: the middle row lies in the shared plane and sees the boxes"
+        );
+    }
+}
