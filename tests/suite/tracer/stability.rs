@@ -658,3 +658,55 @@ fn two_boxes_sharing_a_face_leave_no_crack() {
         );
     }
 }
+
+// ---------------------------------------------------------------------------
+// Acne on a large triangle far from the origin.
+
+/// The reviewers' floor: one large triangle whose corners lie 12 units and
+/// more from the origin, under a light near and low. Its shadow rays met the
+/// triangle they left (`blocked by 'triangle1' at t = 3.295e-16`): the hit points
+/// near the origin are exact in y and the robust offset a few ULPs of them, but
+/// the watertight test's `t` for a ray running more along x than y is off by
+/// rounding errors of the corners' size, and nothing bounded them. Every pixel
+/// of the floor must be lit, as it is with a fixed epsilon of 1e-9.
+#[test]
+fn a_large_far_floor_triangle_is_lit_everywhere() {
+    let text = r#"{ "camera": { "eye": [0, 6, -0.5], "look_at": [0, 0, 0], "fov": 60 },
+             "render": { "width": 160, "height": 120 },
+             "lights": [{ "position": [-6.8, 5, -3.6] }],
+             "objects": [
+               { "name": "floor", "triangle": { "vertices": [[-12, 0, -12], [36, 0, -12], [-12, 0, 36]] } }
+             ] }"#;
+    let mut s = scene(text);
+    let mut blocked = Vec::new();
+    for (name, offset) in [
+        ("epsilon 1e-9", Offset::Epsilon(1e-9)),
+        ("robust (default)", Offset::Robust),
+    ] {
+        s.settings.offset = offset;
+        let tracer = Tracer::new(&s);
+        let camera = s.camera();
+        let (mut floor, mut dark) = (0, 0);
+        for y in 0..s.settings.height {
+            for x in 0..s.settings.width {
+                let mut rec = FirstHit::default();
+                tracer.trace_primary(camera.pixel_ray(f64::from(x), f64::from(y)), &mut rec);
+                let (Some(_), Some(shadow)) = (rec.hit, rec.shadow) else {
+                    continue;
+                };
+                floor += 1;
+                dark += usize::from(!matches!(shadow.outcome, ShadowOutcome::Reaches { .. }));
+            }
+        }
+        println!(
+            "offset {name:>16}: floor pixels {floor:>5}, shadowed by the floor itself {dark:>4}"
+        );
+        assert_eq!(floor, 160 * 120, "{name}: the floor fills the picture");
+        blocked.push(dark);
+    }
+    assert_eq!(
+        blocked,
+        [0, 0],
+        "floor pixels in the floor's own shadow (epsilon, robust)"
+    );
+}
