@@ -194,6 +194,18 @@ impl Triangle {
     /// `S + t·c`: its error bound is then pbrt-v4's `γ(7)·Σ|bᵢ·pᵢ|` (§6.8.4), small
     /// and independent of how far the ray came from. `normals` are per-vertex
     /// normals to interpolate for shading.
+    ///
+    /// That bound counts each vertex by its weight: at a vertex, only that vertex's
+    /// coordinates count, and at a vertex at the world origin nothing does. The
+    /// bound was then 0 and the robust offset one subnormal step (5e-324), and a
+    /// shadow ray met a neighbouring face again at t ≈ 1e-18 (lesson 13's sheet
+    /// under Möller–Trumbore). Yet the test that meets the next ray with this
+    /// triangle and its neighbours computes with all their vertices
+    /// (Möller–Trumbore with `S − A` and the edges, the watertight test with the
+    /// vertices moved to the ray's origin, an origin on this surface), so it
+    /// rounds at their scale, not the point's: closer to the surface than
+    /// `γ(7)·max|pᵢ|`, an origin is on it as far as either test can tell. That is
+    /// the bound's floor, the same on every axis, as for the other shapes.
     pub fn surface(&self, hit: &TriangleHit, normals: Option<[DVec3; 3]>) -> Surface {
         let w = hit.bary;
         let point = w.x * self.a + w.y * self.b + w.z * self.c;
@@ -203,10 +215,11 @@ impl Triangle {
             .map(|n| (w.x * n[0] + w.y * n[1] + w.z * n[2]).normalize_or_zero())
             .filter(|n| *n != DVec3::ZERO)
             .map_or(normal, |n| if n.dot(normal) < 0.0 { -n } else { n });
+        let vertices = self.a.abs().max(self.b.abs()).max(self.c.abs());
         Surface {
             point,
-            // Never zero (see `Plane::surface`): the offset must leave the surface.
-            point_error: error.max(DVec3::splat(gamma(7) * point.abs().max_element())),
+            // Never zero, nor subnormal (see `Plane::surface`).
+            point_error: error.max(DVec3::splat(gamma(7) * vertices.max_element())),
             normal,
             shading_normal: shading,
             pattern_point: point,
@@ -319,6 +332,10 @@ mod tests {
         tri.watertight(&ShearedRay::new(ray), 0.0, f64::INFINITY)
     }
 
+    fn moller_trumbore_test(tri: &Triangle, ray: &Ray) -> Option<TriangleHit> {
+        tri.moller_trumbore(ray, 0.0, f64::INFINITY)
+    }
+
     /// The reviewers' shadow acne: a floor triangle whose corners lie 12 units
     /// and more from the origin blocked its own shadow rays near the origin
     /// (`t ≈ 3e-16`). The hit point there is exact in y and the offset a few
@@ -357,5 +374,83 @@ mod tests {
         }
         assert_eq!(total, 8 * 1600, "every point seen");
         assert_eq!(acne, [], "(corner, tilt, from the point, points blocked)");
+    }
+
+    /// Lesson 13's sheet has a vertex at the origin, and its center pixel's ray
+    /// meets the sheet exactly there. The hit point's bound was `γ(7)·Σ|bᵢ·pᵢ|`,
+    /// with the origin's weight near 1 and the others rounding errors near 0:
+    /// about 1e-31, so the offset was one subnormal step, and under
+    /// Möller–Trumbore the shadow ray met a neighbouring face at t ≈ 1e-18.
+    /// Neither test may meet any of the six faces around the origin again,
+    /// toward any light on the eye's side.
+    #[test]
+    fn a_hit_at_the_origin_is_offset_past_both_tests() {
+        // The faces of lessons/13-numerics/sheet.obj around its vertex 265, the origin.
+        let v = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+        let v241 = v(
+            -0.10999174470158836,
+            0.10999174470158853,
+            -0.021998348940317936,
+        );
+        let v242 = v(0.0, 0.10840196848259029, 0.021680393696517974);
+        let v264 = v(-0.1108042482069638, 0.0, -0.04432169928278551);
+        let v266 = v(0.1076241902109098, 0.0, 0.04304967608436394);
+        let v288 = v(0.0, -0.10999174470158836, -0.021998348940317936);
+        let v289 = v(
+            0.10840196848259027,
+            -0.10840196848259011,
+            0.02168039369651842,
+        );
+        let o = DVec3::ZERO;
+        let fan = [
+            [v241, v242, o],
+            [v241, o, v264],
+            [v242, v266, o],
+            [v264, o, v288],
+            [o, v266, v289],
+            [o, v289, v288],
+        ]
+        .map(|[a, b, c]| Triangle { a, b, c });
+        let eye = DVec3::new(0.0, 0.0, 3.0);
+        let n = fan[0].normal();
+        let facing = if n.dot(eye) > 0.0 { n } else { -n };
+        let (side, across) = (
+            n.any_orthonormal_vector(),
+            n.cross(n.any_orthonormal_vector()),
+        );
+        for test in [moller_trumbore_test, watertight_test] {
+            // The nearest face, the first of equals, as a mesh keeps it.
+            let primary = Ray::new(eye, -eye);
+            let (tri, hit) = (fan.iter())
+                .filter_map(|tri| test(tri, &primary).map(|h| (tri, h)))
+                .fold(
+                    None,
+                    |best: Option<(&Triangle, TriangleHit)>, (tri, h)| match best {
+                        Some((_, b)) if b.t <= h.t => best,
+                        _ => Some((tri, h)),
+                    },
+                )
+                .expect("the ray meets the sheet");
+            // The origin: t = 1 up to a rounding or two.
+            assert!((hit.t - 1.0).abs() < 1e-15, "{hit:?}");
+            let s = tri.surface(&hit, None);
+            for k in 0..200 {
+                // Lights on a spiral over the side the eye is on.
+                let angle = f64::from(k) * 2.399;
+                let up = 0.05 + 0.9 * f64::from(k) / 200.0;
+                let dir = up * facing
+                    + (1.0 - up * up).sqrt() * (angle.cos() * side + angle.sin() * across);
+                let light = 5.0 * dir;
+                let origin = s.ray_origin(crate::methods::Offset::Robust, light - s.point);
+                let shadow = Ray::new(origin, light - origin);
+                for (f, face) in fan.iter().enumerate() {
+                    let again = test(face, &shadow);
+                    assert!(
+                        again.is_none_or(|h| h.t >= 1.0),
+                        "light {light}: face {f} met again at {again:?}, from {origin}"
+                    );
+                }
+            }
+        }
     }
 }

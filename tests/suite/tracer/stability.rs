@@ -710,3 +710,61 @@ fn a_large_far_floor_triangle_is_lit_everywhere() {
         "floor pixels in the floor's own shadow (epsilon, robust)"
     );
 }
+
+// ---------------------------------------------------------------------------
+// A hit at the world origin.
+
+/// Lesson 13's sheet has a vertex at the origin, and the ray of its center
+/// pixel 120,120 meets the sheet exactly there. The hit point's error bound
+/// was relative to the point, so nearly zero, and the robust offset one
+/// subnormal step: under Möller–Trumbore the shadow ray met the sheet again at
+/// t = 1.0e-18, and the lesson counted that pixel among the cracks. The sheet
+/// is flat and faces its lamp: no pixel on it is in its own shadow, under
+/// either test.
+#[test]
+fn the_sheet_shadows_itself_nowhere_not_even_at_the_origin() {
+    use raytree::methods::TriangleMethod;
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/13-numerics/sheet.json");
+    let mut s = raytree::scene::loader::load(&path).unwrap();
+    for method in [TriangleMethod::MollerTrumbore, TriangleMethod::Watertight] {
+        s.settings.triangle = method;
+        let tracer = Tracer::new(&s);
+        let camera = s.camera();
+        let mut center = FirstHit::default();
+        tracer.trace_primary(camera.pixel_ray(120.0, 120.0), &mut center);
+        let hit = center.hit.expect("the center pixel sees the sheet");
+        // The origin up to the barycentric weights' rounding (about 1e-15).
+        assert!(
+            hit.point.length() < 1e-14,
+            "{method:?}: the center pixel's ray meets the origin: {}",
+            hit.point
+        );
+        assert!(
+            matches!(
+                center.shadow.map(|s| s.outcome),
+                Some(ShadowOutcome::Reaches { .. })
+            ),
+            "{method:?}: pixel 120,120 shadows itself: {:?}",
+            center.shadow
+        );
+        let (mut sheet, mut dark) = (0, Vec::new());
+        for y in 0..s.settings.height {
+            for x in 0..s.settings.width {
+                let mut rec = FirstHit::default();
+                tracer.trace_primary(camera.pixel_ray(f64::from(x), f64::from(y)), &mut rec);
+                let Some(shadow) = rec.shadow else { continue };
+                sheet += 1;
+                if !matches!(shadow.outcome, ShadowOutcome::Reaches { .. }) {
+                    dark.push((x, y));
+                }
+            }
+        }
+        println!(
+            "{method:?}: {sheet} pixels on the sheet, {} in its own shadow",
+            dark.len()
+        );
+        assert!(sheet > 40_000, "{method:?}: the sheet fills the picture");
+        assert_eq!(dark, [], "{method:?}: pixels in the sheet's own shadow");
+    }
+}
