@@ -23,6 +23,12 @@
 //! 0.6 of the egg (radius ≤ 0.5) are left out. Points on the egg whose normal
 //! faces the light and whose segment clears the wall (`e > 1.01`) must be lit:
 //! acne on a transformed, flattened object.
+//!
+//! # Seams and hits at awkward places
+//!
+//! Two boxes sharing a face, a row of pixels lying in the shared plane; a large
+//! triangle far from the origin under a light near and low; lesson 13's sheet,
+//! whose center pixel meets it at a vertex at the world origin.
 
 use crate::common;
 
