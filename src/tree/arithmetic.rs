@@ -8,7 +8,7 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::geometry::cuboid::Cuboid;
+use crate::geometry::cuboid::{Cuboid, SlabSpan};
 use crate::geometry::hit::Roots;
 use crate::geometry::object::{Object, Shape};
 use crate::geometry::sphere::Sphere;
@@ -356,24 +356,14 @@ fn quadratic(s: &Sphere, ray: &Ray) -> Arithmetic {
     }
 }
 
-/// Each axis's slab interval (Kay & Kajiya), ordered near to far.
+/// Each axis's slab interval (Kay & Kajiya), ordered near to far: the box
+/// test's own, so the trace shows the numbers that decided.
 fn slabs(b: &Cuboid, ray: &Ray) -> Arithmetic {
-    let axis = |k: usize| {
-        let (s, d, lo, hi) = (ray.origin[k], ray.dir[k], b.min[k], b.max[k]);
-        if d == 0.0 {
-            return Slab::Parallel {
-                inside: lo <= s && s <= hi,
-            };
-        }
-        let (t0, t1) = ((lo - s) / d, (hi - s) / d);
-        Slab::Crossing {
-            near: t0.min(t1),
-            far: t0.max(t1),
-        }
-    };
-    Arithmetic::Slabs {
-        axes: [axis(0), axis(1), axis(2)],
-    }
+    let axes = b.slabs(ray).map(|slab| match slab {
+        SlabSpan::Crossing { near, far } => Slab::Crossing { near, far },
+        SlabSpan::Parallel { inside } => Slab::Parallel { inside },
+    });
+    Arithmetic::Slabs { axes }
 }
 
 /// What became of each root of a ray's tests: the hit's root is chosen, those

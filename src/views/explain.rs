@@ -185,10 +185,14 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
         Some(Arithmetic::Plane { .. }) => "n·c = 0: the ray runs parallel, no root".to_owned(),
         Some(Arithmetic::Slabs { axes }) => {
             details.push(slabs(axes));
-            if roots.is_empty() {
-                "the slabs' intervals do not overlap: no root".to_owned()
-            } else {
-                format!("enters at the last slab's start, leaves at the first's end: {roots}")
+            match slabs_overlap(axes) {
+                None => "the slabs' intervals do not overlap: no root".to_owned(),
+                Some(leave) if !leave.is_finite() => {
+                    "the slabs' intervals overlap without end: no root".to_owned()
+                }
+                Some(_) => format!(
+                    "the slabs' intervals overlap: enters at the last slab's start, leaves at the first's end: {roots}"
+                ),
             }
         }
         Some(Arithmetic::Barycentric { weights }) => format!(
@@ -205,6 +209,24 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
         format!("test {kind} '{}'{method}: {found}", test.name),
         details,
     )
+}
+
+/// The verdict read off the intervals the trace prints (the box test's own):
+/// where they all overlap, up to the end returned; a slab the ray runs along
+/// outside its planes is empty.
+fn slabs_overlap(axes: &[Slab; 3]) -> Option<f64> {
+    let (mut enter, mut leave) = (f64::NEG_INFINITY, f64::INFINITY);
+    for slab in axes {
+        match *slab {
+            Slab::Crossing { near, far } => {
+                enter = enter.max(near);
+                leave = leave.min(far);
+            }
+            Slab::Parallel { inside } if !inside => return None,
+            Slab::Parallel { .. } => {}
+        }
+    }
+    (enter <= leave).then_some(leave)
 }
 
 fn slabs(axes: &[Slab; 3]) -> String {

@@ -525,3 +525,72 @@ fn a_cancelled_discriminant_is_named_when_the_stable_form_disagrees() {
     let text = raytree::views::text::format(&trace, false);
     assert!(text.contains("B² − AC = 0: one root"), "{text}");
 }
+
+/// A ray lying in one of a box's face planes (issue 29): the trace printed the
+/// slabs' intervals overlapping ("y parallel, inside") and then "the slabs'
+/// intervals do not overlap: no root". The intervals the trace records are the
+/// ones the test used, and the verdict follows from them: for a ray in each of
+/// the six face planes, whatever the sign of its zero components.
+#[test]
+fn a_ray_in_a_face_plane_reads_as_its_slabs_decide() {
+    use raytree::tree::arithmetic::Slab;
+    let text = r#"{ "camera": { "eye": [0, 0, 10], "look_at": [0, 0, 0] },
+        "lights": [{ "position": [3, 4, 5] }],
+        "objects": [{ "name": "crate", "box": { "min": [-1, -1, -1], "max": [1, 1, 1] } }] }"#;
+    let s = raytree::scene::loader::parse(text, "crate.json").unwrap();
+    for axis in 0..3 {
+        let (along, third) = ((axis + 1) % 3, (axis + 2) % 3);
+        for side in [-1.0, 1.0] {
+            for zero in [0.0, -0.0] {
+                let mut origin = DVec3::ZERO;
+                origin[axis] = side;
+                origin[along] = -5.0;
+                origin[third] = 0.25;
+                let mut dir = DVec3::splat(zero);
+                dir[along] = 1.0;
+                let what = format!("face {side} of axis {axis}, zeros {zero:?}");
+                let trace = record::ray(
+                    &s,
+                    SceneSource::new("crate.json", text),
+                    Ray::new(origin, dir),
+                )
+                .unwrap();
+                let test = &trace.samples[0].tree.nodes[0].tests[0];
+                let Some(Arithmetic::Slabs { axes }) = test.arithmetic else {
+                    panic!("{what}: a box test records its slabs");
+                };
+                let (mut enter, mut leave, mut open) = (f64::NEG_INFINITY, f64::INFINITY, true);
+                for slab in axes {
+                    match slab {
+                        Slab::Crossing { near, far } => {
+                            enter = enter.max(near);
+                            leave = leave.min(far);
+                        }
+                        Slab::Parallel { inside } => open &= inside,
+                    }
+                }
+                let overlap = open && enter <= leave;
+                let roots: Vec<f64> = test.roots.iter().map(|r| r.t).collect();
+                assert!(
+                    overlap,
+                    "{what}: the ray runs along the box's face: {axes:?}"
+                );
+                assert_eq!(
+                    roots,
+                    [enter, leave],
+                    "{what}: the roots are the overlap's ends"
+                );
+                let printed = raytree::views::text::format(&trace, false);
+                let line = printed
+                    .lines()
+                    .find(|l| l.contains("test box 'crate'"))
+                    .unwrap_or_else(|| panic!("{what}: no test line in {printed}"));
+                assert!(!line.contains("do not overlap"), "{what}: {printed}");
+                assert!(
+                    line.contains("overlap"),
+                    "{what}: the verdict names the overlap: {printed}"
+                );
+            }
+        }
+    }
+}
