@@ -1,4 +1,5 @@
-//! Runs that end well (issue 29): a script's pixel off the image is refused.
+//! Runs that end well (issue 29): `diff` answers with its exit status; a
+//! script's pixel off the image is refused.
 
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -40,6 +41,83 @@ fn refused_at_once(code: i32, files: &[(&str, &[u8])], args: &[&str]) -> String 
     let left = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(left, files.len(), "raytree {shown}: a file was left");
     stderr.trim_end().to_owned()
+}
+
+#[test]
+fn diff_answers_with_its_exit_status() {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, depth) in [("one.png", "1"), ("two.png", "3")] {
+        crate::commands::cli::succeeds(
+            &[
+                "render",
+                "-q",
+                "--width",
+                "32",
+                "--height",
+                "24",
+                "--max-depth",
+                depth,
+                "-o",
+                name,
+            ],
+            dir.path(),
+        );
+    }
+    let diff = |args: &[&str]| {
+        let out = crate::commands::cli::raytree(&[&["diff"][..], args].concat(), dir.path());
+        assert!(
+            out.stderr.is_empty(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        (
+            out.status.code().unwrap(),
+            String::from_utf8(out.stdout).unwrap(),
+        )
+    };
+    let (code, same) = diff(&["one.png", "one.png"]);
+    assert_eq!(code, 0, "{same}");
+    assert!(same.starts_with("mean absolute difference 0.000/255, largest 0/255"));
+    let (code, different) = diff(&["one.png", "two.png"]);
+    assert_eq!(code, 1, "{different}");
+    let largest: u8 = different
+        .split("largest ")
+        .nth(1)
+        .and_then(|s| s.split('/').next())
+        .and_then(|s| s.parse().ok())
+        .unwrap();
+    assert!(largest > 0);
+    let tolerance = |t: u8| diff(&["one.png", "two.png", "--tolerance", &t.to_string()]).0;
+    assert_eq!((tolerance(largest), tolerance(largest - 1)), (0, 1));
+    // The answer is known before it is printed: a reader gone keeps it.
+    let (reader, writer) = std::io::pipe().unwrap();
+    drop(reader);
+    let gone = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["diff", "one.png", "two.png"])
+        .current_dir(dir.path())
+        .stdout(writer)
+        .output()
+        .unwrap();
+    assert_eq!((gone.status.code(), gone.stderr.len()), (Some(1), 0));
+    // Trouble is 2, never taken for "different".
+    let png = std::fs::read(dir.path().join("one.png")).unwrap();
+    let e = refused_at_once(2, &[("a.png", &png)], &["diff", "a.png", "missing.png"]);
+    assert_eq!(e, "error: cannot read missing.png: no such file");
+    let mut small = Vec::new();
+    image::RgbImage::new(2, 2)
+        .write_to(
+            &mut std::io::Cursor::new(&mut small),
+            image::ImageFormat::Png,
+        )
+        .unwrap();
+    let e = refused_at_once(
+        2,
+        &[("a.png", &png), ("b.png", &small)],
+        &["diff", "a.png", "b.png"],
+    );
+    assert_eq!(e, "error: the images differ in size: 32×24 and 2×2");
+    let e = refused_at_once(2, &[], &["diff", "a.png", "b.png", "--tolerance", "256"]);
+    assert!(e.ends_with("(see raytree diff --help)"), "{e}");
 }
 
 #[test]
