@@ -147,12 +147,16 @@ fn icosphere(triangles: u64, path: &Path) -> Result<()> {
         .into_owned();
     let mesh_file = output::create(&obj, &[])?;
     let scene_file = output::create(path, std::slice::from_ref(&obj))?;
-    mesh_file.commit(generate::icosphere_obj(levels).as_bytes())?;
+    let mesh = generate::icosphere_obj(levels);
+    let text = generate::icosphere_scene(&name, 20 << (2 * levels));
+    output::commit_all(vec![
+        (mesh_file, mesh.as_bytes()),
+        (scene_file, text.as_bytes()),
+    ])?;
     output::note(&format!(
         "wrote {} ({} triangles)",
         obj.display(),
         20u64 << (2 * levels)
     ))?;
-    let text = generate::icosphere_scene(&name, 20 << (2 * levels));
-    scene_file.commit(text.as_bytes())
+    Ok(())
 }

@@ -1,5 +1,6 @@
-//! Runs that end well (issue 29): `diff` answers with its exit status; a
-//! script's pixel off the image is refused.
+//! Runs that end well (issue 29): an output of two files is both or neither;
+//! `diff` answers with its exit status; a script's pixel off the image is
+//! refused.
 
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -41,6 +42,80 @@ fn refused_at_once(code: i32, files: &[(&str, &[u8])], args: &[&str]) -> String 
     let left = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(left, files.len(), "raytree {shown}: a file was left");
     stderr.trim_end().to_owned()
+}
+
+/// Runs raytree in `dir` under bash with files limited to `blocks` KiB
+/// (`ulimit -f`): a write past it fails as on a full disk (SIGXFSZ ignored, so
+/// the write returns an error instead of ending the process).
+fn with_small_disk(blocks: u32, args: &[&str], dir: &Path) -> std::process::Output {
+    Command::new("bash")
+        .arg("-c")
+        .arg(format!(
+            "ulimit -f {blocks} && trap '' XFSZ && exec \"$0\" \"$@\""
+        ))
+        .arg(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(dir)
+        .stdin(Stdio::null())
+        .output()
+        .unwrap()
+}
+
+#[test]
+fn an_output_of_two_files_is_both_or_neither() {
+    if Command::new("bash").arg("-c").arg("true").status().is_err() {
+        println!("skipped: an_output_of_two_files_is_both_or_neither: no bash");
+        return;
+    }
+    // The icosphere's scene names its mesh twice: a long name makes the scene
+    // (written second) larger than the mesh, so a 2 KiB limit stops it alone.
+    let stem = "i".repeat(240);
+    let (scene, mesh) = (format!("{stem}.json"), format!("{stem}.obj"));
+    let args = ["generate", "icosphere", "--triangles", "1", "-o", &scene];
+    let open = tempfile::tempdir().unwrap();
+    crate::commands::cli::succeeds(&args, open.path());
+    let size = |name: &str| std::fs::metadata(open.path().join(name)).unwrap().len();
+    assert!(
+        size(&mesh) <= 2048 && size(&scene) > 2048,
+        "the case needs the mesh within 2 KiB and the scene beyond: {} and {}",
+        size(&mesh),
+        size(&scene)
+    );
+    let full = tempfile::tempdir().unwrap();
+    let out = with_small_disk(2, &args, full.path());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(
+        stderr,
+        format!("error: cannot write {scene}: File too large\n")
+    );
+    let left: Vec<_> = std::fs::read_dir(full.path()).unwrap().collect();
+    assert!(left.is_empty(), "left behind: {left:?}");
+
+    // A second file that cannot be renamed into place (a name ending in a
+    // slash is taken for a folder): the first is removed again.
+    let e = refused_at_once(
+        1,
+        &[],
+        &[
+            "chart", "--cost", "tests", "--runs", "1", "--width", "8", "--height", "6", "--size",
+            "64x64", "-o", "c.png", "--csv", "c.csv/",
+        ],
+    );
+    assert_eq!(e, "error: cannot write c.csv/: Not a directory");
+    let e = refused_at_once(
+        1,
+        &[],
+        &[
+            "generate",
+            "icosphere",
+            "--triangles",
+            "1",
+            "-o",
+            "ico.json/",
+        ],
+    );
+    assert_eq!(e, "error: cannot write ico.json/: Not a directory");
 }
 
 #[test]
