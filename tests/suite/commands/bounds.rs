@@ -1,6 +1,7 @@
-//! Runs that end well (issue 29): an output of two files is both or neither;
-//! `diff` answers with its exit status; a script's pixel off the image is
-//! refused.
+//! Runs that end well (issue 29): whatever raytree accepts it finishes in
+//! bounded time and memory, or refuses at once with the estimate; whatever it
+//! writes it reads back; an output of two files is both or neither; `diff`
+//! answers with its exit status; a script's pixel off the image is refused.
 
 use std::path::Path;
 use std::process::{Command, Stdio};
@@ -42,6 +43,144 @@ fn refused_at_once(code: i32, files: &[(&str, &[u8])], args: &[&str]) -> String 
     let left = std::fs::read_dir(dir.path()).unwrap().count();
     assert_eq!(left, files.len(), "raytree {shown}: a file was left");
     stderr.trim_end().to_owned()
+}
+
+#[test]
+fn settings_that_could_not_finish_are_refused_up_front() {
+    // Rays double a level where a glass surface reflects and refracts: 2^1000.
+    assert_eq!(
+        refused_at_once(1, &[], &["render", "--max-depth", "1000", "--cutoff", "0"]),
+        "error: --max-depth: 1000 with cutoff 0 may trace up to 1.1e301 rays a sample (2^max_depth - 1: each hit may spawn a reflected and a refracted ray), more than the 4294967296 (2^32) raytree traces; lower max_depth to 32 or raise the cutoff"
+    );
+    let scene = br#"{"render": {"max_depth": 40, "cutoff": 0}, "objects": [{"sphere": {}}]}"#;
+    let e = refused_at_once(1, &[("deep.json", scene)], &["render", "deep.json"]);
+    assert!(
+        e.starts_with(
+            "error: deep.json: render.max_depth: 40 with cutoff 0 may trace up to 1099511627775 rays a sample"
+        ),
+        "{e}"
+    );
+    // The trace that needed 9.4 GB: refused by the same rule.
+    let e = refused_at_once(
+        1,
+        &[],
+        &[
+            "trace",
+            "--pixel",
+            "416,209",
+            "--spp",
+            "1024",
+            "--max-depth",
+            "300",
+            "--cutoff",
+            "0",
+            "--json",
+        ],
+    );
+    assert!(
+        e.starts_with("error: --max-depth: 300 with cutoff 0"),
+        "{e}"
+    );
+    // Within the render's bound, beyond what a trace holds and is read back.
+    assert_eq!(
+        refused_at_once(
+            1,
+            &[],
+            &[
+                "trace",
+                "--pixel",
+                "416,209",
+                "--max-depth",
+                "21",
+                "--cutoff",
+                "0",
+                "--json"
+            ]
+        ),
+        "error: pixel 416,209 may record up to 2097151 rays, more than the 1048576 a trace holds (and raytree reads back); lower max_depth, or raise the cutoff"
+    );
+    assert_eq!(
+        refused_at_once(
+            1,
+            &[],
+            &[
+                "trace",
+                "--pixel",
+                "1,1",
+                "--spp",
+                "1024",
+                "--max-depth",
+                "12",
+                "--cutoff",
+                "0",
+                "-o",
+                "t.json",
+            ]
+        ),
+        "error: pixel 1,1 may record up to 4193280 rays (1024 samples of up to 4095), more than the 1048576 a trace holds (and raytree reads back); lower spp or max_depth, or raise the cutoff"
+    );
+    let e = refused_at_once(
+        1,
+        &[],
+        &[
+            "trace",
+            "--ray",
+            "0,1,5:0,0,-1",
+            "--max-depth",
+            "21",
+            "--cutoff",
+            "0",
+        ],
+    );
+    assert!(
+        e.starts_with("error: the ray may record up to 2097151 rays"),
+        "{e}"
+    );
+    // The deepest trace allowed without a cutoff is recorded and read back.
+    let dir = tempfile::tempdir().unwrap();
+    let deepest = ["--pixel", "416,209", "--max-depth", "20", "--cutoff", "0"];
+    crate::commands::cli::succeeds(
+        &[&["trace"][..], &deepest, &["-o", "t.json"]].concat(),
+        dir.path(),
+    );
+    let trace = raytree::tree::reading::read(&dir.path().join("t.json")).unwrap();
+    assert_eq!(trace.settings.max_depth, 20);
+}
+
+#[test]
+fn generate_refuses_an_icosphere_the_mesh_reader_would_refuse() {
+    // 20·4^10 triangles: about 2.4 GB of OBJ; 20·4^11: about 10 GB.
+    assert_eq!(
+        refused_at_once(
+            1,
+            &[],
+            &[
+                "generate",
+                "icosphere",
+                "--triangles",
+                "20000000",
+                "-o",
+                "big.json"
+            ]
+        ),
+        "error: an icosphere of 20971520 triangles would be an OBJ file of about 2.7 GB, more than the 1 GiB raytree reads; the most it makes is 5242880 triangles (--triangles 13107200 or fewer)"
+    );
+    let e = refused_at_once(
+        1,
+        &[],
+        &[
+            "generate",
+            "icosphere",
+            "--triangles",
+            "100000000",
+            "-o",
+            "big.json",
+        ],
+    );
+    assert!(
+        e.contains("83886080 triangles would be an OBJ file of about 10.9 GB"),
+        "{e}"
+    );
 }
 
 /// Runs raytree in `dir` under bash with files limited to `blocks` KiB

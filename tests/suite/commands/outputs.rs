@@ -117,7 +117,7 @@ fn threads_and_generators_are_bounded() {
     let run = std::process::Command::new("sh")
         .arg("-c")
         .arg(format!(
-            "ulimit -v 2000000 && exec {} generate icosphere --triangles 100000000 -o big.json",
+            "ulimit -v 2000000 && exec {} generate spheres --count 10000000 -o big.json",
             env!("CARGO_BIN_EXE_raytree")
         ))
         .current_dir(dir.path())
@@ -127,7 +127,7 @@ fn threads_and_generators_are_bounded() {
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(
         stderr.starts_with(
-            "error: making 83886080 triangles needs about 22.6 GB of memory, more than the "
+            "error: making 10000000 spheres needs about 2.5 GB of memory, more than the "
         ) && stderr.lines().count() == 1,
         "{stderr}"
     );
