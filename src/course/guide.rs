@@ -22,8 +22,10 @@ use std::path::{Path, PathBuf};
 use serde::Deserialize;
 
 use crate::course::teacher_file;
+use crate::scene::settings::RenderSettings;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
+use crate::tree::record::TraceError;
 use crate::tree::steps::StepKind;
 use crate::views::numbers::{color, degrees, num, vec3};
 
@@ -38,6 +40,8 @@ pub struct Script {
     pub scene: PathBuf,
     /// The pixel it follows.
     pub pixel: [u32; 2],
+    /// The line of the file that gives the pixel (for messages).
+    pub pixel_line: usize,
     /// The sample it follows (0-based; written 1-based).
     pub sample: usize,
     /// Its stops, in step order.
@@ -58,7 +62,7 @@ pub struct Stop {
 struct ScriptFile {
     title: Option<String>,
     scene: String,
-    pixel: [u32; 2],
+    pixel: toml::Spanned<[u32; 2]>,
     sample: Option<usize>,
     stop: Vec<StopFile>,
 }
@@ -115,7 +119,8 @@ pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
         path: path.to_owned(),
         title: file.title,
         scene: folder.join(&file.scene),
-        pixel: file.pixel,
+        pixel: *file.pixel.get_ref(),
+        pixel_line: teacher_file::line_of(text, file.pixel.span().start),
         sample: file.sample.map_or(0, |s| s - 1),
         stops: file
             .stop
@@ -126,6 +131,29 @@ pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
             })
             .collect(),
     })
+}
+
+impl Script {
+    /// Checks that the script's pixel is in its scene's image (`settings`'),
+    /// before anything is traced: `raytree lesson` and `raytree inspect
+    /// --script` refuse it alike, naming the file and the line.
+    pub fn fits(&self, settings: &RenderSettings) -> Result<(), String> {
+        let [x, y] = self.pixel;
+        if x < settings.width && y < settings.height {
+            return Ok(());
+        }
+        let outside = TraceError::PixelOutside {
+            x,
+            y,
+            width: settings.width,
+            height: settings.height,
+        };
+        Err(format!(
+            "{}: line {}: {outside}",
+            self.path.display(),
+            self.pixel_line
+        ))
+    }
 }
 
 /// One stop made concrete against a trace: the step's index into

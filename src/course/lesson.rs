@@ -164,6 +164,7 @@ pub fn load(dir: &Path, number: u32) -> Result<Lesson, String> {
     script.scene = tidy(&script.scene);
     let (scene, source) = source::load(Some(&script.scene))
         .map_err(|e| format!("{e} (the scene of {})", script.path.display()))?;
+    script.fits(&scene.settings)?;
     Ok(Lesson {
         entry,
         script,

@@ -98,34 +98,79 @@ impl PendingFile {
     }
 
     fn finish(mut self, bytes: &[u8], replace: bool) -> Result<()> {
-        let Some(mut temp) = self.temp.take() else {
+        self.write(bytes)?;
+        let Some(temp) = self.temp.take() else {
             return Ok(());
         };
-        let target = &self.target;
-        let fail = |e: std::io::Error| {
-            anyhow::anyhow!("cannot write {}: {}", target.display(), io_reason(&e))
-        };
-        let unregister = |path: &Path| pending().retain(|p| p != path);
-        let written = temp
-            .write_all(bytes)
-            .and_then(|()| temp.as_file().sync_all())
-            .and_then(|()| keep_permissions(temp.as_file(), target));
-        if let Err(e) = written {
-            unregister(temp.path());
-            return Err(fail(e));
-        }
         // Renamed under the lock: a signal handler removes the temporary file
         // either before (nothing is written) or not at all (the file is whole).
         let mut list = pending();
-        let path = temp.path().to_owned();
-        list.retain(|p| *p != path);
-        if replace {
-            temp.persist(target).map_err(|e| fail(e.error))?;
+        list.retain(|p| p != temp.path());
+        let target = &self.target;
+        let persisted = if replace {
+            temp.persist(target)
         } else {
-            temp.persist_noclobber(target).map_err(|e| fail(e.error))?;
+            temp.persist_noclobber(target)
+        };
+        persisted.map_err(|e| failed(target, &e.error))?;
+        Ok(())
+    }
+
+    /// Writes `bytes` to the temporary file, syncs it and gives it the
+    /// permissions of the file it replaces; on failure the temporary file is
+    /// removed.
+    fn write(&mut self, bytes: &[u8]) -> Result<()> {
+        let Some(temp) = self.temp.as_mut() else {
+            return Ok(());
+        };
+        let written = temp
+            .write_all(bytes)
+            .and_then(|()| temp.as_file().sync_all())
+            .and_then(|()| keep_permissions(temp.as_file(), &self.target));
+        if let Err(e) = written {
+            let path = temp.path().to_owned();
+            pending().retain(|p| *p != path);
+            // Dropped, the temporary file is removed.
+            self.temp = None;
+            return Err(failed(&self.target, &e));
         }
         Ok(())
     }
+}
+
+/// Commits several files as one: all of them or none. Every file is written
+/// and synced first, so a full disk fails before any target changes; then
+/// all are renamed into place under one hold of the pending list, so a
+/// signal removes every temporary file or none. Should a rename fail still
+/// (a target's folder removed meanwhile, or a folder put in its place), the
+/// targets already renamed are removed: no run leaves part of its output.
+pub fn commit_all(mut files: Vec<(PendingFile, &[u8])>) -> Result<()> {
+    for (file, bytes) in &mut files {
+        file.write(bytes)?;
+    }
+    // Out of their `PendingFile`s, whose drop takes the lock held below.
+    let temps: Vec<(NamedTempFile, PathBuf)> = files
+        .into_iter()
+        .filter_map(|(mut file, _)| Some((file.temp.take()?, file.target.clone())))
+        .collect();
+    let mut list = pending();
+    list.retain(|p| !temps.iter().any(|(t, _)| t.path() == p));
+    let mut done: Vec<PathBuf> = Vec::new();
+    for (temp, target) in temps {
+        if let Err(e) = temp.persist(&target) {
+            for renamed in &done {
+                let _ = std::fs::remove_file(renamed);
+            }
+            return Err(failed(&target, &e.error));
+        }
+        done.push(target);
+    }
+    Ok(())
+}
+
+/// "cannot write TARGET: reason".
+fn failed(target: &Path, e: &std::io::Error) -> anyhow::Error {
+    anyhow::anyhow!("cannot write {}: {}", target.display(), io_reason(e))
 }
 
 impl Drop for PendingFile {
@@ -203,6 +248,33 @@ mod tests {
         let temp = b.temp_path().to_owned();
         drop(b);
         assert!(!listed(&temp) && !temp.exists());
+    }
+
+    #[test]
+    fn several_files_are_committed_all_or_none() {
+        let dir = tempfile::tempdir().unwrap();
+        let (a, b) = (dir.path().join("a.png"), dir.path().join("b.csv"));
+        let first = PendingFile::create(&a).unwrap();
+        let second = PendingFile::create(&b).unwrap();
+        let temps = [first.temp_path().to_owned(), second.temp_path().to_owned()];
+        // The second target turns into a folder with a file in it: no rename
+        // can replace it.
+        std::fs::create_dir(&b).unwrap();
+        std::fs::write(b.join("x"), "x").unwrap();
+        let e = commit_all(vec![(first, b"png"), (second, b"csv")]).unwrap_err();
+        assert!(e.to_string().starts_with("cannot write "), "{e}");
+        assert!(!a.exists(), "the first file is not left behind");
+        for temp in &temps {
+            assert!(!temp.exists() && !pending().contains(temp));
+        }
+        let (c, d) = (dir.path().join("c.png"), dir.path().join("d.csv"));
+        let both = vec![
+            (PendingFile::create(&c).unwrap(), &b"c"[..]),
+            (PendingFile::create(&d).unwrap(), &b"d"[..]),
+        ];
+        commit_all(both).unwrap();
+        assert_eq!(std::fs::read(&c).unwrap(), b"c");
+        assert_eq!(std::fs::read(&d).unwrap(), b"d");
     }
 
     #[test]

@@ -243,6 +243,23 @@ pub fn memory_for_icosphere(levels: u32) -> u64 {
     (per_unit << (2 * levels.min(30))) + (1 << 20)
 }
 
+/// About how many bytes the OBJ file of an icosphere of `levels` subdivisions
+/// takes, a little more than it does: `10·4^levels + 2` vertices, each a `v`
+/// and a `vn` line of three numbers of up to 22 characters (a sign, `0.00`
+/// and 17 significant digits: the shortest that reads back, for coordinates
+/// down to 1e-3), and `20·4^levels` faces, each an `f` line of three
+/// `i//i` pairs of indices as long as the vertex count. So a level whose OBJ
+/// the mesh reader would refuse can be refused before it is made.
+pub fn icosphere_obj_bytes(levels: u32) -> u64 {
+    let levels = levels.min(30);
+    let vertices = (10u64 << (2 * levels)) + 2;
+    let faces = 20u64 << (2 * levels);
+    let digits = u64::from(vertices.ilog10() + 1);
+    let v_line = 2 + 3 * 22 + 2 + 1;
+    let f_line = 2 + 3 * (2 * digits + 2) + 2 + 1;
+    200 + vertices * (v_line + v_line + 1) + faces * f_line
+}
+
 /// The number of subdivision levels whose triangle count `20·4^levels` is nearest `n`.
 pub fn icosphere_levels(n: u64) -> u32 {
     (0..12)
@@ -317,6 +334,17 @@ mod tests {
             assert!(
                 memory_for_icosphere(levels) >= arrays + 2 * text,
                 "{levels}"
+            );
+        }
+        // The OBJ size estimate is above the size, and from a few hundred
+        // triangles up (longer numbers) within a fifth of it.
+        for levels in 0..8 {
+            let size = icosphere_obj(levels).len() as u64;
+            let estimate = icosphere_obj_bytes(levels);
+            assert!(size <= estimate, "{levels}: {size} > {estimate}");
+            assert!(
+                levels < 4 || estimate <= size + size / 5,
+                "{levels}: {size} {estimate}"
             );
         }
         let text = random_spheres(1000, 1).len() as u64;

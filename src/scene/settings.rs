@@ -46,6 +46,12 @@ impl RenderSettings {
     /// dropped. Chosen so no 8-bit pixel of the shipped scenes moves by more than
     /// one level against a fixed depth of 32 (see `tests/suite/tracer/recursion.rs`).
     pub const DEFAULT_CUTOFF: f64 = 1.0 / 1024.0;
+    /// Most rays one sample may trace in the worst case
+    /// ([`Self::worst_case_rays`]): 2³², just above the 2³² − 1 a fixed depth
+    /// of 32 (`cutoff` 0) may take, lesson 11's deepest render. It bounds the work of every
+    /// render, whatever the scene; real scenes trace far fewer (that render of
+    /// the Whitted scene, under 18 rays a pixel with the shadow rays).
+    pub const MAX_RAYS_PER_SAMPLE: f64 = 4_294_967_296.0;
 
     /// The intersection methods.
     pub fn intersection_methods(&self) -> IntersectionMethods {
@@ -81,6 +87,44 @@ impl RenderSettings {
                 (1u32 << levels.min(15)).pow(2) + 2 * (1 << levels.min(15)) + 1
             }
         }
+    }
+
+    /// The most rays one sample may trace: its primary ray and every reflected
+    /// and refracted ray below it, in the worst case. A ray's hit spawns at
+    /// most one reflected and one refracted ray (and one shadow ray per light,
+    /// not counted: they spawn nothing), so level `d` of the tree (the primary
+    /// ray is level 1) holds at most `2^(d-1)` rays. With a cutoff `c > 0` a
+    /// level holds at most `⌈1/c⌉` rays too: a child's weight is its parent's
+    /// times `k_rfl` or `k_rfa`, which sum to at most `reflective +
+    /// transparent ≤ 1` (the loader's rule), so the weights of one level sum to
+    /// at most 1 and at most `1/c` of them reach `c` (up to rounding, a few
+    /// ulps a level, far below any cutoff that makes `⌈1/c⌉` the smaller).
+    /// So a sample traces at most `Σ_{d=1}^{max_depth} min(2^(d-1), ⌈1/c⌉)`
+    /// rays: `2^max_depth - 1` without a cutoff. An `f64`, since that exceeds every
+    /// integer type (2¹⁰⁰⁰ at depth 1000); exact below 2⁵³, which covers both
+    /// limits it is held against.
+    pub fn worst_case_rays(&self) -> f64 {
+        let width = if self.cutoff > 0.0 {
+            (1.0 / self.cutoff).ceil()
+        } else {
+            f64::INFINITY
+        };
+        (0..self.max_depth)
+            .map(|d| 2f64.powi(d as i32).min(width))
+            .sum()
+    }
+
+    /// The deepest `max_depth` whose [`Self::worst_case_rays`] stays within
+    /// `limit` under these settings' cutoff (0 if none does).
+    pub fn deepest_within(&self, limit: f64) -> u32 {
+        let mut s = *self;
+        (1..=self.max_depth)
+            .take_while(|&d| {
+                s.max_depth = d;
+                s.worst_case_rays() <= limit
+            })
+            .last()
+            .unwrap_or(0)
     }
 
     /// Checks the settings, naming the first that is wrong and why.
@@ -129,6 +173,25 @@ impl RenderSettings {
                 ),
             ));
         }
+        let rays = self.worst_case_rays();
+        if rays > Self::MAX_RAYS_PER_SAMPLE {
+            return Err((
+                "max_depth",
+                format!(
+                    "{} with cutoff {} may trace up to {} rays a sample ({}), more than the {} (2^32) raytree traces; lower max_depth to {} or raise the cutoff",
+                    self.max_depth,
+                    limits::num(self.cutoff),
+                    ray_count(rays),
+                    if self.cutoff > 0.0 {
+                        "each hit may spawn a reflected and a refracted ray, at most 1/cutoff of them a level"
+                    } else {
+                        "2^max_depth - 1: each hit may spawn a reflected and a refracted ray"
+                    },
+                    ray_count(Self::MAX_RAYS_PER_SAMPLE),
+                    self.deepest_within(Self::MAX_RAYS_PER_SAMPLE)
+                ),
+            ));
+        }
         if let Antialiasing::Adaptive { threshold, levels } = self.aa
             && !(threshold.is_finite() && threshold >= 0.0 && levels <= 6)
         {
@@ -152,6 +215,16 @@ impl RenderSettings {
     }
 }
 
+/// A count of rays as a learner reads it: whole below 10¹⁵ (`4294967296`),
+/// else to two figures (`1.1e301`).
+pub fn ray_count(n: f64) -> String {
+    if n < 1e15 {
+        format!("{n:.0}")
+    } else {
+        format!("{n:.1e}")
+    }
+}
+
 impl Default for RenderSettings {
     fn default() -> Self {
         Self {
@@ -167,5 +240,53 @@ impl Default for RenderSettings {
             triangle: TriangleMethod::default(),
             accel: Accel::default(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_worst_case_counts_every_level_up_to_its_width() {
+        let with = |max_depth, cutoff| RenderSettings {
+            max_depth,
+            cutoff,
+            ..RenderSettings::default()
+        };
+        // 1 + 2 + … + 128 rays: the cutoff's width (1024) is never reached.
+        assert_eq!(with(8, 1.0 / 1024.0).worst_case_rays(), 255.0);
+        // Levels 1 to 11 double up to 1024 (2047 in all); level 12 stays at 1024.
+        assert_eq!(with(12, 1.0 / 1024.0).worst_case_rays(), 3071.0);
+        // A cutoff of 0.3 lets through at most ⌈1/0.3⌉ = 4 rays a level.
+        assert_eq!(with(5, 0.3).worst_case_rays(), 1.0 + 2.0 + 4.0 + 4.0 + 4.0);
+        assert_eq!(with(32, 0.0).worst_case_rays(), 4_294_967_295.0);
+        assert_eq!(with(1000, 0.0).worst_case_rays(), 2f64.powi(1000));
+        assert_eq!(
+            with(1000, 0.0).deepest_within(RenderSettings::MAX_RAYS_PER_SAMPLE),
+            32
+        );
+        assert!(with(32, 0.0).validate().is_ok());
+        assert!(
+            with(1000, RenderSettings::DEFAULT_CUTOFF)
+                .validate()
+                .is_ok()
+        );
+        let (field, message) = with(33, 0.0).validate().unwrap_err();
+        assert_eq!(field, "max_depth");
+        assert_eq!(
+            message,
+            "33 with cutoff 0 may trace up to 8589934591 rays a sample (2^max_depth - 1: each hit may spawn a reflected and a refracted ray), more than the 4294967296 (2^32) raytree traces; lower max_depth to 32 or raise the cutoff"
+        );
+        let (_, message) = with(1000, 1e-9).validate().unwrap_err();
+        assert!(
+            message.starts_with("1000 with cutoff 1e-9 may trace up to 971073741823 rays a sample"),
+            "{message}"
+        );
+        assert!(
+            message.ends_with("lower max_depth to 33 or raise the cutoff"),
+            "{message}"
+        );
+        assert_eq!(ray_count(2f64.powi(1000)), "1.1e301");
     }
 }

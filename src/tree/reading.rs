@@ -152,6 +152,18 @@ fn find_scene(trace: &TraceDocument, path: &Path) -> (Option<Scene>, Option<Stri
     }
 }
 
+/// A document of `size` bytes, refused when beyond `limit`, what the reader reads.
+fn readable_size(size: u64, limit: u64) -> Result<(), String> {
+    if size > limit {
+        return Err(format!(
+            "the trace would be {}, more than the {} raytree reads back; lower spp or max_depth, or raise the cutoff",
+            input::bytes_in_words(size),
+            input::bytes_in_words(limit)
+        ));
+    }
+    Ok(())
+}
+
 /// serde_json's message without its " at line L column C".
 fn without_position(message: &str) -> &str {
     message
@@ -164,13 +176,30 @@ impl TraceDocument {
     /// or a NaN (serde_json writes `null`), so a trace that would not read back
     /// exactly is refused rather than written. The scene limits keep every
     /// number finite; this is the guarantee that the format never holds `null`
-    /// for a number.
+    /// for a number. A document larger than the reader reads (its rays are
+    /// bounded before tracing, but not how many objects each one tests) is
+    /// refused too.
     pub fn to_checked_json(&self) -> Result<String, String> {
         let text = self.to_json();
+        readable_size(text.len() as u64, MAX_INPUT_BYTES)?;
         match parse(&text) {
             Ok(back) if back == *self => Ok(text),
             Ok(_) => Err("the trace holds a number JSON cannot write (infinite or NaN)".to_owned()),
             Err(e) => Err(format!("the trace would not read back:{e}")),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_trace_larger_than_the_reader_reads_is_not_written() {
+        assert_eq!(readable_size(MAX_INPUT_BYTES, MAX_INPUT_BYTES), Ok(()));
+        assert_eq!(
+            readable_size(1_160_000_000, MAX_INPUT_BYTES).unwrap_err(),
+            "the trace would be 1.2 GB, more than the 1 GiB raytree reads back; lower spp or max_depth, or raise the cutoff"
+        );
     }
 }

@@ -7,8 +7,9 @@ use glam::DVec3;
 use crate::geometry::hit::{Roots, TestCounts};
 use crate::geometry::object::Shape;
 use crate::math::ray::Ray;
-use crate::methods::Offset;
+use crate::methods::{Antialiasing, Offset};
 use crate::scene::Scene;
+use crate::scene::settings::{RenderSettings, ray_count};
 use crate::scene::source::SceneSource;
 use crate::trace::pixel::pixel_color_at;
 use crate::trace::recorder::{
@@ -24,9 +25,10 @@ use crate::tree::ray_tree::{
     BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
     RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
+use crate::tree::trace_check::MAX_TRACE_RAYS;
 
 /// Why a trace could not be made.
-#[derive(Debug, thiserror::Error, PartialEq, Eq)]
+#[derive(Debug, thiserror::Error, PartialEq)]
 pub enum TraceError {
     /// The pixel is not in the image.
     #[error("pixel {x},{y} is outside the {width}×{height} image (x is 0 to {}, y is 0 to {})", width - 1, height - 1)]
@@ -51,6 +53,58 @@ pub enum TraceError {
     /// The ray cannot be traced.
     #[error("the ray's direction must be non-zero and every number finite")]
     BadRay,
+    /// The trees may grow beyond what a trace document holds.
+    #[error("{}", too_many_rays(what, *samples, *rays, lower))]
+    TooManyRays {
+        /// `pixel X,Y` or `the ray`.
+        what: String,
+        /// Samples recorded.
+        samples: u32,
+        /// The most rays they may trace in all.
+        rays: f64,
+        /// The settings to lower (the cutoff may be raised instead).
+        lower: &'static str,
+    },
+}
+
+fn too_many_rays(what: &str, samples: u32, rays: f64, lower: &str) -> String {
+    let each = if samples == 1 {
+        String::new()
+    } else {
+        let each = ray_count(rays / f64::from(samples));
+        format!(" ({samples} samples of up to {each})")
+    };
+    format!(
+        "{what} may record up to {} rays{each}, more than the {MAX_TRACE_RAYS} a trace holds (and raytree reads back); lower {lower}, or raise the cutoff",
+        ray_count(rays)
+    )
+}
+
+/// The most rays recording `samples` samples under `settings` may make, in
+/// the worst case ([`RenderSettings::worst_case_rays`] each), refused when
+/// beyond what a trace document holds ([`MAX_TRACE_RAYS`], the reader's
+/// limit): checked before tracing, so a request that could fill the memory
+/// or write a trace raytree cannot read back ends at once with the estimate.
+pub fn worst_case_rays(
+    settings: &RenderSettings,
+    samples: u32,
+    what: impl FnOnce() -> String,
+) -> Result<f64, TraceError> {
+    let rays = f64::from(samples) * settings.worst_case_rays();
+    if rays > MAX_TRACE_RAYS as f64 {
+        let lower = match settings.aa {
+            _ if samples == 1 => "max_depth",
+            Antialiasing::Grid => "spp or max_depth",
+            Antialiasing::Adaptive { .. } => "the adaptive levels or max_depth",
+        };
+        return Err(TraceError::TooManyRays {
+            what: what(),
+            samples,
+            rays,
+            lower,
+        });
+    }
+    Ok(rays)
 }
 
 /// Traces pixel `(x, y)` (image coordinates) exactly as the renderer does,
@@ -71,6 +125,8 @@ pub fn pixel(
             height: s.height,
         });
     }
+    // Every sample is recorded, the one kept with `only` among them.
+    worst_case_rays(&s, s.max_samples(), || format!("pixel {x},{y}"))?;
     let mut rec = TreeRecorder::new(scene, TUnit::ImagePlane);
     let mut at = Vec::new();
     let camera = scene.camera();
@@ -109,6 +165,7 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
     {
         return Err(TraceError::BadRay);
     }
+    worst_case_rays(&scene.settings, 1, || "the ray".to_owned())?;
     let mut rec = TreeRecorder::new(scene, TUnit::Direction);
     let color = Tracer::new(scene).trace_given(ray, &mut rec);
     let tree = rec.trees.pop().unwrap_or_default();

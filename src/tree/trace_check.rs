@@ -14,10 +14,27 @@ use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{BranchRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 
+/// Most rays (tree nodes, all samples together) a trace document may hold:
+/// 2²⁰. A recorded ray takes at least about a kilobyte of the document (1.7
+/// kB for a ray that meets nothing in a scene of one sphere and no light;
+/// 8 kB on average in the Whitted scene), so this is about as many as the
+/// 1 GiB the reader reads ([`crate::io::input::MAX_INPUT_BYTES`]) can hold.
+/// The reader refuses a document with more; the recorder refuses, before
+/// tracing, a pixel or ray whose worst case is more
+/// ([`crate::tree::record::worst_case_rays`]): the same constant, so what
+/// raytree records it can read back.
+pub const MAX_TRACE_RAYS: u64 = 1 << 20;
+
 /// Checks that `trace` holds together on its own.
 pub fn structure(trace: &TraceDocument) -> Result<(), String> {
     if let Err((field, message)) = trace.settings.validate() {
         return Err(format!("settings.{field}: {message}"));
+    }
+    let rays: usize = trace.samples.iter().map(|s| s.tree.nodes.len()).sum();
+    if rays as u64 > MAX_TRACE_RAYS {
+        return Err(format!(
+            "samples: {rays} rays in all, more than the {MAX_TRACE_RAYS} a trace holds"
+        ));
     }
     printable("scene.file", &trace.scene.file)?;
     for (i, o) in trace.objects.iter().enumerate() {

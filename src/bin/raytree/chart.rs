@@ -80,10 +80,11 @@ pub fn run(args: &Args) -> Result<()> {
     let title = format!("{} at {}×{}, {how}", source.file, s.width, s.height);
     let figure = chart::draw(&points, &title, args.size.0, args.size.1)
         .context("the chart size is too small")?;
-    png.commit(&figure.png())?;
-    if let Some(file) = csv {
-        file.commit(chart::csv(&points).as_bytes())?;
-    }
+    // Both files or neither.
+    let (picture, figures) = (figure.png(), chart::csv(&points));
+    let mut files = vec![(png, picture.as_slice())];
+    files.extend(csv.map(|file| (file, figures.as_bytes())));
+    output::commit_all(files)?;
     // The figures on standard output, one setting a line, so they can be
     // read (and quoted) without the CSV.
     let mut table = String::new();

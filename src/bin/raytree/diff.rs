@@ -1,7 +1,10 @@
 //! `raytree diff`: how far apart two images are, in 8-bit levels, and with
-//! `-o` a figure of the two side by side with where they differ.
+//! `-o` a figure of the two side by side with where they differ. Its exit
+//! status answers "do they differ?" as cmp(1) and diff(1) do, so a script
+//! can ask it: 0 the same (within `--tolerance`), 1 different, 2 trouble.
 
 use std::path::{Path, PathBuf};
+use std::process::ExitCode;
 
 use anyhow::{Context, Result};
 use raytree::io::{image_diff, image_file};
@@ -18,9 +21,22 @@ pub struct Args {
     /// Also draw A, B and their difference side by side, with a color bar (.png).
     #[arg(short, long, value_name = "OUT.png")]
     output: Option<PathBuf>,
+    /// The largest difference, in 8-bit levels, that still counts as the same: exit status 0 when no channel of any pixel differs by more, 1 when one does, 2 on trouble (an image that cannot be read, images of different sizes, a bad command line, an output that cannot be written).
+    #[arg(long, value_name = "LEVELS", default_value_t = 0)]
+    tolerance: u8,
 }
 
-pub fn run(args: &Args) -> Result<()> {
+/// Exit status 0: no channel differs by more than the tolerance.
+const SAME: u8 = 0;
+/// Exit status 1: some channel does.
+const DIFFERENT: u8 = 1;
+/// Exit status 2: the comparison could not be made or reported.
+pub const TROUBLE: u8 = 2;
+
+/// Compares, prints and answers with the exit status: [`SAME`] or
+/// [`DIFFERENT`]; an error is [`TROUBLE`] (`main` reports it). A reader
+/// that goes away leaves the answer as it is: it is known before printing.
+pub fn run(args: &Args) -> Result<ExitCode> {
     let a = image_file::read_rgb8(&args.a)?;
     let b = image_file::read_rgb8(&args.b)?;
     let d = image_diff::difference(&a, &b)?;
@@ -54,13 +70,26 @@ pub fn run(args: &Args) -> Result<()> {
         )
         .context("the images are too large for a figure")?;
         pending.commit(&figure.png())?;
-        output::note(&format!("wrote {}", path.display()))?;
+        unless_gone(output::note(&format!("wrote {}", path.display())))?;
     }
-    output::print(format!(
+    let answer = if d.max > args.tolerance {
+        DIFFERENT
+    } else {
+        SAME
+    };
+    unless_gone(output::print(format!(
         "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255\n",
         d.mean,
         d.max,
         100.0 * d.share_over_3
-    ))?;
-    Ok(())
+    )))?;
+    Ok(ExitCode::from(answer))
+}
+
+/// A write, where a reader that went away is no failure: the answer stands.
+fn unless_gone(written: std::io::Result<()>) -> std::io::Result<()> {
+    match written {
+        Err(e) if e.kind() == std::io::ErrorKind::BrokenPipe => Ok(()),
+        other => other,
+    }
 }

@@ -3,7 +3,7 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result, bail};
-use raytree::io::input::bytes_in_words;
+use raytree::io::input::{MAX_INPUT_BYTES, bytes_in_words};
 use raytree::scene::generate;
 
 use crate::{memory, output};
@@ -107,6 +107,25 @@ pub fn run(args: &Args) -> Result<()> {
             }
         );
     }
+    if let Generated::Icosphere { triangles, .. } = &args.what {
+        let levels = generate::icosphere_levels(*triangles);
+        let size = generate::icosphere_obj_bytes(levels);
+        if size > MAX_INPUT_BYTES {
+            let most = (0..levels)
+                .rev()
+                .find(|&l| generate::icosphere_obj_bytes(l) <= MAX_INPUT_BYTES)
+                .unwrap_or(0);
+            bail!(
+                "an icosphere of {} triangles would be an OBJ file of about {}, more than the {} raytree reads; the most it makes is {} triangles (--triangles {} or fewer)",
+                20u64 << (2 * levels),
+                bytes_in_words(size),
+                bytes_in_words(MAX_INPUT_BYTES),
+                20u64 << (2 * most),
+                // The nearest level is made: up to halfway to the next.
+                ((20u64 << (2 * most)) + (20u64 << (2 * most + 2))) / 2
+            );
+        }
+    }
     if let Some(available) = memory::available().filter(|&a| need > a) {
         bail!(
             "making {what} needs about {} of memory, more than the {} this machine has available",
@@ -117,10 +136,12 @@ pub fn run(args: &Args) -> Result<()> {
     match &args.what {
         Generated::Spheres { count, seed, .. } => {
             let text = generate::random_spheres(*count as usize, *seed);
+            readable(path, &text)?;
             output::create(path, &[])?.commit(text.as_bytes())?;
         }
         Generated::Grid { size, seed, .. } => {
             let text = generate::sphere_grid(*size, *seed);
+            readable(path, &text)?;
             output::create(path, &[])?.commit(text.as_bytes())?;
         }
         Generated::Icosphere { triangles, .. } => icosphere(*triangles, path)?,
@@ -147,12 +168,34 @@ fn icosphere(triangles: u64, path: &Path) -> Result<()> {
         .into_owned();
     let mesh_file = output::create(&obj, &[])?;
     let scene_file = output::create(path, std::slice::from_ref(&obj))?;
-    mesh_file.commit(generate::icosphere_obj(levels).as_bytes())?;
+    let mesh = generate::icosphere_obj(levels);
+    readable(&obj, &mesh)?;
+    let text = generate::icosphere_scene(&name, 20 << (2 * levels));
+    output::commit_all(vec![
+        (mesh_file, mesh.as_bytes()),
+        (scene_file, text.as_bytes()),
+    ])?;
     output::note(&format!(
         "wrote {} ({} triangles)",
         obj.display(),
         20u64 << (2 * levels)
     ))?;
-    let text = generate::icosphere_scene(&name, 20 << (2 * levels));
-    scene_file.commit(text.as_bytes())
+    Ok(())
+}
+
+/// Refuses to write `text` to `path` when raytree would not read it back.
+/// The sizes allowed keep below the limit (10 million spheres take at most
+/// 106 bytes each; an icosphere's OBJ is estimated before it is made), so
+/// this only guards that reasoning.
+fn readable(path: &Path, text: &str) -> Result<()> {
+    let size = text.len() as u64;
+    if size > MAX_INPUT_BYTES {
+        bail!(
+            "cannot write {}: it would be {}, more than the {} raytree reads",
+            path.display(),
+            bytes_in_words(size),
+            bytes_in_words(MAX_INPUT_BYTES)
+        );
+    }
+    Ok(())
 }

@@ -48,6 +48,7 @@ pub fn run(args: &Args) -> Result<()> {
         (None, Some(path)) => {
             let script = guide::load(path).map_err(anyhow::Error::msg)?;
             let (scene, source) = source::load(Some(&script.scene))?;
+            script.fits(&scene.settings).map_err(anyhow::Error::msg)?;
             let mut app = App::new(
                 scene,
                 source,

@@ -53,7 +53,7 @@ enum Command {
     Forward(forward::Args),
     /// List the lessons, or open lesson N's guided step-through (the trace's own numbers, stop by stop).
     Lesson(lesson::Args),
-    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels; with -o, a figure of where they differ.
+    /// Compare two images (PNG or PPM): mean and largest difference in 8-bit levels; with -o, a figure of where they differ. Exit status 0 if they are the same (within --tolerance), 1 if they differ, 2 on trouble.
     Diff(diff::Args),
     /// Draw the lecture's PostScript ray tracer with Ghostscript (PNG), its transcription slips repaired.
     Postscript(postscript::Args),
@@ -79,7 +79,12 @@ fn main() -> ExitCode {
         Command::Strip(args) => strip::run(&args),
         Command::Forward(args) => forward::run(&args),
         Command::Lesson(args) => lesson::run(&args),
-        Command::Diff(args) => diff::run(&args),
+        // Its exit status is its answer (1: the images differ), so its
+        // errors are 2, as cmp's and diff's are.
+        Command::Diff(args) => {
+            return diff::run(&args)
+                .unwrap_or_else(|e| finish_or(Err(e), ExitCode::from(diff::TROUBLE)));
+        }
         Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
     };
@@ -90,12 +95,17 @@ fn main() -> ExitCode {
 /// closed pipe anywhere (`raytree trace … | head`) is no failure: the reader
 /// has what it wanted, so the program ends quietly with exit 0.
 fn finish(result: anyhow::Result<()>) -> ExitCode {
+    finish_or(result, ExitCode::FAILURE)
+}
+
+/// [`finish`], with `failure` the exit code of an error.
+fn finish_or(result: anyhow::Result<()>, failure: ExitCode) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if output::closed_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
             output::last_word(&format!("error: {}", printable(&format!("{e:#}"))));
-            ExitCode::FAILURE
+            failure
         }
     }
 }

@@ -23,6 +23,7 @@ use std::sync::{Mutex, MutexGuard};
 use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
 use raytree::io::image_file::{self, Format};
+pub use raytree::io::output::commit_all;
 use raytree::io::output::{self, PendingFile};
 use raytree::scene::strict::printable;
 

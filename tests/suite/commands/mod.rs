@@ -2,6 +2,7 @@
 //! or signal ends (one line, exit 1 or 2, nothing half-written), fuzzed inputs.
 
 pub mod cli;
+mod bounds;
 mod chart;
 mod fuzz;
 mod inputs;

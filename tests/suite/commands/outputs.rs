@@ -43,7 +43,8 @@ fn an_output_that_is_an_input_is_refused() {
     image::RgbImage::new(2, 2)
         .write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png)
         .unwrap();
-    let e = refused(
+    let e = crate::common::refused_with(
+        2,
         "diff-figure-over-an-image",
         &[("a.png", &png), ("b.png", &png)],
         &["diff", "a.png", "b.png", "-o", "b.png"],
@@ -116,7 +117,7 @@ fn threads_and_generators_are_bounded() {
     let run = std::process::Command::new("sh")
         .arg("-c")
         .arg(format!(
-            "ulimit -v 2000000 && exec {} generate icosphere --triangles 100000000 -o big.json",
+            "ulimit -v 2000000 && exec {} generate spheres --count 10000000 -o big.json",
             env!("CARGO_BIN_EXE_raytree")
         ))
         .current_dir(dir.path())
@@ -126,7 +127,7 @@ fn threads_and_generators_are_bounded() {
     assert_eq!(run.status.code(), Some(1), "{stderr}");
     assert!(
         stderr.starts_with(
-            "error: making 83886080 triangles needs about 22.6 GB of memory, more than the "
+            "error: making 10000000 spheres needs about 2.5 GB of memory, more than the "
         ) && stderr.lines().count() == 1,
         "{stderr}"
     );
@@ -176,14 +177,14 @@ fn diff_reads_ppm_and_survives_closed_and_full_outputs() {
         String::from_utf8_lossy(&closed.stderr)
     );
     assert!(closed.stderr.is_empty());
-    // A full disk: one line, exit 1.
+    // A full disk: one line, exit 2 (diff's trouble; 1 says the images differ).
     let full = std::process::Command::new(raytree)
         .args(["diff", "a.ppm", "b.png"])
         .current_dir(dir.path())
         .stdout(std::fs::File::create("/dev/full").unwrap())
         .output()
         .unwrap();
-    assert_eq!(full.status.code(), Some(1));
+    assert_eq!(full.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&full.stderr),
         "error: cannot write to standard output: No space left on device\n"
