@@ -652,6 +652,7 @@ fn a_long_epsilon_moves_shadows_both_ways_and_leaves_the_clay_ball() {
         "{brighter} brighter, {darker} darker"
     );
     assert_eq!(on_clay, 0, "{on_clay} differing pixels on the clay ball");
+}
 
 // ---------------------------------------------------------------------------
 // Cracks between boxes: two boxes sharing a face, seen from straight above by a
