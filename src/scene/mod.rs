@@ -83,7 +83,7 @@ impl Scene {
                 .unwrap_or(f64::INFINITY)
         };
         let mut inside: Vec<(f64, f64, usize)> = (0..self.objects.len())
-            .filter(|&i| self.material_of(i).transparent > 0.0 && self.objects[i].contains(p))
+            .filter(|&i| self.is_solid_medium(i) && self.objects[i].contains(p))
             .map(|i| (leaves(i, OUTWARD), leaves(i, -OUTWARD), i))
             .collect();
         inside.sort_by(|a, b| {
@@ -94,6 +94,13 @@ impl Scene {
         inside
             .into_iter()
             .fold(Media::default(), |m, (_, _, i)| m.entered(i))
+    }
+
+    /// Whether object `object` is a transparent solid: a medium whose inside
+    /// [`Scene::media_at`] finds, so a ray's stack of media holds it exactly
+    /// when the ray is inside it (a mesh is entered only by crossing it).
+    pub fn is_solid_medium(&self, object: usize) -> bool {
+        self.material_of(object).transparent > 0.0 && self.objects[object].shape.is_solid()
     }
 
     /// The material of object `object`.

@@ -132,9 +132,9 @@ pub struct HitRecord {
     /// Outward unit geometric normal.
     pub normal: DVec3,
     /// The unit normal the formulas use: the shading normal turned to face the
-    /// incoming ray (the outward normal reversed when the ray arrives from inside).
+    /// incoming ray (the outward normal reversed when the ray leaves the object).
     pub shading_normal: DVec3,
-    /// Whether the ray enters the object.
+    /// Whether the ray enters the object; it leaves only what it is inside.
     pub entering: bool,
     /// Refractive index on the incoming side.
     pub n1: f64,
@@ -142,7 +142,8 @@ pub struct HitRecord {
     pub n2: f64,
     /// The incoming direction as a unit vector, `c`.
     pub incoming: DVec3,
-    /// `n·c` with the normal the formulas use: negative, the ray arrives against it.
+    /// `n·c` with the normal the formulas use: negative, the ray arrives against
+    /// it; 0 at a tangent touch (a hair above where rounding beside one tilted it).
     pub n_dot_c: f64,
     /// The mirror direction `v = c - 2(n·c)n`.
     pub mirror: DVec3,

@@ -205,3 +205,30 @@ fn the_media_around_the_eye_follow_containment_not_the_files_order() {
         );
     }
 }
+
+#[test]
+fn a_ray_touching_a_glass_ball_from_the_air_enters_it() {
+    // From (0, 1, 5) along -z the line touches the unit ball at (0, 1, 0), where
+    // n·c = 0 exactly: the geometry cannot say which side the ray is on. It
+    // starts in the air, so it can only enter the glass: n₁ = 1 → n₂ = 1.5, and
+    // a ray going into a denser medium is never totally reflected.
+    let text = r#"{
+        "materials": {"glass": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5}},
+        "objects": [{"name": "glass", "sphere": {"radius": 1}, "material": "glass"}]
+    }"#;
+    let scene = scene(text);
+    let ray = Ray::new(DVec3::new(0.0, 1.0, 5.0), DVec3::NEG_Z);
+    let trace = record::ray(&scene, SceneSource::new("test.json", text), ray).unwrap();
+    let root = &trace.samples[0].tree.nodes[0];
+    let hit = root.hit.as_ref().expect("the ray touches the ball");
+    assert_eq!(hit.point, DVec3::new(0.0, 1.0, 0.0));
+    assert_eq!(hit.n_dot_c, 0.0);
+    assert_eq!((hit.entering, hit.n1, hit.n2), (true, 1.0, 1.5));
+    let refracted = root.refracted.as_ref().unwrap();
+    assert_ne!(refracted.outcome, Branch::TotalInternalReflection);
+    assert!(hit.refraction.as_ref().unwrap().direction.is_some());
+    // And the refracted ray, inside the glass, leaves it where it meets it again.
+    let inner = &trace.samples[0].tree.nodes[refracted.node.unwrap()];
+    let out = inner.hit.as_ref().unwrap();
+    assert_eq!((out.entering, out.n1, out.n2), (false, 1.5, 1.0));
+}
