@@ -306,7 +306,7 @@ pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
 pub fn normal_like_point_error(hit: &HitRecord) -> Option<f64> {
     let wrong = hit.normal_like_point?;
     let n = hit.normal;
-    Some(n.cross(wrong).length().atan2(n.dot(wrong)).to_degrees())
+    Some(crate::math::angle::angle_between(n, wrong).to_degrees())
 }
 
 /// A shadow ray's outcome; `t = 1` is the light.
@@ -420,7 +420,7 @@ pub fn refraction(hit: &HitRecord) -> Vec<String> {
         return Vec::new();
     };
     let snell = format!(
-        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = acos(−n·c) = {}: sin θ₂ = (n₁/n₂)·sin θ₁ = ({}/{}) × {} = {}",
+        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = atan2(|n × c|, −n·c) = {}: sin θ₂ = (n₁/n₂)·sin θ₁ = ({}/{}) × {} = {}",
         degrees(r.theta1),
         num(hit.n1),
         num(hit.n2),
