@@ -116,7 +116,13 @@ pub struct HitRecord {
     pub t: f64,
     /// For a mesh, the index of the face hit.
     pub face: Option<u32>,
-    /// World-space point.
+    /// The lecture's hit point `S + t·c` on the world ray, as computed. Rounding
+    /// (and any error of `t`) leaves it off the surface.
+    pub on_ray: DVec3,
+    /// How the tracer put it on the surface to make `point`.
+    pub placement: Placement,
+    /// The world-space point the tracer goes on with: `on_ray` placed on the
+    /// surface (for a transformed object, in its own space, then carried back).
     pub point: DVec3,
     /// For a transformed object, the point on the untransformed primitive, `M⁻¹P`.
     pub object_point: Option<DVec3>,
@@ -149,6 +155,24 @@ pub struct HitRecord {
     pub mirror: DVec3,
     /// Snell's law, for a transparent surface.
     pub refraction: Option<RefractionRecord>,
+}
+
+/// How the tracer puts a hit on the surface, starting from `S + t·c`: placed
+/// there, a point's own error is a few ULPs of its size however long the ray
+/// was, so a secondary ray need only start just past it (pbrt-v4 §6.8.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Placement {
+    /// Projected onto the sphere along the line from its center:
+    /// `C + r·(S + t·c - C)/|S + t·c - C|`.
+    OntoSphere,
+    /// Projected onto the plane along its normal: `Q - ((Q - P₀)·n)n`, `Q = S + t·c`.
+    OntoPlane,
+    /// Put on the face hit: its coordinate across the face set to the face's.
+    OntoBoxFace,
+    /// Made from the triangle's corners with its barycentric weights at the
+    /// hit: `b₀A + b₁B + b₂C`.
+    FromCorners,
 }
 
 /// A shadow ray toward one light.

@@ -21,8 +21,8 @@ use crate::tree::arithmetic::{
 };
 use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
-    RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
+    BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, Placement, RayNode,
+    RayTree, RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
 
 /// Why a trace could not be made.
@@ -313,6 +313,13 @@ impl Recorder for TreeRecorder<'_> {
             material: material.name.clone(),
             t: hit.t,
             face: matches!(object.shape, Shape::Mesh(_)).then_some(hit.face),
+            on_ray: Ray::new(node.origin, node.direction).at(hit.t),
+            placement: match object.shape {
+                Shape::Sphere(_) => Placement::OntoSphere,
+                Shape::Plane(_) => Placement::OntoPlane,
+                Shape::Box(_) => Placement::OntoBoxFace,
+                Shape::Triangle(_) | Shape::Mesh(_) => Placement::FromCorners,
+            },
             point: hit.point,
             object_point: transform.map(|tf| tf.to_object.transform_point3(hit.point)),
             object_normal,

@@ -570,3 +570,33 @@ fn snells_angles_resolve_a_ray_five_nanoradians_off_the_normal() {
         "{lines}"
     );
 }
+
+#[test]
+fn the_hit_point_printed_is_s_plus_t_c_and_then_the_point_projected_onto_the_sphere() {
+    // Lesson 13's far ball, pixel 32,32, with the lecture's quadratic: its one
+    // root puts S + t·c at (0.997, 0, −1.006e-7), inside the ball; the tracer
+    // projects that onto the sphere, at (1, 0, −1.009e-7) on the rim.
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/13-numerics/far.json");
+    let far = raytree::scene::loader::load(&path).unwrap();
+    let trace = record::pixel(&far, source(), 32, 32, None).unwrap();
+    let text = raytree::views::text::format(&trace, false);
+    assert!(
+        text.contains(
+            "S + t·c = (0.997, 0, -1.006e-7), projected onto the sphere: P = (1, 0, -1.009e-7)"
+        ) && text.contains("P is 0.003 from S + t·c: put on the surface"),
+        "{text}"
+    );
+    // The record keeps both, and the projection is C + r·(Q − C)/|Q − C| of
+    // Q = S + t·c (the ball is the unit one at the origin).
+    let node = &trace.samples[0].tree.nodes[0];
+    let hit = node.hit.as_ref().unwrap();
+    assert_eq!(hit.on_ray, node.origin + hit.t * node.direction);
+    assert_eq!(
+        hit.placement,
+        raytree::tree::ray_tree::Placement::OntoSphere
+    );
+    // Tolerance: a normalisation, a few ULPs of a unit vector.
+    assert!((hit.point - hit.on_ray.normalize()).length() < 1e-15);
+    assert!(hit.on_ray.length() < 0.998, "S + t·c lies inside the ball");
+}
