@@ -24,7 +24,7 @@
 #![warn(missing_docs)]
 
 // The lecture's formulas, bottom up.
-pub mod math; // the ray S + t·c, floating-point error bounds, bounding boxes
+pub mod math; // the ray S + t·c, floating-point error bounds, bounding boxes, angles
 pub mod geometry; // ray–object intersection, transformed primitives, the hierarchy
 pub mod shading; // local illumination, reflection, refraction
 pub mod scene; // the camera and image plane, lights, materials, objects, scene files

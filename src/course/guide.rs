@@ -311,6 +311,7 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         put("material", h.material.clone());
         put("t", num(h.t));
         put("point", vec3(h.point));
+        put("on_ray", vec3(h.on_ray));
         put("normal", vec3(h.shading_normal));
         put("n1", num(h.n1));
         put("n2", num(h.n2));

@@ -98,6 +98,12 @@ impl Shape {
         }
     }
 
+    /// Whether the shape is a solid, with an inside [`Shape::contains`] can
+    /// tell: not a triangle or a mesh, which are surfaces.
+    pub fn is_solid(&self) -> bool {
+        !matches!(self, Shape::Triangle(_) | Shape::Mesh(_))
+    }
+
     /// The box around the shape in its own space; `None` for a plane.
     pub fn bounds(&self) -> Option<Bounds> {
         match self {

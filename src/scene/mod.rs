@@ -18,11 +18,16 @@ pub mod vary; // one numeric field of a scene file, varied (filmstrips)
 use glam::DVec3;
 
 use crate::geometry::object::Object;
+use crate::math::ray::Ray;
 use crate::scene::camera::{Camera, CameraSpec};
 use crate::scene::light::PointLight;
 use crate::scene::settings::RenderSettings;
 use crate::shading::material::Material;
 use crate::shading::optics::Media;
+
+/// The direction of the ray [`Scene::media_at`] sorts the media along. Any
+/// gives nested media the same order.
+const OUTWARD: DVec3 = DVec3::new(1.0, 2.0, 3.0);
 
 /// Everything the tracer needs.
 #[derive(Clone, Debug, PartialEq)]
@@ -51,33 +56,51 @@ impl Scene {
         Camera::new(&self.camera, self.settings.width, self.settings.height)
     }
 
-    /// The transparent objects that contain `p`, outermost (largest) first:
-    /// the media a ray starting at `p` travels through.
+    /// The transparent objects that contain `p`, outermost first: the media a
+    /// ray starting at `p` travels through, stacked as the tracer stacks them
+    /// (the medium entered last is the innermost, [`Media`]).
+    ///
+    /// The order is containment's, whatever the file's: along every ray from
+    /// `p`, an object inside another is left no later than the one around it.
+    /// So the media are sorted by where one ray from `p` leaves them, farthest
+    /// first: the order in which a ray coming the opposite way would have
+    /// entered them, by the tracer's own rule. For objects that overlap, neither
+    /// inside the other, that ray's order is the one taken. Two objects left at
+    /// the same point (they touch there) are told apart by the ray the other
+    /// way, and then by the file's order.
     pub fn media_at(&self, p: DVec3) -> Media {
-        let inside: Vec<usize> = (0..self.objects.len())
-            .filter(|&i| self.material_of(i).transparent > 0.0 && self.objects[i].contains(p))
+        let methods = self.settings.intersection_methods();
+        // Where the ray from `p` along `dir` leaves object `i`, which holds `p`:
+        // its last root ahead, or never (a half-space it runs deeper into).
+        let leaves = |i: usize, dir: DVec3| {
+            let roots = self.objects[i].roots(&Ray::new(p, dir), methods);
+            roots
+                .as_slice()
+                .iter()
+                .copied()
+                .filter(|&t| t > 0.0)
+                .reduce(f64::max)
+                .unwrap_or(f64::INFINITY)
+        };
+        let mut inside: Vec<(f64, f64, usize)> = (0..self.objects.len())
+            .filter(|&i| self.is_solid_medium(i) && self.objects[i].contains(p))
+            .map(|i| (leaves(i, OUTWARD), leaves(i, -OUTWARD), i))
             .collect();
-        // An object that contains another's center encloses it: it goes first.
-        let mut ranked: Vec<(usize, usize)> = inside
-            .iter()
-            .map(|&i| {
-                (
-                    inside
-                        .iter()
-                        .filter(|&&j| j != i && self.encloses(i, j))
-                        .count(),
-                    i,
-                )
-            })
-            .collect();
-        ranked.sort_by_key(|&(encloses, i)| (std::cmp::Reverse(encloses), i));
-        ranked
+        inside.sort_by(|a, b| {
+            b.0.total_cmp(&a.0)
+                .then(b.1.total_cmp(&a.1))
+                .then(a.2.cmp(&b.2))
+        });
+        inside
             .into_iter()
-            .fold(Media::default(), |m, (_, i)| m.entered(i))
+            .fold(Media::default(), |m, (_, _, i)| m.entered(i))
     }
 
-    fn encloses(&self, outer: usize, inner: usize) -> bool {
-        self.objects[outer].contains(self.objects[inner].center())
+    /// Whether object `object` is a transparent solid: a medium whose inside
+    /// [`Scene::media_at`] finds, so a ray's stack of media holds it exactly
+    /// when the ray is inside it (a mesh is entered only by crossing it).
+    pub fn is_solid_medium(&self, object: usize) -> bool {
+        self.material_of(object).transparent > 0.0 && self.objects[object].shape.is_solid()
     }
 
     /// The material of object `object`.

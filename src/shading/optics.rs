@@ -145,6 +145,17 @@ impl Media {
         &self.objects[..usize::from(self.len)]
     }
 
+    /// Whether the ray is inside `object`, as far as the stack knows.
+    pub fn holds(&self, object: usize) -> bool {
+        self.as_slice().contains(&(object as u32))
+    }
+
+    /// Whether the stack is full: an object entered now would not be kept, so
+    /// an object it lacks may still be around the ray.
+    pub fn is_full(&self) -> bool {
+        usize::from(self.len) == MAX_NESTED_MEDIA
+    }
+
     /// The innermost object, if any.
     pub fn innermost(&self) -> Option<usize> {
         self.as_slice().last().map(|&o| o as usize)

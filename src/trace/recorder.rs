@@ -72,7 +72,8 @@ pub struct HitEvent {
     pub normal: DVec3,
     /// The unit normal used for shading, turned to face the incoming ray.
     pub shading_normal: DVec3,
-    /// Whether the ray enters the object (hits its outside).
+    /// Whether the ray enters the object, or leaves it (only what it is inside:
+    /// see `Tracer::enters`).
     pub entering: bool,
     /// Refractive index on the ray's side.
     pub n1: f64,

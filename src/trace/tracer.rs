@@ -240,13 +240,14 @@ impl<'s> Tracer<'s> {
     ) -> (HitEvent, Surface) {
         let methods = self.scene.settings.intersection_methods();
         let surface = self.scene.objects[object].surface(ray, t, face, methods);
-        let entering = ray.dir.dot(surface.normal) < 0.0;
+        let inside = media.holds(object);
+        let entering = self.enters(object, inside, media, ray.dir.dot(surface.normal));
         // The media rule: n₁ is the innermost medium the ray travels in, n₂ the
         // innermost on the far side; so leaving one of two overlapping objects
         // while inside the other changes nothing. A ray leaving an object its
         // stack lacks (nested deeper than the stack holds) was inside it all the same.
         let ior_of = |m: Option<usize>| m.map_or(1.0, |o| self.scene.material_of(o).ior);
-        let n1 = if entering || media.as_slice().contains(&(object as u32)) {
+        let n1 = if entering || inside {
             ior_of(media.innermost())
         } else {
             self.scene.material_of(object).ior
@@ -271,6 +272,25 @@ impl<'s> Tracer<'s> {
             n2,
         };
         (hit, surface)
+    }
+
+    /// Whether a ray crossing `object`'s surface with `n·c = n_dot_c` (outward
+    /// normal) enters it or leaves it. A ray leaves only what it is inside: the
+    /// stack of media says so for every object it holds (`inside`), and that it
+    /// is outside a transparent solid it lacks, unless it is full. The sign of
+    /// `n·c` decides only for the rest (opaque objects, meshes, a full stack);
+    /// it is 0 at a tangent touch, and near one rounding can flip it, so for a
+    /// glass ball from the air it would say "leaving" where the ray never went in.
+    /// A touch with nothing to say the ray is inside enters.
+    #[inline(always)]
+    fn enters(&self, object: usize, inside: bool, media: &Media, n_dot_c: f64) -> bool {
+        if inside {
+            false
+        } else if self.scene.is_solid_medium(object) && !media.is_full() {
+            true
+        } else {
+            n_dot_c <= 0.0
+        }
     }
 
     /// `ambient + Σ (diffuse + specular)` over the lights a shadow ray reaches.

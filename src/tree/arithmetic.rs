@@ -222,9 +222,10 @@ pub struct RefractionRecord {
     pub eta: f64,
     /// `cos θ₁ = -n·c`.
     pub cos_theta1: f64,
-    /// θ₁ in degrees: between the incoming ray (reversed) and the normal.
+    /// θ₁ in degrees: between the incoming ray (reversed) and the normal,
+    /// `atan2(|n × c|, -n·c)` ([`crate::math::angle::angle_between`]), right at every angle.
     pub theta1: f64,
-    /// `sin θ₁`.
+    /// `sin θ₁`, of that angle (`√(1 - cos² θ₁)` is 0 below about 1.5e-8 rad).
     pub sin_theta1: f64,
     /// `sin θ₂ = η·sin θ₁`; above 1 there is no refracted ray.
     pub sin_theta2: f64,
@@ -416,14 +417,15 @@ pub fn hit_optics(
     let refraction = transparent.then(|| {
         let eta = n1 / n2;
         let cos_theta1 = -n_dot_c;
-        let sin_theta1 = (1.0 - cos_theta1 * cos_theta1).max(0.0).sqrt();
+        let theta1 = crate::math::angle::angle_between(-c, n);
+        let sin_theta1 = theta1.sin();
         let sin_theta2 = eta * sin_theta1;
         let direction = refract(c, n, eta);
         let sin2_t = eta * eta * (1.0 - cos_theta1 * cos_theta1).max(0.0);
         RefractionRecord {
             eta,
             cos_theta1,
-            theta1: cos_theta1.clamp(-1.0, 1.0).acos().to_degrees(),
+            theta1: theta1.to_degrees(),
             sin_theta1,
             sin_theta2,
             cos_theta2: direction.map(|_| (1.0 - sin2_t).sqrt()),

@@ -116,7 +116,13 @@ pub struct HitRecord {
     pub t: f64,
     /// For a mesh, the index of the face hit.
     pub face: Option<u32>,
-    /// World-space point.
+    /// The lecture's hit point `S + t·c` on the world ray, as computed. Rounding
+    /// (and any error of `t`) leaves it off the surface.
+    pub on_ray: DVec3,
+    /// How the tracer put it on the surface to make `point`.
+    pub placement: Placement,
+    /// The world-space point the tracer goes on with: `on_ray` placed on the
+    /// surface (for a transformed object, in its own space, then carried back).
     pub point: DVec3,
     /// For a transformed object, the point on the untransformed primitive, `M⁻¹P`.
     pub object_point: Option<DVec3>,
@@ -132,9 +138,9 @@ pub struct HitRecord {
     /// Outward unit geometric normal.
     pub normal: DVec3,
     /// The unit normal the formulas use: the shading normal turned to face the
-    /// incoming ray (the outward normal reversed when the ray arrives from inside).
+    /// incoming ray (the outward normal reversed when the ray leaves the object).
     pub shading_normal: DVec3,
-    /// Whether the ray enters the object.
+    /// Whether the ray enters the object; it leaves only what it is inside.
     pub entering: bool,
     /// Refractive index on the incoming side.
     pub n1: f64,
@@ -142,12 +148,31 @@ pub struct HitRecord {
     pub n2: f64,
     /// The incoming direction as a unit vector, `c`.
     pub incoming: DVec3,
-    /// `n·c` with the normal the formulas use: negative, the ray arrives against it.
+    /// `n·c` with the normal the formulas use: negative, the ray arrives against
+    /// it; 0 at a tangent touch (a hair above where rounding beside one tilted it).
     pub n_dot_c: f64,
     /// The mirror direction `v = c - 2(n·c)n`.
     pub mirror: DVec3,
     /// Snell's law, for a transparent surface.
     pub refraction: Option<RefractionRecord>,
+}
+
+/// How the tracer puts a hit on the surface, starting from `S + t·c`: placed
+/// there, a point's own error is a few ULPs of its size however long the ray
+/// was, so a secondary ray need only start just past it (pbrt-v4 §6.8.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Placement {
+    /// Projected onto the sphere along the line from its center:
+    /// `C + r·(S + t·c - C)/|S + t·c - C|`.
+    OntoSphere,
+    /// Projected onto the plane along its normal: `Q - ((Q - P₀)·n)n`, `Q = S + t·c`.
+    OntoPlane,
+    /// Put on the face hit: its coordinate across the face set to the face's.
+    OntoBoxFace,
+    /// Made from the triangle's corners with its barycentric weights at the
+    /// hit: `b₀A + b₁B + b₂C`.
+    FromCorners,
 }
 
 /// A shadow ray toward one light.

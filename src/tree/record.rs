@@ -22,8 +22,8 @@ use crate::tree::arithmetic::{
 };
 use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
 use crate::tree::ray_tree::{
-    BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, RayNode, RayTree,
-    RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
+    BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, Placement, RayNode,
+    RayTree, RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
 use crate::tree::trace_check::MAX_TRACE_RAYS;
 
@@ -370,6 +370,13 @@ impl Recorder for TreeRecorder<'_> {
             material: material.name.clone(),
             t: hit.t,
             face: matches!(object.shape, Shape::Mesh(_)).then_some(hit.face),
+            on_ray: Ray::new(node.origin, node.direction).at(hit.t),
+            placement: match object.shape {
+                Shape::Sphere(_) => Placement::OntoSphere,
+                Shape::Plane(_) => Placement::OntoPlane,
+                Shape::Box(_) => Placement::OntoBoxFace,
+                Shape::Triangle(_) | Shape::Mesh(_) => Placement::FromCorners,
+            },
             point: hit.point,
             object_point: transform.map(|tf| tf.to_object.transform_point3(hit.point)),
             object_normal,

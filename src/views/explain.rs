@@ -267,10 +267,10 @@ fn fates(roots: &[RootRecord], hit_found: bool) -> Vec<(f64, &'static str)> {
 pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
     let side = if hit.entering { "entering" } else { "leaving" };
     let headline = format!(
-        "closest hit: '{}' at t = {}, P = S + t·c = {}, {side}, n₁ = {} → n₂ = {} ({searched})",
+        "closest hit: '{}' at t = {}, {}, {side}, n₁ = {} → n₂ = {} ({searched})",
         hit.name,
         num(hit.t),
-        vec3(hit.point),
+        hit_point(hit),
         num(hit.n1),
         num(hit.n2),
     );
@@ -293,6 +293,12 @@ pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
         num(hit.n_dot_c),
         vec3(hit.incoming)
     )];
+    if vec3(hit.on_ray) != vec3(hit.point) {
+        details.push(format!(
+            "P is {} from S + t·c: put on the surface, P is off it by a few ULPs of its own size however far the ray came, so a secondary ray need only start just past that (pbrt-v4 §6.8.5)",
+            num((hit.point - hit.on_ray).length())
+        ));
+    }
     if let Some(p) = hit.object_point {
         details.push(format!(
             "on the untransformed primitive: P' = M⁻¹P = {}",
@@ -322,13 +328,41 @@ pub fn hit(hit: &HitRecord, searched: &str) -> Lines {
     (headline, details)
 }
 
+/// The hit point as the tracer made it: the lecture's `S + t·c`, and where the
+/// tracer then put it on the surface, when that moved it.
+fn hit_point(hit: &HitRecord) -> String {
+    use crate::tree::ray_tree::Placement;
+    if hit.point == hit.on_ray {
+        return format!("P = S + t·c = {}", vec3(hit.point));
+    }
+    let how = match hit.placement {
+        Placement::OntoSphere => "projected onto the sphere",
+        Placement::OntoPlane => "projected onto the plane",
+        Placement::OntoBoxFace => "put on the box's face",
+        Placement::FromCorners => "made from the triangle's corners",
+    };
+    if hit.object_point.is_some() {
+        format!(
+            "S + t·c = {}; P = {}, found in the object's own space ({how} there) and carried back",
+            vec3(hit.on_ray),
+            vec3(hit.point)
+        )
+    } else {
+        format!(
+            "S + t·c = {}, {how}: P = {}",
+            vec3(hit.on_ray),
+            vec3(hit.point)
+        )
+    }
+}
+
 /// For a transformed object, the angle in degrees between the normal
 /// transformed like a point, `M·n'`, and the right one, `(M⁻¹)ᵀn'`: zero when `M`
 /// keeps angles (rotations, even scales), up to 90° for a very flat object.
 pub fn normal_like_point_error(hit: &HitRecord) -> Option<f64> {
     let wrong = hit.normal_like_point?;
     let n = hit.normal;
-    Some(n.cross(wrong).length().atan2(n.dot(wrong)).to_degrees())
+    Some(crate::math::angle::angle_between(n, wrong).to_degrees())
 }
 
 /// A shadow ray's outcome; `t = 1` is the light.
@@ -442,7 +476,7 @@ pub fn refraction(hit: &HitRecord) -> Vec<String> {
         return Vec::new();
     };
     let snell = format!(
-        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = acos(−n·c) = {}: sin θ₂ = (n₁/n₂)·sin θ₁ = ({}/{}) × {} = {}",
+        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = atan2(|n × c|, −n·c) = {}: sin θ₂ = (n₁/n₂)·sin θ₁ = ({}/{}) × {} = {}",
         degrees(r.theta1),
         num(hit.n1),
         num(hit.n2),

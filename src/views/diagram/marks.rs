@@ -8,6 +8,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::math::angle::angle_between;
 use crate::scene::Scene;
 use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
@@ -165,7 +166,7 @@ pub fn marks(
         let refracted = child_dir(&node.refracted)
             .filter(|&t| labelled && in_plane(t))
             .zip(h.refraction.as_ref().and_then(|r| r.theta2));
-        let theta = (-h.n_dot_c).clamp(-1.0, 1.0).acos().to_degrees();
+        let theta = angle_between(-h.incoming, h.shading_normal).to_degrees();
         if reflected.is_some() || refracted.is_some() {
             // One arc for the angle of incidence, named for both laws when both apply.
             let name = match (reflected.is_some(), refracted.is_some()) {

@@ -347,8 +347,10 @@ fn mirror_directions_and_snells_angles_check_out() {
                     );
                 }
                 let Some(r) = &h.refraction else { continue };
-                let cos1 = (-n.dot(h.incoming)).clamp(-1.0, 1.0);
-                assert!(close(r.theta1, cos1.acos().to_degrees(), 1e-12), "{at}: θ₁");
+                // θ₁ by pbrt-v4's AngleBetween, 2·asin(|a − b|/2) for unit a = −c,
+                // b = n: a form of its own, accurate near 0 as acos is not.
+                let theta1 = 2.0 * ((-h.incoming - n).length() / 2.0).min(1.0).asin();
+                assert!(close(r.theta1, theta1.to_degrees(), 1e-12), "{at}: θ₁");
                 let refracted = node
                     .refracted
                     .as_ref()
@@ -477,7 +479,7 @@ fn the_tir_pixel_reads_as_the_lecture_writes_it() {
         "A = |c₁|² = ",
         "(the surface the ray starts on: ignored)",
         "(behind the origin: ignored)",
-        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = acos(−n·c) = ",
+        "Snell: n₁ sin θ₁ = n₂ sin θ₂ with θ₁ = atan2(|n × c|, −n·c) = ",
         "θ₂ = ",
         "> 1: no angle has that sine; θ₁ is beyond the critical angle asin(n₂/n₁) = asin(1/1.5) = 41.81°",
         "N·L = ",
@@ -593,4 +595,77 @@ fn a_ray_in_a_face_plane_reads_as_its_slabs_decide() {
             }
         }
     }
+}
+
+#[test]
+fn snells_angles_resolve_a_ray_five_nanoradians_off_the_normal() {
+    // Glass below the plane y = 0; the ray comes down δ = 5e-9 rad off its
+    // normal. acos(−n·c) cannot see it: cos δ = 1 − 1.25e-17 rounds to 1.
+    let text = r#"{
+        "materials": {"glass": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5}},
+        "objects": [{"name": "pool", "plane": {"point": [0, 0, 0], "normal": [0, 1, 0]}, "material": "glass"}]
+    }"#;
+    let scene = raytree::scene::loader::parse(text, "test.json").unwrap();
+    let delta = 5e-9f64;
+    let ray = Ray::new(DVec3::Y, DVec3::new(delta.sin(), -delta.cos(), 0.0));
+    let trace = record::ray(&scene, SceneSource::new("test.json", text), ray).unwrap();
+    let hit = trace.samples[0].tree.nodes[0].hit.as_ref().unwrap();
+    let r = hit.refraction.as_ref().unwrap();
+    // Tolerance: relative 1e-12. The vectors are exact here (c = (5e-9, −1, 0),
+    // n = (0, 1, 0)), so the angle is off only by the rounding of atan2 and of
+    // the trip through degrees, a few 1e-16 of it; acos's 0 is off by all of it.
+    let rel = |got: f64, want: f64| ((got - want) / want).abs();
+    assert!(
+        rel(r.theta1.to_radians(), delta) < 1e-12,
+        "θ₁ = {}°",
+        r.theta1
+    );
+    assert!(
+        rel(r.sin_theta1, delta.sin()) < 1e-12,
+        "sin θ₁ = {}",
+        r.sin_theta1
+    );
+    // Snell: sin θ₂ = sin θ₁ / 1.5, and at this angle θ₂ = sin θ₂ to 1e-17.
+    let theta2 = (delta.sin() / 1.5).asin();
+    assert!(
+        rel(r.theta2.unwrap().to_radians(), theta2) < 1e-12,
+        "θ₂ = {:?}°",
+        r.theta2
+    );
+    // The text prints the formula it used, and its value.
+    let lines = raytree::views::explain::refraction(hit).join("\n");
+    assert!(
+        lines.contains("θ₁ = atan2(|n × c|, −n·c) = 2.865e-7°") && lines.contains("θ₂ = 1.910e-7°"),
+        "{lines}"
+    );
+}
+
+#[test]
+fn the_hit_point_printed_is_s_plus_t_c_and_then_the_point_projected_onto_the_sphere() {
+    // Lesson 13's far ball, pixel 32,32, with the lecture's quadratic: its one
+    // root puts S + t·c at (0.997, 0, −1.006e-7), inside the ball; the tracer
+    // projects that onto the sphere, at (1, 0, −1.009e-7) on the rim.
+    let path =
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/13-numerics/far.json");
+    let far = raytree::scene::loader::load(&path).unwrap();
+    let trace = record::pixel(&far, source(), 32, 32, None).unwrap();
+    let text = raytree::views::text::format(&trace, false);
+    assert!(
+        text.contains(
+            "S + t·c = (0.997, 0, -1.006e-7), projected onto the sphere: P = (1, 0, -1.009e-7)"
+        ) && text.contains("P is 0.003 from S + t·c: put on the surface"),
+        "{text}"
+    );
+    // The record keeps both, and the projection is C + r·(Q − C)/|Q − C| of
+    // Q = S + t·c (the ball is the unit one at the origin).
+    let node = &trace.samples[0].tree.nodes[0];
+    let hit = node.hit.as_ref().unwrap();
+    assert_eq!(hit.on_ray, node.origin + hit.t * node.direction);
+    assert_eq!(
+        hit.placement,
+        raytree::tree::ray_tree::Placement::OntoSphere
+    );
+    // Tolerance: a normalisation, a few ULPs of a unit vector.
+    assert!((hit.point - hit.on_ray.normalize()).length() < 1e-15);
+    assert!(hit.on_ray.length() < 0.998, "S + t·c lies inside the ball");
 }

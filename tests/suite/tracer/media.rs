@@ -128,3 +128,107 @@ fn a_ray_given_by_hand_starts_in_the_media_around_its_origin() {
         ]
     );
 }
+
+/// Water (1.33, radius 1) inside glass (1.5, radius 2), both centered on the
+/// origin, with the eye inside the water looking out at a checkered floor:
+/// the objects listed water first when `water_first`.
+fn eye_in_water_in_glass(water_first: bool) -> raytree::scene::Scene {
+    let glass = r#"{"name": "glass", "sphere": {"radius": 2}, "material": "glass"}"#;
+    let water = r#"{"name": "water", "sphere": {"radius": 1}, "material": "water"}"#;
+    let (first, second) = if water_first {
+        (water, glass)
+    } else {
+        (glass, water)
+    };
+    let mut s = scene(&format!(
+        r#"{{
+        "camera": {{"eye": [0, 0.2, 0.5], "look_at": [0, -3, -4]}},
+        "lights": [{{"position": [3, 6, 4]}}],
+        "materials": {{
+            "glass": {{"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5}},
+            "water": {{"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.33}},
+            "floor": {{"checker": {{"size": 0.5, "colors": [[1, 1, 1], [0.2, 0.3, 0.8]]}}}}
+        }},
+        "objects": [
+            {first},
+            {second},
+            {{"name": "floor", "plane": {{"point": [0, -3, 0], "normal": [0, 1, 0]}}, "material": "floor"}}
+        ]
+    }}"#
+    ));
+    s.settings.width = 64;
+    s.settings.height = 48;
+    s
+}
+
+#[test]
+fn the_media_around_the_eye_follow_containment_not_the_files_order() {
+    use raytree::trace::render::render;
+    use raytree::trace::tracer::Tracer;
+    let quiet = &raytree::trace::progress::Progress::QUIET;
+    let glass_first = eye_in_water_in_glass(false);
+    let water_first = eye_in_water_in_glass(true);
+    // The same scene either way: the same picture, bit for bit.
+    assert!(
+        render(&glass_first, quiet).unwrap() == render(&water_first, quiet).unwrap(),
+        "the order of the objects in the file changed the image"
+    );
+    // The center pixel's primary ray leaves the water into the glass (1.33 →
+    // 1.5), then the glass into the air (1.5 → 1), in either order.
+    // A ray given by hand from the same point (`trace --ray`) starts in the same media.
+    for (s, given) in [&glass_first, &water_first]
+        .into_iter()
+        .flat_map(|s| [(s, false), (s, true)])
+    {
+        let mut log = crate::common::Log::default();
+        let ray = s.camera().pixel_ray(32.0, 24.0);
+        if given {
+            Tracer::new(s).trace_given(ray, &mut log);
+        } else {
+            Tracer::new(s).trace_primary(ray, &mut log);
+        }
+        let name = |h: &raytree::trace::recorder::HitEvent| s.objects[h.object].name.clone();
+        let crossings: Vec<(String, bool, f64, f64)> = log
+            .hits
+            .iter()
+            .take(2)
+            .map(|h| (name(h), h.entering, h.n1, h.n2))
+            .collect();
+        assert_eq!(
+            crossings,
+            [
+                ("water".to_owned(), false, 1.33, 1.5),
+                ("glass".to_owned(), false, 1.5, 1.0)
+            ],
+            "objects {:?}, ray given by hand: {given}",
+            s.objects.iter().map(|o| &o.name).collect::<Vec<_>>()
+        );
+    }
+}
+
+#[test]
+fn a_ray_touching_a_glass_ball_from_the_air_enters_it() {
+    // From (0, 1, 5) along -z the line touches the unit ball at (0, 1, 0), where
+    // n·c = 0 exactly: the geometry cannot say which side the ray is on. It
+    // starts in the air, so it can only enter the glass: n₁ = 1 → n₂ = 1.5, and
+    // a ray going into a denser medium is never totally reflected.
+    let text = r#"{
+        "materials": {"glass": {"ambient": 0, "diffuse": 0, "transparent": 1, "ior": 1.5}},
+        "objects": [{"name": "glass", "sphere": {"radius": 1}, "material": "glass"}]
+    }"#;
+    let scene = scene(text);
+    let ray = Ray::new(DVec3::new(0.0, 1.0, 5.0), DVec3::NEG_Z);
+    let trace = record::ray(&scene, SceneSource::new("test.json", text), ray).unwrap();
+    let root = &trace.samples[0].tree.nodes[0];
+    let hit = root.hit.as_ref().expect("the ray touches the ball");
+    assert_eq!(hit.point, DVec3::new(0.0, 1.0, 0.0));
+    assert_eq!(hit.n_dot_c, 0.0);
+    assert_eq!((hit.entering, hit.n1, hit.n2), (true, 1.0, 1.5));
+    let refracted = root.refracted.as_ref().unwrap();
+    assert_ne!(refracted.outcome, Branch::TotalInternalReflection);
+    assert!(hit.refraction.as_ref().unwrap().direction.is_some());
+    // And the refracted ray, inside the glass, leaves it where it meets it again.
+    let inner = &trace.samples[0].tree.nodes[refracted.node.unwrap()];
+    let out = inner.hit.as_ref().unwrap();
+    assert_eq!((out.entering, out.n1, out.n2), (false, 1.5, 1.0));
+}
