@@ -5,7 +5,7 @@
 use std::time::Instant;
 
 use super::features::{FeatureMap, Features};
-use crate::scene::Scene;
+use super::traced_scene::TracedScene;
 
 /// What `f` looks for.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -121,11 +121,12 @@ impl Finding {
     }
 
     /// Scans `scene`'s features if not yet done; says how long it took when it scanned.
-    fn scan(&mut self, scene: Option<&Scene>) -> Option<String> {
+    fn scan(&mut self, traced: Option<&TracedScene>) -> Option<String> {
         if self.features.is_some() {
             return None;
         }
-        let scene = scene?;
+        let traced = traced?;
+        let scene = traced.scene();
         let started = Instant::now();
         // Every pixel up to a million; beyond, every other one.
         let s = scene.settings;
@@ -134,7 +135,7 @@ impl Finding {
         } else {
             1
         };
-        self.features = Some(super::features::scan(scene, stride));
+        self.features = Some(super::features::scan_with(&traced.tracer(), stride));
         Some(format!(
             "scanned the image in {:.1} s",
             started.elapsed().as_secs_f64()
@@ -145,7 +146,7 @@ impl Finding {
     /// what to tell about it.
     pub fn find(
         &mut self,
-        scene: Option<&Scene>,
+        scene: Option<&TracedScene>,
         from: (u32, u32),
     ) -> (Option<(u32, u32)>, String) {
         self.scan(scene);
@@ -180,7 +181,7 @@ impl Finding {
 
     /// The next overlay, as `o` cycles; what to tell, if anything (a scan, or
     /// that there is no scene to overlay).
-    pub fn next_overlay(&mut self, scene: Option<&Scene>) -> Option<String> {
+    pub fn next_overlay(&mut self, scene: Option<&TracedScene>) -> Option<String> {
         self.overlay = self.overlay.next();
         if self.overlay == Overlay::None {
             return None;

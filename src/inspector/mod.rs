@@ -24,6 +24,7 @@ mod reveal;
 mod selection;
 mod stepping;
 mod tick;
+mod traced_scene;
 mod tree_pane;
 mod ui;
 mod whatif;

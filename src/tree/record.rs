@@ -62,6 +62,20 @@ pub fn pixel(
     y: u32,
     only: Option<u32>,
 ) -> Result<TraceDocument, TraceError> {
+    pixel_with(&Tracer::new(scene), source, x, y, only)
+}
+
+/// [`pixel`], traced by `tracer` (made beforehand for the scene from what it
+/// keeps, [`crate::trace::tracer::Prepared`]), so that recording costs the
+/// pixel alone: the inspector records a pixel per key.
+pub fn pixel_with(
+    tracer: &Tracer,
+    source: SceneSource,
+    x: u32,
+    y: u32,
+    only: Option<u32>,
+) -> Result<TraceDocument, TraceError> {
+    let scene = tracer.scene();
     let s = scene.settings;
     if x >= s.width || y >= s.height {
         return Err(TraceError::PixelOutside {
@@ -74,7 +88,7 @@ pub fn pixel(
     let mut rec = TreeRecorder::new(scene, TUnit::ImagePlane);
     let mut at = Vec::new();
     let camera = scene.camera();
-    let color = pixel_color_at(&Tracer::new(scene), &camera, x, y, &mut rec, Some(&mut at));
+    let color = pixel_color_at(tracer, &camera, x, y, &mut rec, Some(&mut at));
     if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
         return Err(TraceError::SampleOutside {
             index: sample,

@@ -1,0 +1,99 @@
+//! The inspector's work for a key does not grow with the scene: what it makes
+//! of all the objects (the hierarchy) is made once, and a key costs what its
+//! pixel and its panes cost. With a million objects each key took 4–9 s
+//! (issue 29). Counted, not timed: the counts are exact on any machine.
+
+use std::path::Path;
+
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
+use raytree::inspector::{App, draw, tick};
+use raytree::trace::accelerator::Accelerator;
+
+/// An inspector on `scenes/spheres.json` (2,001 objects: it has a hierarchy),
+/// no worker thread, and a way to press a key and draw the frame after it.
+fn spheres(start: Option<(u32, u32)>) -> App {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.json");
+    let (scene, source) = raytree::scene::source::load(Some(&path)).unwrap();
+    assert!(scene.objects.len() > 2000);
+    App::new(scene, source, start, false)
+}
+
+fn press(app: &mut App, terminal: &mut Terminal<TestBackend>, code: KeyCode) {
+    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+    frame(app, terminal);
+}
+
+fn frame(app: &mut App, terminal: &mut Terminal<TestBackend>) {
+    tick(app, Rect::new(0, 0, 160, 48));
+    app.render_picture_now();
+    terminal.draw(|f| draw(f, app)).unwrap();
+}
+
+/// Every kind of key that traces, scans or re-renders: the arrows (a new
+/// pixel), stepping, the tree, zoom, find and overlays (a scan of the image),
+/// the next sample, a what-if edit and its undo.
+const KEYS: &[KeyCode] = &[
+    KeyCode::Right,
+    KeyCode::Down,
+    KeyCode::Left,
+    KeyCode::Char('n'),
+    KeyCode::Char('n'),
+    KeyCode::Char('p'),
+    KeyCode::Char('x'),
+    KeyCode::Tab,
+    KeyCode::Down,
+    KeyCode::Enter,
+    KeyCode::Char('e'),
+    KeyCode::Tab,
+    KeyCode::Char('+'),
+    KeyCode::Char('-'),
+    KeyCode::Char('f'),
+    KeyCode::Char('F'),
+    KeyCode::Char('o'),
+    KeyCode::Char('s'),
+    KeyCode::Char('m'),
+    KeyCode::Char('m'),
+    KeyCode::Char('a'),
+    KeyCode::Char('x'),
+    KeyCode::Char('_'),
+    KeyCode::Char('d'),
+    KeyCode::Char('e'),
+    KeyCode::Char('p'),
+    KeyCode::Char('t'),
+    KeyCode::Char('h'),
+    KeyCode::Char('='),
+    KeyCode::Char('3'),
+    KeyCode::Enter,
+    KeyCode::Right,
+    KeyCode::Char('u'),
+];
+
+#[test]
+fn the_hierarchy_is_built_once_and_no_key_builds_it_again() {
+    let built = Accelerator::built_on_this_thread;
+    let at_start = built();
+    // Starting on the pixel worth a look scans the image and traces that pixel.
+    let mut app = spheres(None);
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    frame(&mut app, &mut terminal);
+    assert_eq!(
+        built() - at_start,
+        1,
+        "the first frame builds the scene's hierarchy once"
+    );
+    let before = built();
+    for &code in KEYS {
+        press(&mut app, &mut terminal, code);
+        assert_eq!(
+            built(),
+            before,
+            "{code:?} built a hierarchy again (message: {})",
+            app.message()
+        );
+    }
+    // The keys did what they say (else the count above proves nothing).
+    assert!(app.message().contains("as loaded"), "{}", app.message());
+}
