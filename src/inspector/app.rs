@@ -24,6 +24,9 @@ use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
+use crate::views::diagram::arrange::{Objects, layout_of};
+use crate::views::diagram::layout::Layout;
+use crate::views::diagram::options::Options;
 
 /// A line being typed in the step line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -333,6 +336,20 @@ impl App {
     /// The what-if edits in effect, as typed (a material's with its name).
     pub fn edits(&self) -> &[String] {
         self.what_if.edits()
+    }
+
+    /// The diagram pane's layout: the pixel's rays (while stepping, those
+    /// computed so far), with the same projection and honesty rules as
+    /// `raytree diagram`, and the objects they met (every object, in a scene
+    /// without a hierarchy): drawn again at every key, it must not cost a
+    /// million objects' projections. `None` without a scene or a trace.
+    pub fn diagram(&self) -> Option<Layout> {
+        let options = Options {
+            sample: self.selection.sample(),
+            until_step: self.step(),
+            ..Options::default()
+        };
+        layout_of(self.trace()?, self.scene()?, &options, Objects::Met).ok()
     }
 
     /// The what-if edits and the pixel before them.

@@ -97,3 +97,38 @@ fn the_hierarchy_is_built_once_and_no_key_builds_it_again() {
     // The keys did what they say (else the count above proves nothing).
     assert!(app.message().contains("as loaded"), "{}", app.message());
 }
+
+#[test]
+fn the_diagram_lays_out_the_objects_the_rays_met_not_every_object() {
+    let mut app = spheres(None);
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    frame(&mut app, &mut terminal);
+    for code in [KeyCode::Null, KeyCode::Char('n'), KeyCode::Right] {
+        press(&mut app, &mut terminal, code);
+        let trace = app.trace().unwrap();
+        let tree = &trace.samples[0].tree;
+        // What the rays name: the objects tested (planes by every ray,
+        // spheres where the hierarchy led, the hit among them), and for each
+        // shadow ray its blocker and the object it tried first.
+        let mut named: Vec<usize> = tree
+            .nodes
+            .iter()
+            .flat_map(|n| n.tests.iter().map(|t| t.object))
+            .collect();
+        named.sort_unstable();
+        named.dedup();
+        let shadow_rays: usize = tree.nodes.iter().map(|n| n.shadow_rays.len()).sum();
+        let lay = app.diagram().unwrap();
+        assert!(
+            !named.is_empty() && lay.objects.len() <= named.len() + 2 * shadow_rays,
+            "{code:?}: {} of the scene's {} objects laid out, for rays that named {}",
+            lay.objects.len(),
+            app.scene().unwrap().objects.len(),
+            named.len()
+        );
+        // Every object hit is drawn.
+        for n in tree.nodes.iter().filter_map(|n| n.hit.as_ref()) {
+            assert!(lay.object(n.object).is_some(), "{code:?}: '{}'", n.name);
+        }
+    }
+}
