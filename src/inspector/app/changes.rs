@@ -23,7 +23,7 @@ impl App {
         self.selection.set_pixel((x, y));
         let Some(scene) = &self.scene else { return };
         let started = Instant::now();
-        match crate::tree::record::pixel_with(&scene.tracer(), self.source.clone(), x, y, None) {
+        match scene.record(self.source.clone(), x, y) {
             Ok(trace) => {
                 self.set_trace(trace);
                 self.selection.set_traced_in(started.elapsed());

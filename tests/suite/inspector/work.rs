@@ -132,3 +132,23 @@ fn the_diagram_lays_out_the_objects_the_rays_met_not_every_object() {
         }
     }
 }
+
+#[test]
+fn every_trace_shares_the_object_list_made_when_the_scene_was_loaded() {
+    let mut app = spheres(Some((320, 240)));
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    frame(&mut app, &mut terminal);
+    // Kept alive, so a list made again could not take the same memory.
+    let first = app.trace().unwrap().clone();
+    for code in [KeyCode::Right, KeyCode::Down, KeyCode::Left] {
+        press(&mut app, &mut terminal, code);
+        let now = app.trace().unwrap();
+        assert_ne!(now.pixel, first.pixel, "{code:?} traced another pixel");
+        assert_eq!(now.objects.len(), 2001);
+        assert!(
+            std::ptr::eq(now.objects.as_ptr(), first.objects.as_ptr()),
+            "{code:?}: the trace made its {} objects' entries again",
+            now.objects.len()
+        );
+    }
+}
