@@ -104,7 +104,7 @@ impl App {
             KeyCode::Enter => match self.prompt.take() {
                 Some(Prompt::GoTo(t)) => self.go_to(&t),
                 Some(Prompt::Edit(t)) => self.edit(&t),
-                Some(Prompt::Write(t)) => self.message = self.what_if.write(&t),
+                Some(Prompt::Write(t)) => self.message = self.what_if.write(&self.source, &t),
                 None => {}
             },
             _ => {}

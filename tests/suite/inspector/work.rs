@@ -152,3 +152,29 @@ fn every_trace_shares_the_object_list_made_when_the_scene_was_loaded() {
         );
     }
 }
+
+#[test]
+fn a_what_if_edit_reads_the_materials_again_not_the_objects() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("spheres.json");
+    let text =
+        std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.json"))
+            .unwrap();
+    std::fs::write(&file, &text).unwrap();
+    let (scene, source) = raytree::scene::source::load(Some(&file)).unwrap();
+    let mut app = App::new(scene, source, Some((320, 240)), false);
+    // Were the objects read again, this one would refuse the edit.
+    let mut json: serde_json::Value = serde_json::from_str(&text).unwrap();
+    json["objects"] = serde_json::json!([{ "sphere": { "center": [0, 0, 0], "radius": -1 } }]);
+    std::fs::write(&file, json.to_string()).unwrap();
+    for c in "mmax_depth=2".chars() {
+        app.on_key(KeyEvent::new(KeyCode::Char(c), KeyModifiers::NONE));
+    }
+    app.on_key(KeyEvent::new(KeyCode::Enter, KeyModifiers::NONE));
+    assert_eq!(
+        app.message(),
+        "what if max_depth=2  (u: undo all, w: write)"
+    );
+    let scene = app.scene().unwrap();
+    assert_eq!((scene.objects.len(), scene.settings.max_depth), (2001, 2));
+}
