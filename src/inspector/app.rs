@@ -121,7 +121,7 @@ impl App {
             selection: Selection::default(),
             stepping: Stepping::default(),
             guide: None,
-            finding: Finding::default(),
+            finding: Finding::new(worker.is_some()),
             what_if: WhatIf::default(),
             image: ImageView::new(worker),
             screen: Screen::default(),
@@ -134,10 +134,19 @@ impl App {
         }
     }
 
-    /// Takes the newest picture the worker finished, if any; returns whether
-    /// one came.
-    pub(super) fn receive_picture(&mut self) -> bool {
-        self.image.receive()
+    /// Takes the newest picture the worker finished and the image's features
+    /// if their scan finished (a pending `f` then goes to what it finds);
+    /// returns whether anything came.
+    pub(super) fn receive(&mut self) -> bool {
+        let picture = self.image.receive();
+        let Some(arrived) = self.finding.receive(self.cursor()) else {
+            return picture;
+        };
+        self.message = arrived.said;
+        if let Some(p) = arrived.found {
+            self.select(p);
+        }
+        true
     }
 
     /// Asks the worker for the picture of the image pane's window.

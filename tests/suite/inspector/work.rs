@@ -178,3 +178,36 @@ fn a_what_if_edit_reads_the_materials_again_not_the_objects() {
     let scene = app.scene().unwrap();
     assert_eq!((scene.objects.len(), scene.settings.max_depth), (2001, 2));
 }
+
+#[test]
+fn finding_scans_the_image_beside_the_keys_and_jumps_when_the_scan_arrives() {
+    // Without a worker the scan is made here and now: where `F` (a blocked
+    // shadow ray) goes.
+    let mut here = spheres(Some((0, 0)));
+    here.on_key(KeyEvent::new(KeyCode::Char('F'), KeyModifiers::NONE));
+    let (want, told) = (here.cursor(), here.message().to_owned());
+    assert!(
+        told.starts_with("found: blocked") && want != (0, 0),
+        "{told}"
+    );
+
+    // The live inspector: the key returns before a single pixel is scanned.
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/spheres.json");
+    let (scene, source) = raytree::scene::source::load(Some(&path)).unwrap();
+    let mut live = App::new(scene, source, Some((0, 0)), true);
+    live.on_key(KeyEvent::new(KeyCode::Char('F'), KeyModifiers::NONE));
+    assert_eq!(live.cursor(), (0, 0));
+    let scanning = live.message().to_owned();
+    assert!(scanning.starts_with("scanning the image"), "{scanning}");
+    // Frames, as the event loop draws them, until the scan arrives (a bound
+    // against hanging, not a measure of speed).
+    let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
+    let mut frames = raytree::inspector::Frames::default();
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(600);
+    while live.message() == scanning {
+        assert!(std::time::Instant::now() < deadline, "the scan never came");
+        frames.frame(&mut terminal, &mut live).unwrap();
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    assert_eq!((live.cursor(), live.message()), (want, told.as_str()));
+}
