@@ -133,8 +133,12 @@ fn inspector_first_frame(bencher: Bencher) {
     bencher.bench_local(|| {
         let mut app = inspector_on_whitted();
         let window = app.window();
-        let picture =
-            raytree::inspector::render_picture(app.scene().unwrap(), window, 0, &|| false);
+        let picture = raytree::inspector::render_picture(
+            &raytree::trace::tracer::Tracer::new(app.scene().unwrap()),
+            window,
+            0,
+            &|| false,
+        );
         app.set_picture(picture);
         let mut terminal = Terminal::new(TestBackend::new(160, 48)).unwrap();
         raytree::inspector::tick(&mut app, ratatui::layout::Rect::new(0, 0, 160, 48));

@@ -9,7 +9,6 @@
 mod changes;
 mod keys;
 
-use std::sync::Arc;
 use std::time::Duration;
 
 use super::find::Finding;
@@ -19,11 +18,15 @@ use super::preview::{Picture, Window, Worker};
 use super::reveal::Revealed;
 use super::selection::{Focus, Item, Selection};
 use super::stepping::{Guided, Stepping};
+use super::traced_scene::TracedScene;
 use super::whatif::WhatIf;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::Step;
+use crate::views::diagram::arrange::{Objects, layout_of};
+use crate::views::diagram::layout::Layout;
+use crate::views::diagram::options::Options;
 
 /// A line being typed in the step line.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -40,8 +43,8 @@ pub enum Prompt {
 /// asked, and the parts that own the rest.
 pub struct App {
     /// The scene, when known (a saved trace may come without it); the edited
-    /// one while what-if edits are in effect.
-    scene: Option<Arc<Scene>>,
+    /// one while what-if edits are in effect. With its hierarchy, built once.
+    scene: Option<TracedScene>,
     /// Names the scene in traces.
     source: SceneSource,
     /// The pixel, its trace, the focus, the tree pane's cursor.
@@ -78,12 +81,12 @@ impl App {
     /// preview worker; tests leave it off and call [`App::render_picture_now`].
     pub fn new(scene: Scene, source: SceneSource, start: Option<(u32, u32)>, live: bool) -> Self {
         let s = scene.settings;
+        let scene = TracedScene::new(scene);
         let start = start.unwrap_or_else(|| {
             // A coarse scan (every 8th pixel) is quick even for large images.
-            super::features::scan(&scene, 8).most_interesting(s.width, s.height)
+            super::features::scan_with(&scene.tracer(), 8).most_interesting(s.width, s.height)
         });
-        let scene = Arc::new(scene);
-        let worker = live.then(|| Worker::start(Arc::clone(&scene)));
+        let worker = live.then(|| Worker::start(scene.clone()));
         let mut app = Self::empty(Some(scene), source, worker);
         app.select(start);
         app
@@ -91,9 +94,9 @@ impl App {
 
     /// An inspector on a saved trace; `scene` is the scene it names, when found.
     pub fn from_trace(trace: TraceDocument, scene: Option<Scene>, live: bool) -> Self {
-        let scene = scene.map(Arc::new);
+        let scene = scene.map(TracedScene::new);
         let worker = if live {
-            scene.as_ref().map(|s| Worker::start(Arc::clone(s)))
+            scene.as_ref().map(|s| Worker::start(s.clone()))
         } else {
             None
         };
@@ -111,14 +114,14 @@ impl App {
         app
     }
 
-    fn empty(scene: Option<Arc<Scene>>, source: SceneSource, worker: Option<Worker>) -> Self {
+    fn empty(scene: Option<TracedScene>, source: SceneSource, worker: Option<Worker>) -> Self {
         Self {
             scene,
             source,
             selection: Selection::default(),
             stepping: Stepping::default(),
             guide: None,
-            finding: Finding::default(),
+            finding: Finding::new(worker.is_some()),
             what_if: WhatIf::default(),
             image: ImageView::new(worker),
             screen: Screen::default(),
@@ -131,10 +134,19 @@ impl App {
         }
     }
 
-    /// Takes the newest picture the worker finished, if any; returns whether
-    /// one came.
-    pub(super) fn receive_picture(&mut self) -> bool {
-        self.image.receive()
+    /// Takes the newest picture the worker finished and the image's features
+    /// if their scan finished (a pending `f` then goes to what it finds);
+    /// returns whether anything came.
+    pub(super) fn receive(&mut self) -> bool {
+        let picture = self.image.receive();
+        let Some(arrived) = self.finding.receive(self.cursor()) else {
+            return picture;
+        };
+        self.message = arrived.said;
+        if let Some(p) = arrived.found {
+            self.select(p);
+        }
+        true
     }
 
     /// Asks the worker for the picture of the image pane's window.
@@ -190,7 +202,7 @@ impl App {
 
     /// The scene, when known.
     pub fn scene(&self) -> Option<&Scene> {
-        self.scene.as_deref()
+        self.scene.as_ref().map(|s| &**s.scene())
     }
 
     /// Names the scene in traces.
@@ -225,7 +237,7 @@ impl App {
 
     /// The full image's size.
     pub fn image_size(&self) -> (u32, u32) {
-        match (&self.scene, self.selection.trace()) {
+        match (self.scene(), self.selection.trace()) {
             (Some(s), _) => (s.settings.width, s.settings.height),
             (None, Some(t)) => (t.settings.width, t.settings.height),
             _ => (1, 1),
@@ -319,7 +331,8 @@ impl App {
     /// Traces the picture of the current window here and now (tests, benchmarks).
     pub fn render_picture_now(&mut self) {
         if let Some(scene) = &self.scene {
-            let picture = super::preview::render_picture(scene, self.window(), 1, &|| false);
+            let picture =
+                super::preview::render_picture(&scene.tracer(), self.window(), 1, &|| false);
             self.image.set_picture(picture);
         }
     }
@@ -332,6 +345,20 @@ impl App {
     /// The what-if edits in effect, as typed (a material's with its name).
     pub fn edits(&self) -> &[String] {
         self.what_if.edits()
+    }
+
+    /// The diagram pane's layout: the pixel's rays (while stepping, those
+    /// computed so far), with the same projection and honesty rules as
+    /// `raytree diagram`, and the objects they met (every object, in a scene
+    /// without a hierarchy): drawn again at every key, it must not cost a
+    /// million objects' projections. `None` without a scene or a trace.
+    pub fn diagram(&self) -> Option<Layout> {
+        let options = Options {
+            sample: self.selection.sample(),
+            until_step: self.step(),
+            ..Options::default()
+        };
+        layout_of(self.trace()?, self.scene()?, &options, Objects::Met).ok()
     }
 
     /// The what-if edits and the pixel before them.

@@ -16,9 +16,7 @@ use super::colors::term_color;
 use crate::figure::clip::{clip_line, clip_segment};
 use crate::figure::pen::Rgb;
 use crate::figure::pen::palette;
-use crate::views::diagram::arrange::layout;
 use crate::views::diagram::layout::Layout as DiagramLayout;
-use crate::views::diagram::options::Options;
 use crate::views::diagram::projection::Outline;
 
 /// Draws the diagram pane.
@@ -32,18 +30,11 @@ pub fn draw_diagram(frame: &mut Frame, app: &App, area: Rect, tc: bool) {
     .find(|t| t.chars().count() + 2 <= usize::from(area.width))
     .unwrap_or("");
     let block = Block::default().borders(Borders::ALL).title(title);
-    let (Some(trace), Some(scene)) = (app.trace(), app.scene()) else {
+    if app.trace().is_none() || app.scene().is_none() {
         frame.render_widget(Paragraph::new("no scene: no diagram").block(block), area);
         return;
-    };
-    // The same projection and honesty rules as `raytree diagram`; while stepping,
-    // only what the algorithm has computed so far.
-    let options = Options {
-        sample: app.selection().sample(),
-        until_step: app.step(),
-        ..Options::default()
-    };
-    let Ok(lay) = layout(trace, scene, &options) else {
+    }
+    let Some(lay) = app.diagram() else {
         return;
     };
     let (lo, hi) = braille_window(&lay, block.inner(area));
@@ -114,11 +105,16 @@ fn outline_lines(outline: &Outline, (lo, hi): (DVec2, DVec2)) -> Vec<[DVec2; 2]>
     }
 }
 
-/// Every object: its silhouette dotted and dim, what the drawing plane cuts
-/// of it solid; and the image plane.
+/// Every object laid out: its silhouette dotted and dim, what the drawing
+/// plane cuts of it solid (none whose silhouette lies outside the pane); and
+/// the image plane.
 fn paint_outlines(ctx: &mut Context, lay: &DiagramLayout, window: (DVec2, DVec2), tc: bool) {
     let step = (window.1 - window.0).max_element() / 120.0;
+    let outside = |(lo, hi): (DVec2, DVec2)| hi.cmplt(window.0).any() || lo.cmpgt(window.1).any();
     for shape in &lay.objects {
+        if shape.silhouette.bounds().is_some_and(outside) {
+            continue;
+        }
         for [a, b] in outline_lines(&shape.silhouette, window) {
             dotted(ctx, a, b, term_color([90, 90, 90], tc), step / 3.0);
         }

@@ -58,13 +58,18 @@ pub fn of_pixel(tracer: &Tracer, scene: &Scene, x: u32, y: u32) -> Features {
 /// The features of every `stride`-th pixel across and down, row by row,
 /// through the one pixel loop: `(columns, rows, features)`.
 pub fn scan(scene: &Scene, stride: u32) -> FeatureMap {
+    scan_with(&Tracer::new(scene), stride)
+}
+
+/// [`scan`] with `tracer`, made beforehand for its scene.
+pub fn scan_with(tracer: &Tracer, stride: u32) -> FeatureMap {
     let stride = stride.max(1);
-    let tracer = Tracer::new(scene);
+    let scene = tracer.scene();
     let traced = trace_pixels(
         scene,
         Pixels::Every(stride),
         || (),
-        |_, x, y| of_pixel(&tracer, scene, x, y),
+        |_, x, y| of_pixel(tracer, scene, x, y),
         &Progress::QUIET,
     )
     .expect("the scene's size is capped on loading, so a cell per pixel fits in memory");

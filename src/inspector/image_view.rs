@@ -3,12 +3,10 @@
 //! the picture of the window the pane shows and takes it once traced, so a key
 //! never waits for tracing.
 
-use std::sync::Arc;
-
 use ratatui::layout::Rect;
 
 use super::preview::{Picture, Window, Worker};
-use crate::scene::Scene;
+use super::traced_scene::TracedScene;
 
 /// The zoom, the picture and the worker.
 pub(super) struct ImageView {
@@ -101,9 +99,9 @@ impl ImageView {
     }
 
     /// The scene changed: a worker for `scene` (when live), no picture, none asked for.
-    pub fn restart(&mut self, scene: &Arc<Scene>) {
+    pub fn restart(&mut self, scene: &TracedScene) {
         if self.worker.is_some() {
-            self.worker = Some(Worker::start(Arc::clone(scene)));
+            self.worker = Some(Worker::start(scene.clone()));
         }
         self.picture = None;
         self.requested = None;

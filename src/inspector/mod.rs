@@ -24,6 +24,7 @@ mod reveal;
 mod selection;
 mod stepping;
 mod tick;
+mod traced_scene;
 mod tree_pane;
 mod ui;
 mod whatif;
@@ -45,7 +46,7 @@ use ratatui::layout::Rect;
 
 pub use app::{App, Prompt};
 pub use colors::detect as color_support;
-pub use features::{FeatureMap, Features, scan as scan_features};
+pub use features::{FeatureMap, Features, scan as scan_features, scan_with as scan_features_with};
 pub use find::{Overlay, Seek};
 pub use keymap::{Action, Binding, KEYS, Key};
 pub use layout::{Areas, Pane};
@@ -122,7 +123,8 @@ fn event_loop(
 }
 
 /// The event loop's frames, drawn only when something changed since the last
-/// one: an input event, the terminal's size, or a picture from the worker.
+/// one: an input event, the terminal's size, a picture from the worker or the
+/// image's features from their scan.
 /// Idle, the inspector draws nothing (it drew every 30 ms, for a fifth of a
 /// core, issue 29).
 #[derive(Debug)]
@@ -151,9 +153,9 @@ impl Frames {
         self.input = true;
     }
 
-    /// Takes a picture the worker finished, if one came, and, if anything
-    /// changed, makes the update step ([`tick`]) and draws a frame that only
-    /// reads the state; returns whether it drew.
+    /// Takes a picture the worker finished or the features scanned, if any
+    /// came, and, if anything changed, makes the update step ([`tick`]) and
+    /// draws a frame that only reads the state; returns whether it drew.
     pub fn frame<B: Backend>(
         &mut self,
         terminal: &mut Terminal<B>,
@@ -161,7 +163,7 @@ impl Frames {
     ) -> Result<bool, B::Error> {
         terminal.autoresize()?;
         let area = terminal.get_frame().area();
-        let arrived = app.receive_picture();
+        let arrived = app.receive();
         if !(self.input || arrived || self.size != Some(area)) {
             return Ok(false);
         }

@@ -6,8 +6,8 @@ use std::sync::Arc;
 use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::mpsc::{Receiver, Sender, channel};
 
+use super::traced_scene::TracedScene;
 use crate::io::image::rgb8;
-use crate::scene::Scene;
 use crate::trace::pixel::pixel_color;
 use crate::trace::progress::Progress;
 use crate::trace::recorder::NoRecorder;
@@ -74,13 +74,13 @@ pub struct Picture {
 /// and fills the block; pass 1 traces every dot. Stops early (returns `None`)
 /// when `cancelled` says a newer window is wanted.
 pub fn render_picture(
-    scene: &Scene,
+    tracer: &Tracer,
     window: Window,
     pass: u8,
     cancelled: &(dyn Fn() -> bool + Sync),
 ) -> Option<Picture> {
+    let scene = tracer.scene();
     let (w, h) = (scene.settings.width, scene.settings.height);
-    let tracer = Tracer::new(scene);
     let camera = scene.camera();
     let step: u16 = if pass == 0 { 4 } else { 1 };
     let pixels = window.cells(step);
@@ -88,7 +88,7 @@ pub fn render_picture(
         scene,
         pixels,
         || NoRecorder,
-        |rec, x, y| Some(rgb8(pixel_color(&tracer, &camera, x, y, rec))),
+        |rec, x, y| Some(rgb8(pixel_color(tracer, &camera, x, y, rec))),
         &Progress::cancellable(cancelled),
     )
     .ok()?;
@@ -128,8 +128,8 @@ pub struct Worker {
 }
 
 impl Worker {
-    /// Starts the worker thread for `scene`.
-    pub fn start(scene: Arc<Scene>) -> Self {
+    /// Starts the worker thread for `scene`, whose hierarchy it shares.
+    pub(super) fn start(scene: TracedScene) -> Self {
         let (requests, inbox) = channel::<Window>();
         let (outbox, pictures) = channel();
         // Each request bumps `latest`; a pass in progress stops when it moves on.
@@ -144,7 +144,7 @@ impl Worker {
                 let mine = newest.load(Ordering::SeqCst);
                 let stale = || newest.load(Ordering::SeqCst) != mine;
                 for pass in 0..2 {
-                    match render_picture(&scene, window, pass, &stale) {
+                    match render_picture(&scene.tracer(), window, pass, &stale) {
                         Some(p) => {
                             if outbox.send(p).is_err() {
                                 return;
@@ -207,6 +207,7 @@ mod tests {
     #[test]
     fn coarse_pass_fills_blocks_and_fine_pass_every_dot() {
         let scene = crate::scene::loader::whitted();
+        let tracer = Tracer::new(&scene);
         let window = Window {
             left: 0.0,
             top: 0.0,
@@ -214,13 +215,13 @@ mod tests {
             cols: 40,
             rows: 30,
         };
-        let coarse = render_picture(&scene, window, 0, &|| false).unwrap();
-        let fine = render_picture(&scene, window, 1, &|| false).unwrap();
+        let coarse = render_picture(&tracer, window, 0, &|| false).unwrap();
+        let fine = render_picture(&tracer, window, 1, &|| false).unwrap();
         assert!(coarse.dots.iter().all(Option::is_some) && fine.dots.iter().all(Option::is_some));
         assert!(!coarse.complete && fine.complete);
         // The coarse pass is exact on the dots it traced.
         assert_eq!(coarse.dots[4 * 40 + 8], fine.dots[4 * 40 + 8]);
         // A cancelled pass gives nothing.
-        assert!(render_picture(&scene, window, 1, &|| true).is_none());
+        assert!(render_picture(&tracer, window, 1, &|| true).is_none());
     }
 }

@@ -11,7 +11,7 @@ use super::ui::{details_top, panes};
 
 /// Brings `app` up to date for a frame on a terminal of `area`.
 pub fn tick(app: &mut App, area: Rect) {
-    app.receive_picture();
+    app.receive();
     let panes = panes(app, area);
     app.set_areas(panes.areas());
     app.request_picture();

@@ -1,18 +1,21 @@
 //! What-if: change the selected hit's material or a method choice inside the
 //! inspector and see what the pixel does. Edits are made to the scene file's
-//! JSON and the scene is parsed again, so an edit is checked exactly as a
+//! JSON and read again by the scene loader, so an edit is checked exactly as a
 //! scene file would be, and the edited scene can be written out as a file
-//! that raytree reads back the same.
+//! that raytree reads back the same. An edit never touches an object, so the
+//! JSON kept and read again is the file's without its objects: a scene of a
+//! million objects took 18 s to edit when the whole file was (issue 29).
 
 use std::path::Path;
 use std::sync::Arc;
 
 use glam::DVec3;
-use serde_json::Value;
+use serde::Deserializer;
+use serde::de::{IgnoredAny, MapAccess, Visitor};
+use serde_json::{Map, Value};
 
 use crate::io::output::PendingFile;
 use crate::scene::Scene;
-use crate::scene::settings::RenderSettings;
 use crate::scene::source::SceneSource;
 
 /// The material fields an edit may change, as the scene file names them.
@@ -31,14 +34,15 @@ pub const MATERIAL_FIELDS: &[&str] = &[
 pub const METHOD_FIELDS: &[&str] = &["sphere", "offset", "weights", "max_depth", "cutoff"];
 
 /// Applies `field=value` to material `material` (or, for a method field, to the
-/// render settings) in `json`, returning the new scene. `settings` are the
-/// settings in use (the command line's overrides included): they are kept,
-/// except the field edited. Errors are one line saying what is wrong.
+/// render settings) in `json` (the scene file's, without its objects:
+/// [`skeleton`]), and returns `scene` with that material or setting as the
+/// edited JSON reads. `scene`'s other settings (the command line's overrides
+/// included) and materials are kept. Errors are one line saying what is wrong.
 pub fn apply(
     json: &mut Value,
     material: Option<&str>,
     typed: &str,
-    settings: &RenderSettings,
+    scene: &Scene,
     file: &str,
 ) -> Result<Scene, String> {
     let (field, raw) = typed
@@ -76,20 +80,32 @@ pub fn apply(
         ));
     }
     let text = serde_json::to_string(&edited).map_err(|e| e.to_string())?;
-    let mut scene = crate::scene::loader::parse(&text, file).map_err(|e| e.to_string())?;
-    let mut kept = *settings;
-    let new = scene.settings;
+    let read = crate::scene::loader::parse(&text, file).map_err(|e| e.to_string())?;
+    let mut settings = scene.settings;
+    let new = read.settings;
     match field {
-        "sphere" => kept.sphere = new.sphere,
-        "offset" => kept.offset = new.offset,
-        "weights" => kept.weights = new.weights,
-        "max_depth" => kept.max_depth = new.max_depth,
-        "cutoff" => kept.cutoff = new.cutoff,
+        "sphere" => settings.sphere = new.sphere,
+        "offset" => settings.offset = new.offset,
+        "weights" => settings.weights = new.weights,
+        "max_depth" => settings.max_depth = new.max_depth,
+        "cutoff" => settings.cutoff = new.cutoff,
         _ => {}
     }
-    scene.settings = kept;
+    let mut materials = scene.materials.clone();
+    if let Some(name) = material.filter(|_| MATERIAL_FIELDS.contains(&field)) {
+        let now = read.materials.iter().find(|m| m.name == name);
+        let was = materials.iter_mut().find(|m| m.name == name);
+        match (now, was) {
+            (Some(now), Some(was)) => *was = now.clone(),
+            _ => return Err(format!("material '{name}' is not in the scene")),
+        }
+    }
     *json = edited;
-    Ok(scene)
+    Ok(Scene {
+        settings,
+        materials,
+        ..scene.clone()
+    })
 }
 
 /// A typed value as JSON: a number, a color `r,g,b`, or a word (`lecture`).
@@ -109,14 +125,23 @@ fn parse_value(raw: &str) -> Value {
     Value::String(raw.to_owned())
 }
 
-/// Writes the edited scene to `path`, which must not exist yet (an edit never
-/// replaces a file, least of all the scene it came from); atomically, and
-/// removed if a signal ends the inspector while it is written.
-pub fn write(json: &Value, path: &Path) -> Result<(), String> {
+/// Writes the scene file `source` names with the top-level fields of `edited`
+/// (its JSON without its objects, edited) to `path`, which must not exist yet
+/// (an edit never replaces a file, least of all the scene it came from);
+/// atomically, and removed if a signal ends the inspector while it is written.
+pub fn write(source: &SceneSource, edited: &Value, path: &Path) -> Result<(), String> {
     if path.exists() {
         return Err(format!("{} exists: give a new file name", path.display()));
     }
-    let mut text = serde_json::to_string_pretty(json).map_err(|e| e.to_string())?;
+    let mut json: Value =
+        serde_json::from_str(&read_text(source)?).map_err(|e| format!("{}: {e}", source.file))?;
+    let (Some(whole), Some(edited)) = (json.as_object_mut(), edited.as_object()) else {
+        return Err(format!("{}: the scene is not a JSON object", source.file));
+    };
+    for (field, value) in edited {
+        whole.insert(field.clone(), value.clone());
+    }
+    let mut text = serde_json::to_string_pretty(&json).map_err(|e| e.to_string())?;
     text.push('\n');
     PendingFile::create(path)
         .and_then(|file| file.commit_new(text.as_bytes()))
@@ -138,7 +163,7 @@ pub struct Before {
 /// scene as loaded (to undo them) and the pixel before the first.
 #[derive(Debug, Default)]
 pub(super) struct WhatIf {
-    /// The scene file's JSON (read on the first edit).
+    /// The scene file's JSON without its objects (read on the first edit).
     json: Option<Value>,
     /// The scene as loaded, while edits are in effect.
     loaded: Option<Arc<Scene>>,
@@ -171,10 +196,10 @@ impl WhatIf {
         before: Option<Before>,
     ) -> Result<Arc<Scene>, String> {
         if self.json.is_none() {
-            self.json = Some(read_json(source)?);
+            self.json = Some(skeleton(&read_text(source)?, &source.file)?);
         }
         let json = self.json.as_mut().expect("read above");
-        let edited = apply(json, material, typed, &scene.settings, &source.file)?;
+        let edited = apply(json, material, typed, scene, &source.file)?;
         if self.before.is_none() {
             self.before = before;
         }
@@ -209,12 +234,13 @@ impl WhatIf {
         Some(loaded)
     }
 
-    /// Writes the edited scene to a new file `name`; what to tell.
-    pub fn write(&self, name: &str) -> String {
+    /// Writes the edited scene, which `source` names, to a new file `name`;
+    /// what to tell.
+    pub fn write(&self, source: &SceneSource, name: &str) -> String {
         let Some(json) = self.json.as_ref().filter(|_| !self.edits.is_empty()) else {
             return "no edits to write (m: edit the selected hit's material)".to_owned();
         };
-        match write(json, Path::new(name.trim())) {
+        match write(source, json, Path::new(name.trim())) {
             Ok(()) => format!("wrote {}", name.trim()),
             Err(e) => e,
         }
@@ -237,34 +263,77 @@ pub fn default_name(source: &SceneSource) -> String {
         .to_string()
 }
 
-/// The scene file's JSON (the built-in scene's, for the built-in scene).
-fn read_json(source: &SceneSource) -> Result<Value, String> {
-    let text = if source.file == crate::scene::source::BUILT_IN {
-        crate::scene::loader::WHITTED.to_owned()
+/// The scene file's text (the built-in scene's, for the built-in scene).
+fn read_text(source: &SceneSource) -> Result<String, String> {
+    if source.file == crate::scene::source::BUILT_IN {
+        Ok(crate::scene::loader::WHITTED.to_owned())
     } else {
-        crate::scene::loader::read(Path::new(&source.file)).map_err(|e| e.to_string())?
-    };
-    serde_json::from_str(&text).map_err(|e| format!("{}: {e}", source.file))
+        crate::scene::loader::read(Path::new(&source.file)).map_err(|e| e.to_string())
+    }
+}
+
+/// A scene file's JSON without its `objects`, which are read past and never
+/// kept: all an edit changes, and all it needs to read again.
+pub fn skeleton(text: &str, file: &str) -> Result<Value, String> {
+    struct Fields;
+    impl<'de> Visitor<'de> for Fields {
+        type Value = Map<String, Value>;
+        fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+            f.write_str("a scene object")
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Self::Value, A::Error> {
+            let mut fields = Map::new();
+            while let Some(field) = map.next_key::<String>()? {
+                if field == "objects" {
+                    map.next_value::<IgnoredAny>()?;
+                } else {
+                    fields.insert(field, map.next_value()?);
+                }
+            }
+            Ok(fields)
+        }
+    }
+    let mut de = serde_json::Deserializer::from_str(text);
+    let fields = de
+        .deserialize_map(Fields)
+        .and_then(|fields| de.end().map(|()| fields))
+        .map_err(|e| format!("{file}: {e}"))?;
+    Ok(Value::Object(fields))
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::scene::loader::{WHITTED, parse, whitted};
 
     fn whitted_json() -> Value {
-        serde_json::from_str(crate::scene::loader::WHITTED).unwrap()
+        skeleton(WHITTED, "whitted.json").unwrap()
+    }
+
+    #[test]
+    fn the_skeleton_is_the_file_without_its_objects() {
+        let mut whole: Value = serde_json::from_str(WHITTED).unwrap();
+        assert!(whole["objects"].as_array().is_some_and(|o| o.len() > 2));
+        whole.as_object_mut().unwrap().remove("objects");
+        assert_eq!(whitted_json(), whole);
+        assert!(
+            skeleton("[1]", "x.json")
+                .unwrap_err()
+                .starts_with("x.json: ")
+        );
+        assert!(skeleton("{} {", "x.json").is_err());
     }
 
     #[test]
     fn an_edit_changes_the_material_and_keeps_the_settings() {
         let mut json = whitted_json();
-        let mut settings = crate::scene::loader::whitted().settings;
-        settings.width = 64;
+        let mut loaded = whitted();
+        loaded.settings.width = 64;
         let scene = apply(
             &mut json,
             Some("glass"),
             "ior = 1.0",
-            &settings,
+            &loaded,
             "whitted.json",
         )
         .unwrap();
@@ -272,25 +341,35 @@ mod tests {
         assert_eq!(glass.ior, 1.0);
         assert_eq!(scene.settings.width, 64);
         assert_eq!(json["materials"]["glass"]["ior"], serde_json::json!(1.0));
+        // The same scene as the whole file edited and read again.
+        let mut whole: Value = serde_json::from_str(WHITTED).unwrap();
+        whole["materials"]["glass"]["ior"] = serde_json::json!(1.0);
+        let mut read = parse(&whole.to_string(), "whitted.json").unwrap();
+        read.settings.width = 64;
+        assert_eq!(scene, read);
     }
 
     #[test]
     fn bad_edits_say_what_is_wrong_and_change_nothing() {
         let mut json = whitted_json();
         let before = json.clone();
-        let settings = crate::scene::loader::whitted().settings;
+        let loaded = whitted();
         for (typed, want) in [
             ("ior", "type field=value"),
             ("wobble=1", "'wobble' cannot be edited"),
             ("ior=-1", "ior"),
             ("sphere=sideways", "sphere"),
         ] {
-            let e = apply(&mut json, Some("glass"), typed, &settings, "whitted.json").unwrap_err();
+            let e = apply(&mut json, Some("glass"), typed, &loaded, "whitted.json").unwrap_err();
             assert!(e.contains(want), "{typed}: {e}");
             assert!(!e.contains('\n'));
         }
         assert_eq!(json, before);
-        let scene = apply(&mut json, None, "sphere=lecture", &settings, "whitted.json").unwrap();
+        let scene = apply(&mut json, None, "sphere=lecture", &loaded, "whitted.json").unwrap();
         assert_eq!(scene.settings.sphere, crate::methods::SphereMethod::Lecture);
+        assert_eq!(
+            (&scene.objects, &scene.materials),
+            (&loaded.objects, &loaded.materials)
+        );
     }
 }

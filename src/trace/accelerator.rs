@@ -2,6 +2,7 @@
 //! those in the leaves of a bounding volume hierarchy the ray reaches. Planes have
 //! no bounds and are tested by every ray either way.
 
+use std::cell::Cell;
 use std::ops::ControlFlow;
 
 use crate::geometry::bvh::Bvh;
@@ -25,9 +26,15 @@ pub struct Accelerator {
     bvh: Option<Bvh>,
 }
 
+thread_local! {
+    /// Accelerators built on this thread so far.
+    static BUILT: Cell<u64> = const { Cell::new(0) };
+}
+
 impl Accelerator {
     /// Arranges `scene`'s objects as its settings ask.
     pub fn new(scene: &Scene) -> Self {
+        BUILT.with(|b| b.set(b.get() + 1));
         let bounds: Vec<Option<Bounds>> = scene.objects.iter().map(|o| o.bounds()).collect();
         let bounded_count = bounds.iter().flatten().count();
         let use_bvh = match scene.settings.accel {
@@ -54,6 +61,13 @@ impl Accelerator {
             always,
             bvh: Some(bvh),
         }
+    }
+
+    /// How many accelerators this thread has built so far: a test counts them
+    /// to check that work which should reuse one (the inspector's keys)
+    /// builds none.
+    pub fn built_on_this_thread() -> u64 {
+        BUILT.with(Cell::get)
     }
 
     /// The hierarchy, if there is one.

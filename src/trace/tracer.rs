@@ -58,14 +58,51 @@ pub struct Tracer<'s> {
     recent: RecentBlockers,
 }
 
+/// What a tracer makes of its scene's objects before the first ray: the
+/// accelerator and the media around the eye. A caller that makes tracer after
+/// tracer for the same objects keeps it (the inspector traces a pixel per key,
+/// and a million objects' hierarchy takes most of a second to build).
+#[derive(Clone, Debug)]
+pub struct Prepared {
+    eye_media: Media,
+    accel: Arc<Accelerator>,
+}
+
+impl Prepared {
+    /// Builds both for `scene`.
+    pub fn new(scene: &Scene) -> Self {
+        Self {
+            eye_media: scene.media_at(scene.camera().eye),
+            accel: Arc::new(Accelerator::new(scene)),
+        }
+    }
+
+    /// For `scene`, which has the objects and accelerator setting this was
+    /// prepared for but perhaps other materials or settings: the accelerator
+    /// kept, the media around the eye found again (a transparency may have
+    /// changed).
+    pub fn for_edited(&self, scene: &Scene) -> Self {
+        Self {
+            eye_media: scene.media_at(scene.camera().eye),
+            accel: Arc::clone(&self.accel),
+        }
+    }
+}
+
 impl<'s> Tracer<'s> {
     /// A tracer for `scene` with its current render settings.
     pub fn new(scene: &'s Scene) -> Self {
-        let eye = scene.camera().eye;
+        Self::prepared(scene, &Prepared::new(scene))
+    }
+
+    /// A tracer for `scene`, for which `prepared` was made ([`Prepared::new`]
+    /// or [`Prepared::for_edited`]), building nothing; it remembers no
+    /// blockers yet, as a new tracer.
+    pub fn prepared(scene: &'s Scene, prepared: &Prepared) -> Self {
         Self {
             scene,
-            eye_media: scene.media_at(eye),
-            accel: Arc::new(Accelerator::new(scene)),
+            eye_media: prepared.eye_media,
+            accel: Arc::clone(&prepared.accel),
             recent: RecentBlockers::new(),
         }
     }

@@ -2,6 +2,8 @@
 //! settings that made them, as written by `raytree trace --json` and documented
 //! field by field in `book/src/trace-format.md`.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
@@ -32,8 +34,10 @@ pub struct TraceDocument {
     pub settings: RenderSettings,
     /// The camera, as the lecture names it.
     pub camera: CameraRecord,
-    /// The scene's objects, by index.
-    pub objects: Vec<ObjectEntry>,
+    /// The scene's objects, by index. Shared: the inspector's traces of one
+    /// scene hold the same list, made once (a million objects' entries took
+    /// a tenth of a second to make at every key).
+    pub objects: Arc<[ObjectEntry]>,
     /// The scene's lights, by index.
     pub lights: Vec<LightEntry>,
     /// The pixel traced (image coordinates), if a pixel was traced.
@@ -60,6 +64,20 @@ pub struct ObjectEntry {
     pub material: String,
     /// Whether it is placed by a transform.
     pub transformed: bool,
+}
+
+/// `scene`'s objects as traces name them, by index.
+pub fn object_entries(scene: &Scene) -> Arc<[ObjectEntry]> {
+    scene
+        .objects
+        .iter()
+        .map(|o| ObjectEntry {
+            name: o.name.clone(),
+            kind: o.shape.kind().to_owned(),
+            material: scene.materials[o.material].name.clone(),
+            transformed: o.transform.is_some(),
+        })
+        .collect()
 }
 
 /// A light, as traces name it.
@@ -116,6 +134,19 @@ impl TraceDocument {
     /// A document of `samples` traced in `scene`, with the scene's objects and
     /// lights named; the caller sets `pixel` or `ray`.
     pub fn new(scene: &Scene, source: SceneSource, color: DVec3, samples: Vec<Sample>) -> Self {
+        Self::sharing(object_entries(scene), scene, source, color, samples)
+    }
+
+    /// [`TraceDocument::new`] with `objects`, the scene's entries made
+    /// beforehand by [`object_entries`].
+    pub fn sharing(
+        objects: Arc<[ObjectEntry]>,
+        scene: &Scene,
+        source: SceneSource,
+        color: DVec3,
+        samples: Vec<Sample>,
+    ) -> Self {
+        debug_assert_eq!(objects.len(), scene.objects.len());
         let s = scene.settings;
         TraceDocument {
             format: FORMAT.to_owned(),
@@ -123,16 +154,7 @@ impl TraceDocument {
             scene: source,
             settings: s,
             camera: camera_record(&scene.camera(), &scene.camera),
-            objects: scene
-                .objects
-                .iter()
-                .map(|o| ObjectEntry {
-                    name: o.name.clone(),
-                    kind: o.shape.kind().to_owned(),
-                    material: scene.materials[o.material].name.clone(),
-                    transformed: o.transform.is_some(),
-                })
-                .collect(),
+            objects,
             lights: scene
                 .lights
                 .iter()

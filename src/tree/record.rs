@@ -2,6 +2,8 @@
 //! recorder that builds the ray tree from the tracer's events, and wrap the
 //! trees in a trace document.
 
+use std::sync::Arc;
+
 use glam::DVec3;
 
 use crate::geometry::hit::{Roots, TestCounts};
@@ -20,7 +22,7 @@ use crate::trace::tracer::Tracer;
 use crate::tree::arithmetic::{
     Fate, RootRecord, TUnit, camera_stage, fates, hit_optics, object_test,
 };
-use crate::tree::document::{GivenRay, Pixel, Sample, TraceDocument};
+use crate::tree::document::{GivenRay, ObjectEntry, Pixel, Sample, TraceDocument, object_entries};
 use crate::tree::ray_tree::{
     BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, Placement, RayNode,
     RayTree, RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
@@ -116,6 +118,29 @@ pub fn pixel(
     y: u32,
     only: Option<u32>,
 ) -> Result<TraceDocument, TraceError> {
+    pixel_with(
+        &Tracer::new(scene),
+        object_entries(scene),
+        source,
+        x,
+        y,
+        only,
+    )
+}
+
+/// [`pixel`], traced by `tracer` (made beforehand for the scene from what it
+/// keeps, [`crate::trace::tracer::Prepared`]) and naming the scene's
+/// `objects` (its [`object_entries`], made beforehand), so that recording
+/// costs the pixel alone: the inspector records a pixel per key.
+pub fn pixel_with(
+    tracer: &Tracer,
+    objects: Arc<[ObjectEntry]>,
+    source: SceneSource,
+    x: u32,
+    y: u32,
+    only: Option<u32>,
+) -> Result<TraceDocument, TraceError> {
+    let scene = tracer.scene();
     let s = scene.settings;
     if x >= s.width || y >= s.height {
         return Err(TraceError::PixelOutside {
@@ -130,7 +155,7 @@ pub fn pixel(
     let mut rec = TreeRecorder::new(scene, TUnit::ImagePlane);
     let mut at = Vec::new();
     let camera = scene.camera();
-    let color = pixel_color_at(&Tracer::new(scene), &camera, x, y, &mut rec, Some(&mut at));
+    let color = pixel_color_at(tracer, &camera, x, y, &mut rec, Some(&mut at));
     if let Some(sample) = only.filter(|&k| k as usize >= at.len()) {
         return Err(TraceError::SampleOutside {
             index: sample,
@@ -152,7 +177,7 @@ pub fn pixel(
         .collect();
     Ok(TraceDocument {
         pixel: Some(Pixel { x, y }),
-        ..TraceDocument::new(scene, source, color, samples)
+        ..TraceDocument::sharing(objects, scene, source, color, samples)
     })
 }
 

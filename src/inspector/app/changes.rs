@@ -23,7 +23,7 @@ impl App {
         self.selection.set_pixel((x, y));
         let Some(scene) = &self.scene else { return };
         let started = Instant::now();
-        match crate::tree::record::pixel(scene, self.source.clone(), x, y, None) {
+        match scene.record(self.source.clone(), x, y) {
             Ok(trace) => {
                 self.set_trace(trace);
                 self.selection.set_traced_in(started.elapsed());
@@ -107,7 +107,7 @@ impl App {
     /// Applies a typed edit (`ior=1.0`) to the selected hit's material (or a
     /// method), re-traces the pixel and keeps what it was before the first edit.
     pub(super) fn edit(&mut self, typed: &str) {
-        let Some(scene) = self.scene.clone() else {
+        let Some(scene) = self.scene.as_ref().map(|s| Arc::clone(s.scene())) else {
             self.message = "no scene to edit".to_owned();
             return;
         };
@@ -150,6 +150,8 @@ impl App {
     /// Works with `scene` from now on (an edit, or undoing them), the pixel
     /// traced again with its tree opened as it was.
     fn swap_scene(&mut self, scene: Arc<Scene>) {
+        let Some(now) = &self.scene else { return };
+        let scene = now.edited(scene);
         self.image.restart(&scene);
         self.scene = Some(scene);
         self.finding.forget();

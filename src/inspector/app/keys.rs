@@ -70,7 +70,7 @@ impl App {
                 self.find();
             }
             Action::Overlay => {
-                if let Some(said) = self.finding.next_overlay(self.scene.as_deref()) {
+                if let Some(said) = self.finding.next_overlay(self.scene.as_ref()) {
                     self.message = said;
                 }
             }
@@ -104,7 +104,7 @@ impl App {
             KeyCode::Enter => match self.prompt.take() {
                 Some(Prompt::GoTo(t)) => self.go_to(&t),
                 Some(Prompt::Edit(t)) => self.edit(&t),
-                Some(Prompt::Write(t)) => self.message = self.what_if.write(&t),
+                Some(Prompt::Write(t)) => self.message = self.what_if.write(&self.source, &t),
                 None => {}
             },
             _ => {}
@@ -210,7 +210,7 @@ impl App {
 
     /// Goes to the next pixel with what `f` seeks.
     fn find(&mut self) {
-        let (found, said) = self.finding.find(self.scene.as_deref(), self.cursor());
+        let (found, said) = self.finding.find(self.scene.as_ref(), self.cursor());
         self.message = said;
         if let Some(p) = found {
             self.select(p);

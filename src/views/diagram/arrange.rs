@@ -4,9 +4,10 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::geometry::object::Object;
 use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
+use crate::tree::ray_tree::{RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::boxes::{self};
 use crate::views::diagram::frame;
@@ -17,8 +18,31 @@ use crate::views::diagram::projection::Projection;
 use crate::views::diagram::section::{cross_section, passing};
 use crate::views::diagram::style::Stroke;
 
+/// Which of the scene's objects a layout projects.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Objects {
+    /// Every object: a figure shows the whole scene in the drawing plane.
+    #[default]
+    All,
+    /// The objects the sample's rays were tested against, hit or were blocked
+    /// by: with a hierarchy, those it put in the rays' way; without one, every
+    /// object. So the work follows the tree, not the scene, for a view drawn
+    /// again at every key (the inspector's, in a scene of a million objects).
+    Met,
+}
+
 /// Projects sample `options.sample` of `trace` (and `scene`) for drawing.
 pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Layout, String> {
+    layout_of(trace, scene, options, Objects::All)
+}
+
+/// [`layout`], projecting only `objects` of the scene's objects.
+pub fn layout_of(
+    trace: &TraceDocument,
+    scene: &Scene,
+    options: &Options,
+    objects: Objects,
+) -> Result<Layout, String> {
     let sample = trace
         .samples
         .get(options.sample)
@@ -27,7 +51,15 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
     let proj = Projection::new(options.view, trace, options.sample, &camera);
     let steps = trace.steps(options.sample);
     let shown = Shown::new(&steps, options);
-    let far = reach(scene, &proj);
+    let drawn = match objects {
+        Objects::All => (0..scene.objects.len()).collect(),
+        Objects::Met => met(&sample.tree),
+    };
+    let among = Among {
+        scene,
+        objects: &drawn,
+    };
+    let far = reach(&among, &proj);
     let mut segments = Vec::new();
     let mut hits = Vec::new();
     let mut boxes = Vec::new();
@@ -35,7 +67,7 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
         if !shown.ray(i, node) {
             continue;
         }
-        segments.push(ray_segment(scene, &proj, i, node, far));
+        segments.push(ray_segment(&among, &proj, i, node, far));
         if options.boxes {
             boxes.extend(boxes::project(i, &node.boxes, &proj));
         }
@@ -52,7 +84,7 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
         if options.shadows {
             for (k, s) in node.shadow_rays.iter().enumerate() {
                 if shown.shadow(i, k) {
-                    segments.extend(shadow_segments(scene, &proj, i, s));
+                    segments.extend(shadow_segments(&among, &proj, i, s));
                 }
             }
         }
@@ -65,18 +97,17 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
         .filter_map(|n| n.hit.as_ref().map(|h| h.object))
         .collect();
     touched.extend(marks::blockers(&sample.tree));
-    let objects: Vec<ObjectShape> = scene
-        .objects
-        .iter()
-        .enumerate()
+    let objects: Vec<ObjectShape> = among
+        .each()
         .map(|(i, o)| ObjectShape {
+            object: i,
             silhouette: proj.outline(o),
             section: cross_section(&proj, o),
             touched: touched.contains(&i),
         })
         .collect();
     let marks = marks::marks(&sample.tree, &steps, &proj, options, &shown.hits());
-    let near_misses = marks::near_misses(&sample.tree.nodes[0], scene)
+    let near_misses = marks::near_misses(&sample.tree.nodes[0], among.each())
         .into_iter()
         .map(|m| {
             (
@@ -111,6 +142,42 @@ pub fn layout(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result
         .window
         .unwrap_or_else(|| frame::frame(&lay, options.fit));
     Ok(lay)
+}
+
+/// The scene with the objects a layout projects.
+struct Among<'a> {
+    scene: &'a Scene,
+    /// Indices into the scene's objects, in order.
+    objects: &'a [usize],
+}
+
+impl Among<'_> {
+    /// The objects projected, with their indices.
+    fn each(&self) -> impl Iterator<Item = (usize, &Object)> + '_ {
+        self.objects.iter().map(|&i| (i, &self.scene.objects[i]))
+    }
+}
+
+/// The objects `tree`'s rays were tested against, hit or were blocked by
+/// (a shadow ray records only its blocker and the object it tried first), in
+/// order.
+fn met(tree: &RayTree) -> Vec<usize> {
+    let mut met: Vec<usize> = tree
+        .nodes
+        .iter()
+        .flat_map(|n| {
+            let shadows = n.shadow_rays.iter().filter_map(|s| s.recent.as_ref());
+            n.tests
+                .iter()
+                .map(|t| t.object)
+                .chain(n.hit.as_ref().map(|h| h.object))
+                .chain(shadows.map(|r| r.object))
+        })
+        .collect();
+    met.extend(marks::blockers(tree));
+    met.sort_unstable();
+    met.dedup();
+    met
 }
 
 /// Which parts of the tree a step-through has reached so far (everything when
@@ -170,13 +237,12 @@ impl Shown {
     }
 }
 
-/// A 3D length that runs past every bounded object: how far a ray that leaves
-/// the scene is drawn (the frame's edge clips it).
-fn reach(scene: &Scene, proj: &Projection) -> f64 {
+/// A 3D length that runs past every bounded object projected: how far a ray
+/// that leaves the scene is drawn (the frame's edge clips it).
+fn reach(scene: &Among, proj: &Projection) -> f64 {
     let extent = scene
-        .objects
-        .iter()
-        .filter_map(|o| o.bounds())
+        .each()
+        .filter_map(|(_, o)| o.bounds())
         .map(|b| {
             (b.max - proj.origin)
                 .abs()
@@ -185,6 +251,7 @@ fn reach(scene: &Scene, proj: &Projection) -> f64 {
         })
         .fold(1.0, f64::max);
     let lights = scene
+        .scene
         .lights
         .iter()
         .map(|l| (l.position - proj.origin).length())
@@ -193,7 +260,7 @@ fn reach(scene: &Scene, proj: &Projection) -> f64 {
 }
 
 /// A ray from its origin to its hit, or far out when it leaves the scene.
-fn ray_segment(scene: &Scene, proj: &Projection, i: usize, node: &RayNode, far: f64) -> Segment {
+fn ray_segment(scene: &Among, proj: &Projection, i: usize, node: &RayNode, far: f64) -> Segment {
     let end = node.hit.as_ref().map_or_else(
         || node.origin + far * node.direction.normalize(),
         |h| h.point,
@@ -211,7 +278,7 @@ fn ray_segment(scene: &Scene, proj: &Projection, i: usize, node: &RayNode, far: 
 /// A shadow ray to its light, or to its blocker and on, faint, to the light;
 /// none when the light is behind the surface (a mark shows that instead).
 fn shadow_segments(
-    scene: &Scene,
+    scene: &Among,
     proj: &Projection,
     i: usize,
     s: &crate::tree::ray_tree::ShadowRecord,
@@ -254,7 +321,7 @@ fn shadow_segments(
 }
 
 fn segment(
-    scene: &Scene,
+    scene: &Among,
     proj: &Projection,
     node: usize,
     stroke: Stroke,
@@ -262,9 +329,8 @@ fn segment(
     leaves: bool,
 ) -> Segment {
     let mut pieces: Vec<[f64; 2]> = scene
-        .objects
-        .iter()
-        .flat_map(|o| passing(proj, o, (a, b)))
+        .each()
+        .flat_map(|(_, o)| passing(proj, o, (a, b)))
         .collect();
     pieces.sort_by(|x, y| x[0].total_cmp(&y[0]));
     Segment {

@@ -19,7 +19,7 @@ use crate::tree::ray_tree::RayKind;
 use crate::views::diagram::arrange::layout;
 use crate::views::diagram::boxes;
 use crate::views::diagram::labels::{blocked, draw_label, label_requests, lines_px};
-use crate::views::diagram::layout::Layout;
+use crate::views::diagram::layout::{Layout, ObjectShape};
 use crate::views::diagram::options::Options;
 use crate::views::diagram::projection::Outline;
 use crate::views::diagram::style::{NORMAL, Stroke, ray_pen};
@@ -180,14 +180,13 @@ fn frame_px(fig: &Figure) -> PxRect {
 fn draw_objects(fig: &mut Figure, scene: &Scene, lay: &Layout, scale: &Scale) {
     let (vlo, vhi) = fig.visible();
     let w = lay.proj.toward_viewer();
-    let mut order: Vec<usize> = (0..scene.objects.len()).collect();
-    let depth = |i: usize| (scene.objects[i].center() - lay.proj.origin).dot(w);
+    let mut order: Vec<&ObjectShape> = lay.objects.iter().collect();
+    let depth = |s: &ObjectShape| (scene.objects[s.object].center() - lay.proj.origin).dot(w);
     order.sort_by(|&a, &b| depth(a).total_cmp(&depth(b)));
     let ghost = scale.pen(Pen::dashed([170, 170, 170], 1.1));
     let cut = scale.pen(Pen::solid(palette::OBJECT, 1.6));
-    for i in order {
-        let (tint, alpha) = pale(&scene.materials[scene.objects[i].material]);
-        let shape = &lay.objects[i];
+    for shape in order {
+        let (tint, alpha) = pale(&scene.materials[scene.objects[shape.object].material]);
         draw_outline(
             fig,
             &shape.silhouette,

@@ -9,13 +9,17 @@ use crate::views::diagram::options::Fit;
 
 /// The window to frame, per `fit`, with a margin; never degenerate.
 pub fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {
-    let bounded = |i: usize| lay.objects[i].silhouette.bounds();
+    let bounded = |i: usize| lay.object(i).and_then(|o| o.silhouette.bounds());
     let corners = |b: Option<(DVec2, DVec2)>| b.into_iter().flat_map(|(a, c)| [a, c]);
     let mut core: Vec<DVec2> = Vec::new();
     let mut near: Vec<DVec2> = Vec::new();
     match fit {
         Fit::Scene => {
-            core.extend((0..lay.objects.len()).flat_map(|i| corners(bounded(i))));
+            core.extend(
+                lay.objects
+                    .iter()
+                    .flat_map(|o| corners(o.silhouette.bounds())),
+            );
             core.extend(lay.lights.iter().copied());
             core.push(lay.eye);
         }

@@ -157,7 +157,8 @@ pub(super) fn object_labels(fig: &Figure, scene: &Scene, lay: &Layout, size: f32
         .count()
         <= 12;
     let mut out = Vec::new();
-    for (object, shape) in scene.objects.iter().zip(&lay.objects) {
+    for shape in &lay.objects {
+        let object = &scene.objects[shape.object];
         if !(shape.touched || few) {
             continue;
         }

@@ -66,6 +66,8 @@ pub struct HitMark {
 /// An object as drawn: its silhouette (a ghost) and what the drawing plane cuts of it.
 #[derive(Clone, Debug, PartialEq)]
 pub struct ObjectShape {
+    /// Its index in the scene's objects.
+    pub object: usize,
     /// The outline of everything it hides.
     pub silhouette: Outline,
     /// Its cross-section with the drawing plane; `None` when the plane misses it.
@@ -83,7 +85,8 @@ pub struct Layout {
     pub segments: Vec<Segment>,
     /// Hit points in the order they were found.
     pub hits: Vec<HitMark>,
-    /// Every object, by index.
+    /// The objects projected (every one, or those the rays met), in the
+    /// order of their indices.
     pub objects: Vec<ObjectShape>,
     /// The eye.
     pub eye: DVec2,
@@ -100,4 +103,14 @@ pub struct Layout {
     pub near_misses: Vec<(usize, f64, DVec2, DVec2)>,
     /// With `boxes`: the hierarchy's boxes the drawn rays were tested against.
     pub boxes: Vec<BoxMark>,
+}
+
+impl Layout {
+    /// Object `i` as drawn, if it was projected.
+    pub fn object(&self, i: usize) -> Option<&ObjectShape> {
+        self.objects
+            .binary_search_by_key(&i, |o| o.object)
+            .ok()
+            .map(|k| &self.objects[k])
+    }
 }

@@ -8,8 +8,8 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::geometry::object::Object;
 use crate::math::angle::angle_between;
-use crate::scene::Scene;
 use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::options::{Labels, Options};
@@ -345,18 +345,19 @@ pub struct NearMiss {
     pub on_object: DVec3,
 }
 
-/// For a ray that hit nothing, the two bounded objects it passed nearest: exact
+/// For a ray that hit nothing, the two bounded objects of `objects` (with
+/// their indices) it passed nearest: exact
 /// for untransformed spheres, from the bounding box's center and half-diagonal
 /// otherwise.
-pub fn near_misses(root: &RayNode, scene: &Scene) -> Vec<NearMiss> {
+pub fn near_misses<'o>(
+    root: &RayNode,
+    objects: impl Iterator<Item = (usize, &'o Object)>,
+) -> Vec<NearMiss> {
     if root.hit.is_some() {
         return Vec::new();
     }
     let d = root.direction.normalize();
-    let mut near: Vec<NearMiss> = scene
-        .objects
-        .iter()
-        .enumerate()
+    let mut near: Vec<NearMiss> = objects
         .filter_map(|(i, o)| {
             let b = o.bounds()?;
             let (center, radius) = match (&o.shape, &o.transform) {

@@ -1,7 +1,8 @@
 //! The inspector: its state and keys without a terminal, what stepping
-//! reveals, and the real binary driven in tmux.
+//! reveals, the real binary driven in tmux, and its work per key.
 
 mod keys;
 mod state;
 mod teaching;
 pub mod tmux;
+mod work;

@@ -216,6 +216,45 @@ fn what_if_ior_1_removes_the_bending_and_undo_restores_the_tree_exactly() {
 }
 
 #[test]
+fn what_if_writes_the_edited_scene_and_it_reads_back_as_edited() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("whitted.json");
+    std::fs::write(&file, raytree::scene::loader::WHITTED).unwrap();
+    let (scene, source) = raytree::scene::source::load(Some(&file)).unwrap();
+    let mut app = App::new(scene, source, Some((416, 209)), false);
+    for typed in ["ior=1.0", "color=1,0,0", "max_depth=3"] {
+        key(&mut app, KeyCode::Char('m'));
+        keys(&mut app, typed);
+        key(&mut app, KeyCode::Enter);
+    }
+    assert_eq!(app.edits().len(), 3, "{}", app.message());
+    let out = dir.path().join("edited.json");
+    key(&mut app, KeyCode::Char('w'));
+    // The prompt offers a name beside the scene: type another.
+    for _ in 0..200 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    keys(&mut app, out.to_str().unwrap());
+    key(&mut app, KeyCode::Enter);
+    assert!(app.message().starts_with("wrote "), "{}", app.message());
+    let (written, _) = raytree::scene::source::load(Some(&out)).unwrap();
+    let edited = app.scene().unwrap();
+    assert_eq!(written.objects, edited.objects);
+    assert_eq!(written.materials, edited.materials);
+    assert_eq!(written.settings.max_depth, 3);
+    let glass = written
+        .materials
+        .iter()
+        .find(|m| m.name == "glass")
+        .unwrap();
+    assert_eq!(glass.ior, 1.0);
+    assert_eq!(
+        glass.pattern,
+        raytree::shading::material::Pattern::Solid(glam::DVec3::X)
+    );
+}
+
+#[test]
 fn what_if_refuses_unknown_fields_and_bad_values_in_one_line() {
     let mut app = whitted_at((416, 209));
     let original = app.trace().cloned().unwrap();
