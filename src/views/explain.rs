@@ -6,6 +6,7 @@
 
 use glam::DVec3;
 
+use crate::geometry::cuboid::{SlabSpan, overlap};
 use crate::tree::arithmetic::{
     Arithmetic, CameraRecord, CameraStage, Fate, RootRecord, Slab, TUnit, TestMethod,
 };
@@ -211,22 +212,14 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
     )
 }
 
-/// The verdict read off the intervals the trace prints (the box test's own):
-/// where they all overlap, up to the end returned; a slab the ray runs along
-/// outside its planes is empty.
+/// The verdict read off the intervals the trace prints, by the box test's own
+/// rule ([`overlap`]): where they all overlap, up to the end returned.
 fn slabs_overlap(axes: &[Slab; 3]) -> Option<f64> {
-    let (mut enter, mut leave) = (f64::NEG_INFINITY, f64::INFINITY);
-    for slab in axes {
-        match *slab {
-            Slab::Crossing { near, far } => {
-                enter = enter.max(near);
-                leave = leave.min(far);
-            }
-            Slab::Parallel { inside } if !inside => return None,
-            Slab::Parallel { .. } => {}
-        }
-    }
-    (enter <= leave).then_some(leave)
+    let spans = axes.map(|slab| match slab {
+        Slab::Crossing { near, far } => SlabSpan::Crossing { near, far },
+        Slab::Parallel { inside } => SlabSpan::Parallel { inside },
+    });
+    overlap(&spans).map(|(_, leave)| leave)
 }
 
 fn slabs(axes: &[Slab; 3]) -> String {
