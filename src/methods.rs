@@ -114,16 +114,22 @@ pub enum Antialiasing {
         /// How many times a square may be split (3: down to 1/8 of a pixel).
         levels: u32,
     },
+    /// The Standard Procedural Databases' protocol (Haines, "A Proposal for
+    /// Standard Graphics Environments", 1987): one ray through each of the
+    /// `(W + 1) × (H + 1)` pixel corners, each traced once, and a pixel the mean
+    /// of its four corners; `spp` is ignored.
+    Corners,
 }
 
 impl std::str::FromStr for Antialiasing {
     type Err = String;
 
-    /// `grid`, `adaptive` (threshold 0.05) or `adaptive=T` with `T ≥ 0`, three
-    /// levels of subdivision, as the command line writes it.
+    /// `grid`, `corners`, `adaptive` (threshold 0.05) or `adaptive=T` with
+    /// `T ≥ 0`, three levels of subdivision, as the command line writes it.
     fn from_str(s: &str) -> Result<Self, String> {
         match s.split_once('=') {
             None if s == "grid" => Ok(Antialiasing::Grid),
+            None if s == "corners" => Ok(Antialiasing::Corners),
             None if s == "adaptive" => Ok(Antialiasing::Adaptive {
                 threshold: 0.05,
                 levels: 3,
@@ -137,7 +143,9 @@ impl std::str::FromStr for Antialiasing {
                 }
                 _ => Err(format!("'{t}' is not a threshold (a number ≥ 0)")),
             },
-            _ => Err("expected grid, adaptive or adaptive=T (e.g. adaptive=0.05)".to_owned()),
+            _ => Err(
+                "expected grid, corners, adaptive or adaptive=T (e.g. adaptive=0.05)".to_owned(),
+            ),
         }
     }
 }

@@ -68,8 +68,8 @@ overrides! {
     /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
     #[arg(long, value_enum)]
     weights: Weights,
-    /// Anti-aliasing: grid (the --spp grid) or adaptive corner subdivision (Whitted 1980; ignores --spp) with an optional threshold in linear RGB (adaptive alone: 0.05) [default: grid].
-    #[arg(long, value_name = "grid|adaptive[=T]")]
+    /// Anti-aliasing: grid (the --spp grid), corners (one ray through each pixel corner, four averaged to a pixel: the SPD protocol's) or adaptive corner subdivision (Whitted 1980; ignores --spp) with an optional threshold in linear RGB (adaptive alone: 0.05) [default: grid].
+    #[arg(long, value_name = "grid|corners|adaptive[=T]")]
     aa: Antialiasing,
     /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].
     #[arg(long, value_enum)]
@@ -77,6 +77,38 @@ overrides! {
     /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), auto (a hierarchy from 16 bounded objects up) [default: auto].
     #[arg(long, value_enum)]
     accel: Accel,
+}
+
+/// A benchmark's fixed way of rendering, so that counts and times compare
+/// with the ones it publishes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Protocol {
+    /// Eric Haines's Standard Procedural Databases (1987).
+    //
+    // 512×512 pixels, rays through the 513×513 pixel corners (four averaged to
+    // a pixel), a maximum depth of 5 (the eye ray is depth 1), no weight
+    // cutoff, and Fresnel weights, so that every hit on a transmitting surface
+    // spawns a reflected ray too (as the protocol asks, also where the
+    // material's own reflection coefficient is 0).
+    Spd,
+}
+
+impl Protocol {
+    /// The settings the protocol fixes, as overrides: flags given beside it
+    /// are applied after them, and win.
+    pub fn overrides(self) -> Overrides {
+        match self {
+            Protocol::Spd => Overrides {
+                width: Some(512),
+                height: Some(512),
+                aa: Some(Antialiasing::Corners),
+                max_depth: Some(5),
+                cutoff: Some(0.0),
+                weights: Some(Weights::Fresnel),
+                ..Overrides::default()
+            },
+        }
+    }
 }
 
 #[cfg(test)]

@@ -69,6 +69,7 @@ impl RenderSettings {
             Antialiasing::Adaptive { threshold, levels } => {
                 format!("adaptive sampling, threshold {threshold}, up to {levels} levels")
             }
+            Antialiasing::Corners => "rays through the pixel corners".to_owned(),
         }
     }
 
@@ -83,6 +84,7 @@ impl RenderSettings {
     pub fn max_samples(&self) -> u32 {
         match self.aa {
             Antialiasing::Grid => self.spp,
+            Antialiasing::Corners => 4,
             Antialiasing::Adaptive { levels, .. } => {
                 (1u32 << levels.min(15)).pow(2) + 2 * (1 << levels.min(15)) + 1
             }

@@ -1,5 +1,6 @@
 //! One pixel's color: the lecture's one ray through its center, an `n × n`
-//! stratified grid of rays, or Whitted's adaptive subdivision of its corners.
+//! stratified grid of rays, Whitted's adaptive subdivision of its corners, or
+//! the mean of its four corners (the SPD protocol).
 //! The renderer and a recorded trace both call [`pixel_color`], so they agree
 //! bit for bit.
 
@@ -69,7 +70,25 @@ pub fn pixel_color_at<R: Recorder>(
                 threshold,
             )
         }
+        Antialiasing::Corners => {
+            let (x0, y0) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
+            let corners = [(0.0, 0.0), (1.0, 0.0), (0.0, 1.0), (1.0, 1.0)].map(|(dx, dy)| {
+                let (sx, sy) = (x0 + dx, y0 + dy);
+                if let Some(at) = at.as_deref_mut() {
+                    at.push((sx, sy));
+                }
+                tracer.trace_primary(camera.pixel_ray(sx, sy), rec)
+            });
+            corner_mean(corners)
+        }
     }
+}
+
+/// A pixel's color from its corners' (top left, top right, bottom left,
+/// bottom right): their mean, summed in that order by the renderer too, so a
+/// recorded pixel and the rendered one agree bit for bit.
+pub fn corner_mean(c: [DVec3; 4]) -> DVec3 {
+    (c[0] + c[1] + c[2] + c[3]) / 4.0
 }
 
 /// Where pixel `(x, y)`'s `n × n` grid samples fall, in image coordinates, in the

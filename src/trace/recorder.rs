@@ -250,6 +250,11 @@ impl Recorder for NoRecorder {
 pub struct RayCounter {
     /// Primary rays.
     pub primary: u64,
+    /// Primary rays that hit an object (the SPD's "eye hit rays").
+    pub primary_hits: u64,
+    /// Whether the ray started last is a primary ray: its hit, if any, is
+    /// reported before any other ray starts.
+    in_primary: bool,
     /// Reflected rays.
     pub reflected: u64,
     /// Refracted rays.
@@ -276,6 +281,7 @@ impl RayCounter {
     /// Adds another counter's counts.
     pub fn add(&mut self, other: &RayCounter) {
         self.primary += other.primary;
+        self.primary_hits += other.primary_hits;
         self.reflected += other.reflected;
         self.refracted += other.refracted;
         self.shadow += other.shadow;
@@ -293,6 +299,7 @@ impl Recorder for RayCounter {
     const ENABLED: bool = false;
 
     fn ray_started(&mut self, start: &RayStart) {
+        self.in_primary = start.kind == RayKind::Primary;
         match start.kind {
             RayKind::Primary => self.primary += 1,
             RayKind::Reflected => self.reflected += 1,
@@ -304,6 +311,13 @@ impl Recorder for RayCounter {
 
     fn tested(&mut self, tested: &TestCounts) {
         self.count_tests(tested);
+    }
+
+    fn hit(&mut self, _hit: &HitEvent) {
+        if self.in_primary {
+            self.primary_hits += 1;
+            self.in_primary = false;
+        }
     }
 
     fn shadow_ray(&mut self, shadow: &ShadowEvent) {

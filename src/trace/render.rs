@@ -14,8 +14,9 @@ use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::io::image::Image;
+use crate::methods::Antialiasing;
 use crate::scene::Scene;
-use crate::trace::pixel::pixel_color;
+use crate::trace::pixel::{corner_mean, pixel_color};
 use crate::trace::progress::Progress;
 use crate::trace::recorder::{NoRecorder, RayCounter, Recorder};
 use crate::trace::tracer::Tracer;
@@ -33,6 +34,10 @@ pub enum Pixels {
     All,
     /// Every `n`-th pixel across and down, from the top left.
     Every(u32),
+    /// The `(W + 1) × (H + 1)` pixel corners: cell `(i, j)` is the top left
+    /// corner of pixel `(i, j)`, the last row and column the bottom and right
+    /// edges' ([`crate::methods::Antialiasing::Corners`]).
+    Corners,
     /// A window onto the image: cell `(i, j)` is over the pixel under
     /// `(left + (i·step + ½)·scale, top + (j·step + ½)·scale)`; `cols × rows`
     /// is the window's size in `scale`-sized steps, so a `step` of 4 traces
@@ -59,15 +64,19 @@ impl Pixels {
         match *self {
             Pixels::All => (width, height),
             Pixels::Every(n) => (width.div_ceil(n.max(1)), height.div_ceil(n.max(1))),
+            Pixels::Corners => (width + 1, height + 1),
             Pixels::Window {
                 cols, rows, step, ..
             } => (cols.div_ceil(step.max(1)), rows.div_ceil(step.max(1))),
         }
     }
 
-    /// The image pixel under cell `(i, j)`, if it is over the image.
+    /// The image pixel under cell `(i, j)`, if it is over the image (for
+    /// [`Pixels::Corners`], the pixel whose top left corner the cell is, or
+    /// the column and row past the last).
     pub fn pixel(&self, i: u32, j: u32, width: u32, height: u32) -> Option<(u32, u32)> {
         let (x, y) = match *self {
+            Pixels::Corners => return (i <= width && j <= height).then_some((i, j)),
             Pixels::All => (i, j),
             Pixels::Every(n) => (i * n.max(1), j * n.max(1)),
             Pixels::Window {
@@ -209,6 +218,9 @@ fn render_traced<R: Recorder + Default + Send + Tally>(
 ) -> Result<(Image, R), TryReserveError> {
     let scene = tracer.scene();
     let camera = scene.camera();
+    if scene.settings.aa == Antialiasing::Corners {
+        return render_corners(tracer, progress);
+    }
     let traced = trace_pixels(
         scene,
         Pixels::All,
@@ -227,6 +239,54 @@ fn render_traced<R: Recorder + Default + Send + Tally>(
         Image {
             width: scene.settings.width,
             height: scene.settings.height,
+            pixels,
+        },
+        tally,
+    ))
+}
+
+/// [`render_traced`] under the SPD protocol: every pixel corner traced once,
+/// then each pixel the mean of its four ([`corner_mean`], as a recorded pixel
+/// takes it).
+fn render_corners<R: Recorder + Default + Send + Tally>(
+    tracer: &Tracer,
+    progress: &Progress,
+) -> Result<(Image, R), TryReserveError> {
+    let scene = tracer.scene();
+    let camera = scene.camera();
+    let traced = trace_pixels(
+        scene,
+        Pixels::Corners,
+        R::default,
+        |rec, x, y| {
+            let (sx, sy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
+            tracer.trace_primary(camera.pixel_ray(sx, sy), rec)
+        },
+        &Progress::reporting(&|done, total| progress.report(done, total)),
+    )
+    .map_err(|stopped| match stopped {
+        Stopped::NoMemory(e) => e,
+        Stopped::Cancelled => unreachable!("a render reports but is never cancelled"),
+    })?;
+    let tally = traced.bands.into_iter().fold(R::default(), R::merge);
+    let (width, height) = (scene.settings.width, scene.settings.height);
+    let corner = |x: u32, y: u32| traced.cells[(y * traced.cols + x) as usize];
+    let mut pixels = Vec::new();
+    pixels.try_reserve_exact(width as usize * height as usize)?;
+    for y in 0..height {
+        for x in 0..width {
+            pixels.push(corner_mean([
+                corner(x, y),
+                corner(x + 1, y),
+                corner(x, y + 1),
+                corner(x + 1, y + 1),
+            ]));
+        }
+    }
+    Ok((
+        Image {
+            width,
+            height,
             pixels,
         },
         tally,

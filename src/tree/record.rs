@@ -97,6 +97,7 @@ pub fn worst_case_rays(
         let lower = match settings.aa {
             _ if samples == 1 => "max_depth",
             Antialiasing::Grid => "spp or max_depth",
+            Antialiasing::Corners => "max_depth",
             Antialiasing::Adaptive { .. } => "the adaptive levels or max_depth",
         };
         return Err(TraceError::TooManyRays {

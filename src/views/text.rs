@@ -244,6 +244,7 @@ pub fn sample_name(trace: &TraceDocument, sample: usize) -> Option<String> {
     let adaptive = matches!(s.aa, Antialiasing::Adaptive { .. });
     match trace.pixel {
         None => None,
+        Some(_) if s.aa == Antialiasing::Corners => Some(format!("corner {index} of 4")),
         Some(_) if !adaptive && s.spp > 1 => Some(format!("sample {index} of {}", s.spp)),
         Some(_) if adaptive && trace.samples.len() > 1 => Some(format!(
             "sample {index} of {} (adaptive)",

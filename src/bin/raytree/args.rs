@@ -7,7 +7,7 @@ use anyhow::{Result, bail};
 use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
-use raytree::scene::overrides::Overrides;
+use raytree::scene::overrides::{Overrides, Protocol};
 use raytree::scene::settings::RenderSettings;
 use raytree::scene::source::{self, SceneSource};
 use raytree::tree::document::TraceDocument;
@@ -16,8 +16,11 @@ use raytree::tree::record;
 /// A scene and the settings that override its `render` block.
 #[derive(clap::Args)]
 pub struct SceneArgs {
-    /// Scene file (JSON, see scenes/README.md); the built-in Whitted scene if omitted.
+    /// Scene file (JSON, see scenes/README.md, or NFF, by the extension .nff); the built-in Whitted scene if omitted.
     pub scene: Option<PathBuf>,
+    /// Render as a benchmark prescribes: spd, the Standard Procedural Databases' protocol (512×512, rays through the 513×513 pixel corners averaged four to a pixel, max depth 5, no cutoff, Fresnel weights, so every transmitting hit also reflects); the flags below, given beside it, win.
+    #[arg(long, value_enum)]
+    pub protocol: Option<Protocol>,
     #[command(flatten)]
     pub overrides: Overrides,
 }
@@ -33,7 +36,8 @@ impl SceneArgs {
 
     /// `own` (a scene's settings) with the flags given put in place, checked.
     pub fn settings(&self, own: &RenderSettings) -> Result<RenderSettings> {
-        let settings = self.overrides.apply(own);
+        let own = self.protocol.map_or(*own, |p| p.overrides().apply(own));
+        let settings = self.overrides.apply(&own);
         if let Err((field, message)) = settings.validate() {
             bail!("--{}: {message}", field.replace('_', "-"));
         }

@@ -8,6 +8,7 @@ use raytree::io::image_file;
 use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
+use raytree::trace::tracer::Tracer;
 use raytree::views::numbers::{num, thousands};
 
 use crate::args::SceneArgs;
@@ -49,7 +50,10 @@ pub fn run(args: &Args) -> Result<()> {
     if let Some(name) = &args.aov {
         return crate::aov::run(args, name);
     }
+    // The SPD's preprocessing: reading the file, then building what the rays need.
+    let reading = Instant::now();
     let (scene, _) = args.scene.load()?;
+    let read_seconds = reading.elapsed().as_secs_f64();
     let path = output::name_or(&args.output, || output::stem_and(args.scene.stem(), ".png"));
     let format = image_file::format_of(&path)?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
@@ -63,12 +67,24 @@ pub fn run(args: &Args) -> Result<()> {
     let s = &scene.settings;
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
     let (image, rays) = if args.stats {
+        let building = Instant::now();
+        let tracer = pool.install(|| Tracer::new(&scene));
+        let build_seconds = building.elapsed().as_secs_f64();
+        let tracing = Instant::now();
         let (image, rays) = pool
             .install(|| {
-                render::render_counting(&scene, &Progress::reporting(&output::on_bar(&progress)))
+                render::render_counting_with(
+                    &tracer,
+                    &Progress::reporting(&output::on_bar(&progress)),
+                )
             })
             .map_err(no_memory)?;
-        (image, Some(rays))
+        let times = Times {
+            reading: read_seconds,
+            building: build_seconds,
+            tracing: tracing.elapsed().as_secs_f64(),
+        };
+        (image, Some((rays, times)))
     } else {
         let image = pool
             .install(|| render::render(&scene, &Progress::reporting(&output::on_bar(&progress))))
@@ -89,32 +105,53 @@ pub fn run(args: &Args) -> Result<()> {
             threads_word(threads)
         ))?;
     }
-    if let Some(r) = rays {
+    if let Some((r, times)) = rays {
         // The counts are what --stats asked for: standard output, as strip and
         // forward print their figures; notes stay on standard error.
-        output::print(stats(&r, seconds))?;
+        output::print(stats(&r, &times))?;
     }
     Ok(())
 }
 
-/// What `--stats` prints on standard output: the rays by kind, the
-/// intersection tests they made (the cost a hierarchy saves), and the speed.
-fn stats(r: &RayCounter, seconds: f64) -> String {
+/// Where a counted render's time went, in seconds, split as the SPD asks:
+/// preprocessing (reading the scene, building the hierarchy) and tracing.
+struct Times {
+    reading: f64,
+    building: f64,
+    tracing: f64,
+}
+
+/// What `--stats` prints on standard output: the rays by kind (with the
+/// primary rays that hit something, the SPD's "eye hit rays"), the
+/// intersection tests they made (the cost a hierarchy saves), the speed of
+/// the tracing, and the time split into preprocessing and tracing.
+fn stats(r: &RayCounter, t: &Times) -> String {
     let rays = r.total().max(1);
     format!(
-        "{} rays: {} primary, {} shadow, {} reflected, {} refracted; {} M rays/s\n\
-         {} tests: {} bounding boxes, {} primitives; {} per ray\n",
+        "{} rays: {} primary ({} hit), {} shadow, {} reflected, {} refracted; {} M rays/s\n\
+         {} tests: {} bounding boxes, {} primitives; {} per ray\n\
+         time: {} s preprocessing ({} s reading, {} s building), {} s tracing\n",
         thousands(r.total()),
         thousands(r.primary),
+        thousands(r.primary_hits),
         thousands(r.shadow),
         thousands(r.reflected),
         thousands(r.refracted),
-        num(r.total() as f64 / seconds / 1e6),
+        num(r.total() as f64 / t.tracing / 1e6),
         thousands(r.tests()),
         thousands(r.boxes),
         thousands(r.primitives),
-        num(r.tests() as f64 / rays as f64)
+        num(r.tests() as f64 / rays as f64),
+        seconds(t.reading + t.building),
+        seconds(t.reading),
+        seconds(t.building),
+        seconds(t.tracing),
     )
+}
+
+/// Seconds to the millisecond.
+fn seconds(s: f64) -> String {
+    format!("{s:.3}")
 }
 
 /// "1 thread", "2 threads".

@@ -692,9 +692,16 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
         String::from_utf8(out.stdout).unwrap()
     };
     let stdout = run();
-    // "5,130 rays: 768 primary, …; 2.1 M rays/s" and
-    // "40,211 tests: 30,000 bounding boxes, 10,211 primitives; 7.838 per ray".
-    let (rays, tests) = stdout.split_once('\n').expect("two lines");
+    // "5,130 rays: 768 primary (700 hit), …; 2.1 M rays/s",
+    // "40,211 tests: 30,000 bounding boxes, 10,211 primitives; 7.838 per ray" and
+    // "time: 0.012 s preprocessing (0.010 s reading, 0.002 s building), 0.100 s tracing".
+    let mut lines = stdout.lines();
+    let (rays, tests, time) = (
+        lines.next().unwrap(),
+        lines.next().unwrap(),
+        lines.next().unwrap(),
+    );
+    assert_eq!(lines.next(), None, "{stdout}");
     let counts = |line: &str| -> Vec<f64> {
         line.replace(',', "")
             .split(|c: char| !c.is_ascii_digit() && c != '.')
@@ -702,9 +709,17 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
             .collect()
     };
     let r = counts(rays);
-    assert_eq!(r.len(), 6, "total, four kinds, speed: {stdout}");
+    assert_eq!(
+        r.len(),
+        7,
+        "total, primary, hits, three kinds, speed: {stdout}"
+    );
     assert_eq!(r[1], (32 * 24) as f64, "{stdout}");
-    assert_eq!(r[0], r[1..5].iter().sum::<f64>(), "{stdout}");
+    assert!(
+        r[2] > 0.0 && r[2] <= r[1],
+        "hits are primary rays: {stdout}"
+    );
+    assert_eq!(r[0], r[1] + r[3] + r[4] + r[5], "{stdout}");
     assert!(rays.ends_with(" M rays/s"), "{stdout}");
     let t = counts(tests);
     assert_eq!(t.len(), 4, "total, boxes, primitives, per ray: {stdout}");
@@ -712,10 +727,62 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
     assert_eq!(t[1] + t[2], t[0], "{stdout}");
     // per ray is written to 4 significant digits.
     assert!((t[3] - t[0] / r[0]).abs() <= 5e-4 * t[3], "{stdout}");
+    let s = counts(time);
+    assert_eq!(
+        s.len(),
+        4,
+        "preprocessing, reading, building, tracing: {stdout}"
+    );
+    // Each is rounded to the millisecond, so the sum may be off by one in the last place.
+    assert!((s[0] - (s[1] + s[2])).abs() <= 0.0015, "{stdout}");
+    assert!(
+        time.starts_with("time: ") && time.ends_with(" s tracing"),
+        "{stdout}"
+    );
     assert_eq!(
         run().lines().nth(1),
         Some(tests.trim_end()),
         "one thread, same tests"
     );
     std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// `--protocol spd` (issue 27) fixes the SPD's settings: 512×512, the pixel
+/// corners, depth 5, no cutoff, Fresnel weights; a flag given beside it wins.
+#[test]
+fn the_spd_protocol_sets_what_it_fixes_and_flags_beside_it_win() {
+    let settings = |extra: &[&str]| -> serde_json::Value {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(["trace", "--pixel", "256,256", "--json", "--protocol", "spd"])
+            .args(extra)
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        doc["settings"].clone()
+    };
+    let s = settings(&[]);
+    assert_eq!(
+        (
+            &s["width"],
+            &s["height"],
+            &s["aa"],
+            &s["max_depth"],
+            &s["cutoff"],
+            &s["weights"]
+        ),
+        (
+            &serde_json::json!(512),
+            &serde_json::json!(512),
+            &serde_json::json!("corners"),
+            &serde_json::json!(5),
+            &serde_json::json!(0.0),
+            &serde_json::json!("fresnel")
+        )
+    );
+    assert_eq!(settings(&["--max-depth", "3"])["max_depth"], 3);
 }

@@ -126,3 +126,70 @@ fn the_ray_counter_counts_the_tests_the_tests_image_shows() {
         );
     }
 }
+
+/// The SPD protocol's sampling (issue 27): the renderer traces each of the
+/// (W + 1) × (H + 1) pixel corners once, so it casts (W + 1)(H + 1) primary
+/// rays, not 4·W·H; and every pixel is the mean of its four corners, bit for
+/// bit what recording that pixel alone gives.
+#[test]
+fn corners_are_traced_once_and_each_pixel_is_their_mean() {
+    use raytree::methods::Antialiasing;
+    use raytree::trace::pixel::pixel_color;
+    use raytree::trace::progress::Progress;
+    use raytree::trace::recorder::RayCounter;
+    use raytree::trace::render::render_counting;
+    use raytree::trace::tracer::Tracer;
+    let mut s = common::shipped().remove(0).1;
+    (s.settings.width, s.settings.height) = (24, 18);
+    s.settings.aa = Antialiasing::Corners;
+    let (image, counted) = render_counting(&s, &Progress::QUIET).unwrap();
+    assert_eq!(counted.primary, 25 * 19);
+    let tracer = Tracer::new(&s);
+    let camera = s.camera();
+    for y in 0..18 {
+        for x in 0..24 {
+            let mut one = RayCounter::default();
+            let c = pixel_color(&tracer, &camera, x, y, &mut one);
+            assert_eq!(one.primary, 4);
+            assert_eq!(image.pixels[(y * 24 + x) as usize], c, "pixel {x},{y}");
+        }
+    }
+}
+
+/// The counter's "eye hit rays": the primary rays that hit an object, as the
+/// SPD counts them. A sphere filling part of the view: the hits are the
+/// pixels whose `t` is finite in a render of the same rays.
+#[test]
+fn the_counter_counts_the_primary_rays_that_hit() {
+    use raytree::trace::progress::Progress;
+    use raytree::trace::render::render_counting;
+    let mut s = common::scene(
+        r#"{ "render": {"width": 32, "height": 24},
+             "materials": {"m": {"color": [1, 1, 1], "reflective": 0.5}},
+             "objects": [{"sphere": {"radius": 1.5}, "material": "m"}] }"#,
+    );
+    let (_, counted) = render_counting(&s, &Progress::QUIET).unwrap();
+    let camera = s.camera();
+    let ball = &s.objects[0];
+    let expected = (0..24)
+        .flat_map(|y| (0..32).map(move |x| (x, y)))
+        .filter(|&(x, y)| {
+            let ray = camera.pixel_ray(f64::from(x), f64::from(y));
+            ball.roots(&ray, s.settings.intersection_methods())
+                .first_in(0.0, f64::INFINITY)
+                .is_some()
+        })
+        .count() as u64;
+    assert!(expected > 50 && expected < 32 * 24, "{expected}");
+    assert_eq!(counted.primary_hits, expected);
+    // Reflected rays start and hit nothing (a lone ball): they do not count.
+    assert!(counted.reflected > 0);
+    s.settings.max_depth = 1;
+    assert_eq!(
+        render_counting(&s, &Progress::QUIET)
+            .unwrap()
+            .1
+            .primary_hits,
+        expected
+    );
+}
