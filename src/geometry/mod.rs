@@ -7,6 +7,7 @@ pub mod sphere; // the lecture's quadratic and its stable form
 pub mod plane; // ray–plane
 pub mod cuboid; // ray–box by slabs
 pub mod triangle; // watertight and Möller–Trumbore
+pub mod polygon; // planar polygons and patches, any number of vertices: the crossing-number test in the watertight frame
 pub mod mesh; // many triangles, one object, a hierarchy of their own
 pub mod transform; // transformed primitives: the inverse-transformed ray
 pub mod object; // a shape, its transform and its material

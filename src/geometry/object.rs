@@ -8,6 +8,7 @@ use crate::geometry::cuboid::Cuboid;
 use crate::geometry::hit::{Roots, Search, Surface, TestCounts};
 use crate::geometry::mesh::Mesh;
 use crate::geometry::plane::Plane;
+use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::{ShearedRay, Triangle};
@@ -28,12 +29,14 @@ pub enum Shape {
     Triangle(Triangle),
     /// A triangle mesh (shared: scenes are cloned, meshes can be large).
     Mesh(Arc<Mesh>),
+    /// A planar polygon or patch (shared: it may have many vertices).
+    Polygon(Arc<Polygon>),
 }
 
 impl Shape {
-    /// The roots of the ray with the shape in `(0, t_max)` as far as a mesh is
-    /// concerned (its nearest face, or with [`Search::Any`] the first found); every root for
-    /// the other shapes. Primitive and box tests are counted in `tested`.
+    /// The roots of the ray with the shape in `(0, t_max)` as far as a mesh or a
+    /// polygon is concerned (a mesh's nearest face, or with [`Search::Any`] the first
+    /// found); every root for the other shapes. Primitive and box tests are counted in `tested`.
     #[inline]
     pub fn roots(
         &self,
@@ -67,6 +70,10 @@ impl Shape {
                 triangle_roots(tri, ray, methods.triangle)
             }
             Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, search, tested),
+            Shape::Polygon(p) => {
+                tested.primitives += 1;
+                p.roots(ray, t_max)
+            }
         }
     }
 
@@ -84,24 +91,28 @@ impl Shape {
                 tri.surface(&hit, None)
             }
             Shape::Mesh(m) => m.surface(ray, t, face as usize, methods.triangle),
+            Shape::Polygon(p) => p.surface(ray, t),
         }
     }
 
-    /// Whether `p` lies strictly inside the solid. Triangles and meshes are
+    /// Whether `p` lies strictly inside the solid. Triangles, meshes and polygons are
     /// surfaces, not solids: nothing is inside them.
     pub fn contains(&self, p: DVec3) -> bool {
         match self {
             Shape::Sphere(s) => s.contains(p),
             Shape::Plane(pl) => pl.contains(p),
             Shape::Box(b) => b.contains(p),
-            Shape::Triangle(_) | Shape::Mesh(_) => false,
+            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_) => false,
         }
     }
 
     /// Whether the shape is a solid, with an inside [`Shape::contains`] can
-    /// tell: not a triangle or a mesh, which are surfaces.
+    /// tell: not a triangle, a mesh or a polygon, which are surfaces.
     pub fn is_solid(&self) -> bool {
-        !matches!(self, Shape::Triangle(_) | Shape::Mesh(_))
+        !matches!(
+            self,
+            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_)
+        )
     }
 
     /// The box around the shape in its own space; `None` for a plane.
@@ -115,6 +126,7 @@ impl Shape {
             Shape::Box(b) => Some(b.bounds()),
             Shape::Triangle(t) => Some(Bounds::around([t.a, t.b, t.c])),
             Shape::Mesh(m) => Some(m.bounds()),
+            Shape::Polygon(p) => Some(p.bounds()),
         }
     }
 
@@ -135,6 +147,7 @@ impl Shape {
             Shape::Box(_) => "box",
             Shape::Triangle(_) => "triangle",
             Shape::Mesh(_) => "mesh",
+            Shape::Polygon(_) => "polygon",
         }
     }
 }

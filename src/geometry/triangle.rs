@@ -81,6 +81,16 @@ impl ShearedRay {
             shear: DVec3::new(d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]),
         }
     }
+
+    /// `p` moved to the ray's origin and sheared: its (x, y) across the ray,
+    /// the same operations [`Triangle::watertight`] does on its vertices, so a
+    /// polygon and a triangle sharing a vertex get the same numbers for it.
+    #[inline]
+    pub fn sheared_xy(&self, p: DVec3) -> (f64, f64) {
+        let [kx, ky, kz] = self.k;
+        let a = p - self.origin;
+        (a[kx] - self.shear.x * a[kz], a[ky] - self.shear.y * a[kz])
+    }
 }
 
 impl Triangle {

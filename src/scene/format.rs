@@ -110,6 +110,8 @@ pub(super) struct ObjectFile {
     pub(super) triangle: Option<TriangleFile>,
     #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) mesh: Option<MeshFile>,
+    #[serde(default, deserialize_with = "strict::some_object")]
+    pub(super) polygon: Option<PolygonFile>,
     pub(super) material: Option<String>,
     #[serde(default)]
     pub(super) transform: Vec<TransformStep>,
@@ -140,6 +142,14 @@ pub(super) struct BoxFile {
 #[serde(deny_unknown_fields)]
 pub(super) struct TriangleFile {
     pub(super) vertices: [DVec3; 3],
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct PolygonFile {
+    pub(super) vertices: Vec<DVec3>,
+    pub(super) normals: Option<Vec<DVec3>>,
+    pub(super) one_sided: Option<bool>,
 }
 
 #[derive(Deserialize)]

@@ -21,6 +21,7 @@ use crate::geometry::cuboid::Cuboid;
 use crate::geometry::mesh::Mesh;
 use crate::geometry::object::{Object, Shape};
 use crate::geometry::plane::Plane;
+use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::Triangle;
@@ -28,8 +29,8 @@ use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
 use crate::scene::format::{
-    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile,
-    SphereFile, TransformStep, TriangleFile,
+    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, PolygonFile, Root,
+    SceneFile, SphereFile, TransformStep, TriangleFile,
 };
 use crate::scene::light::PointLight;
 use crate::scene::limits;
@@ -374,15 +375,16 @@ impl Builder<'_> {
 
     /// Object `i`'s one shape.
     fn shape(&self, i: usize, o: &ObjectFile) -> Result<Shape, SceneError> {
-        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh) {
-            (Some(s), None, None, None, None) => self.sphere(i, s),
-            (None, Some(p), None, None, None) => self.plane(i, p),
-            (None, None, Some(b), None, None) => self.cuboid(i, b),
-            (None, None, None, Some(t), None) => self.triangle(i, t),
-            (None, None, None, None, Some(m)) => self.mesh(i, m),
+        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh, &o.polygon) {
+            (Some(s), None, None, None, None, None) => self.sphere(i, s),
+            (None, Some(p), None, None, None, None) => self.plane(i, p),
+            (None, None, Some(b), None, None, None) => self.cuboid(i, b),
+            (None, None, None, Some(t), None, None) => self.triangle(i, t),
+            (None, None, None, None, Some(m), None) => self.mesh(i, m),
+            (None, None, None, None, None, Some(p)) => self.polygon(i, p),
             _ => Err(self.invalid(
                 format_args!("objects[{i}]"),
-                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
+                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\", \"mesh\" or \"polygon\"",
             )),
         }
     }
@@ -433,6 +435,44 @@ impl Builder<'_> {
             return Err(self.invalid(at, "must be three points not on one line"));
         }
         Ok(Shape::Triangle(tri))
+    }
+
+    /// A polygon or patch: each vertex and normal within the scene's limits,
+    /// then [`Polygon::new`]'s own checks (the plane of the first three, every
+    /// vertex on it), named by field.
+    fn polygon(&self, i: usize, p: &PolygonFile) -> Result<Shape, SceneError> {
+        let at = |f: &str| format!("objects[{i}].polygon.{f}");
+        for (k, &v) in p.vertices.iter().enumerate() {
+            self.check(format_args!("{}[{k}]", at("vertices")), v, limits::point)?;
+        }
+        if p.vertices.len() < 3 {
+            return Err(self.invalid(
+                at("vertices"),
+                format_args!("give at least 3 vertices, got {}", p.vertices.len()),
+            ));
+        }
+        let normals = match &p.normals {
+            None => None,
+            Some(ns) => {
+                if ns.len() != p.vertices.len() {
+                    return Err(self.invalid(
+                        at("normals"),
+                        format_args!(
+                            "give one normal per vertex: {} vertices, {} normals",
+                            p.vertices.len(),
+                            ns.len()
+                        ),
+                    ));
+                }
+                let checked = ns.iter().enumerate().map(|(k, &n)| {
+                    self.check(format_args!("{}[{k}]", at("normals")), n, limits::direction)
+                });
+                Some(checked.collect::<Result<Vec<_>, _>>()?)
+            }
+        };
+        Polygon::new(p.vertices.clone(), normals, p.one_sided.unwrap_or(false))
+            .map(|polygon| Shape::Polygon(Arc::new(polygon)))
+            .map_err(|why| self.invalid(format_args!("objects[{i}].polygon"), why))
     }
 
     /// A mesh from its OBJ file, found relative to the scene file; read once

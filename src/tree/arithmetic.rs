@@ -11,7 +11,9 @@ use serde::{Deserialize, Serialize};
 use crate::geometry::cuboid::{Cuboid, SlabSpan};
 use crate::geometry::hit::Roots;
 use crate::geometry::object::{Object, Shape};
+use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::Sphere;
+use crate::geometry::triangle::ShearedRay;
 use crate::math::ray::Ray;
 use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
 use crate::scene::camera::{Camera, CameraSpec};
@@ -110,6 +112,9 @@ pub enum TestMethod {
     Watertight,
     /// The textbook Möller–Trumbore test.
     MollerTrumbore,
+    /// A polygon: its plane, then Haines's crossing-number test in the
+    /// watertight sheared frame.
+    CrossingNumber,
 }
 
 /// An object test's own numbers.
@@ -156,6 +161,22 @@ pub enum Arithmetic {
         face: u32,
         /// Weights of its three vertices.
         weights: [f64; 3],
+    },
+    /// A polygon: its plane gives `t = numerator / n_dot_c`, and the crossing
+    /// number says whether the ray passes inside its outline.
+    Polygon {
+        /// `n·c`, `n` the front's normal: 0 for a ray parallel to the plane; at
+        /// or above 0, a one-sided polygon is met from the back.
+        n_dot_c: f64,
+        /// `(V₀ - S)·n`.
+        numerator: f64,
+        /// Whether a ray meeting the back misses.
+        one_sided: bool,
+        /// Edges of the outline the half-line from the ray's point crosses, in
+        /// the sheared frame: odd inside, even outside.
+        crossings: u32,
+        /// The ray passes exactly through an edge or a vertex: inside.
+        on_edge: bool,
     },
 }
 
@@ -340,8 +361,23 @@ pub fn object_test(
                     .to_array(),
             }),
         ),
+        Shape::Polygon(p) => (TestMethod::CrossingNumber, Some(polygon(p, &own))),
     };
     (method, object_ray, arithmetic)
+}
+
+/// A polygon's test, by the polygon's own functions, so the numbers are those
+/// that decided. The crossings are counted even where the tracer stopped at `t`.
+fn polygon(p: &Polygon, ray: &Ray) -> Arithmetic {
+    let (n_dot_c, numerator) = p.plane(ray);
+    let crossings = p.crossings(&ShearedRay::new(ray));
+    Arithmetic::Polygon {
+        n_dot_c,
+        numerator,
+        one_sided: p.one_sided(),
+        crossings: crossings.count,
+        on_edge: crossings.on_edge,
+    }
 }
 
 /// The lecture's unit-sphere quadratic for `ray` (in the sphere's object frame).

@@ -166,7 +166,8 @@ pub enum Placement {
     /// Projected onto the sphere along the line from its center:
     /// `C + r·(S + t·c - C)/|S + t·c - C|`.
     OntoSphere,
-    /// Projected onto the plane along its normal: `Q - ((Q - P₀)·n)n`, `Q = S + t·c`.
+    /// Projected onto the plane (a plane's, or a polygon's) along its normal:
+    /// `Q - ((Q - P₀)·n)n`, `Q = S + t·c`.
     OntoPlane,
     /// Put on the face hit: its coordinate across the face set to the face's.
     OntoBoxFace,

@@ -399,7 +399,7 @@ impl Recorder for TreeRecorder<'_> {
             on_ray: Ray::new(node.origin, node.direction).at(hit.t),
             placement: match object.shape {
                 Shape::Sphere(_) => Placement::OntoSphere,
-                Shape::Plane(_) => Placement::OntoPlane,
+                Shape::Plane(_) | Shape::Polygon(_) => Placement::OntoPlane,
                 Shape::Box(_) => Placement::OntoBoxFace,
                 Shape::Triangle(_) | Shape::Mesh(_) => Placement::FromCorners,
             },

@@ -200,6 +200,17 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
             "{roots}, barycentric weights {}",
             vec3(DVec3::from_array(*weights))
         ),
+        Some(Arithmetic::Polygon {
+            n_dot_c,
+            numerator,
+            one_sided,
+            crossings,
+            on_edge,
+        }) => polygon(
+            (*n_dot_c, *numerator, *one_sided),
+            (*crossings, *on_edge),
+            &roots,
+        ),
         Some(Arithmetic::Face { face, weights }) => format!(
             "nearest face {face}: {roots}, barycentric weights {}",
             vec3(DVec3::from_array(*weights))
@@ -210,6 +221,60 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
         format!("test {kind} '{}'{method}: {found}", test.name),
         details,
     )
+}
+
+/// A polygon's test in words: the plane's `t`, then the crossing number's
+/// verdict, then what became of the root (`roots`, the fates written out).
+fn polygon(
+    (n_dot_c, numerator, one_sided): (f64, f64, bool),
+    (crossings, on_edge): (u32, bool),
+    roots: &str,
+) -> String {
+    if n_dot_c == 0.0 {
+        return "n·c = 0: the ray runs parallel to the polygon's plane, no root".to_owned();
+    }
+    if one_sided && n_dot_c >= 0.0 {
+        return format!(
+            "n·c = {} ≥ 0: the ray meets the back of a one-sided polygon, no root",
+            num(n_dot_c)
+        );
+    }
+    let t = numerator / n_dot_c;
+    let plane = format!(
+        "n·c = {}, t = (V₀ − S)·n / (n·c) = {} / {} = {}",
+        num(n_dot_c),
+        num(numerator),
+        factor(n_dot_c),
+        num(t)
+    );
+    let inside = on_edge || crossings % 2 == 1;
+    let verdict = if on_edge {
+        "the ray passes through an edge or a vertex: inside".to_owned()
+    } else {
+        let times = if crossings == 1 { "once" } else { "times" };
+        let count = if crossings == 1 {
+            String::new()
+        } else {
+            format!("{crossings} ")
+        };
+        let parity = if inside {
+            "odd: inside"
+        } else {
+            "even: outside"
+        };
+        format!("the half-line from the ray's point crosses the outline {count}{times}, {parity}")
+    };
+    let outcome = if !roots.is_empty() {
+        roots.to_owned()
+    } else if !inside {
+        "no root".to_owned()
+    } else if t <= 0.0 {
+        "behind the origin, no root".to_owned()
+    } else {
+        "not kept: past the ray's end or the nearest hit so far, or within rounding of its start"
+            .to_owned()
+    };
+    format!("{plane}; {verdict}; {outcome}")
 }
 
 /// The verdict read off the intervals the trace prints, by the box test's own

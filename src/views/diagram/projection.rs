@@ -122,6 +122,7 @@ impl Projection {
             }
             Shape::Triangle(t) => self.hull([t.a, t.b, t.c].map(to_world).to_vec()),
             Shape::Mesh(m) => self.hull(m.positions.iter().map(|&p| to_world(p)).collect()),
+            Shape::Polygon(p) => self.hull(p.vertices().iter().map(|&v| to_world(v)).collect()),
             Shape::Box(_) => {
                 let b = object.shape.bounds().expect("a box is bounded");
                 let corners = (0..8).map(|i: u32| {
@@ -136,7 +137,8 @@ impl Projection {
         }
     }
 
-    /// A box, triangle or mesh: the convex hull of its projected world vertices.
+    /// A box, triangle, polygon or mesh: the convex hull of its projected world
+    /// vertices (for a non-convex polygon, its silhouette's hull).
     fn hull(&self, world: Vec<DVec3>) -> Outline {
         Outline::Polygon {
             points: convex_hull(world.into_iter().map(|p| self.point(p)).collect()),

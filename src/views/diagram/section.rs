@@ -16,7 +16,7 @@ use crate::views::diagram::projection::{Outline, Projection};
 
 /// The cross-section of `object` with the drawing plane of `proj`: an ellipse
 /// for a sphere or ellipsoid, a convex polygon for a box, the segments where
-/// the plane cuts a triangle or a mesh's faces, the line of a plane; `None`
+/// the plane cuts a triangle, a polygon or a mesh's faces, the line of a plane; `None`
 /// when the plane misses the object.
 pub fn cross_section(proj: &Projection, object: &Object) -> Option<Outline> {
     let (linear, translation) = match &object.transform {
@@ -45,6 +45,11 @@ pub fn cross_section(proj: &Projection, object: &Object) -> Option<Outline> {
         }
         Shape::Triangle(t) => {
             let segments = triangle_section(proj, [t.a, t.b, t.c].map(to_world));
+            (!segments.is_empty()).then_some(Outline::Segments { segments })
+        }
+        Shape::Polygon(p) => {
+            let vertices: Vec<DVec3> = p.vertices().iter().map(|&v| to_world(v)).collect();
+            let segments = polygon_section(proj, &vertices);
             (!segments.is_empty()).then_some(Outline::Segments { segments })
         }
         Shape::Mesh(m) => {
@@ -107,6 +112,37 @@ fn triangle_section(proj: &Projection, vertices: [DVec3; 3]) -> Vec<[DVec2; 2]> 
         [a, b] => vec![[a, b]],
         _ => Vec::new(),
     }
+}
+
+/// The segments where the drawing plane cuts a planar polygon (world
+/// vertices), convex or not: the points where its edges cross the plane, in
+/// order along the line the two planes share, paired first with second, third
+/// with fourth (between each pair the line is inside, by the even–odd rule).
+/// A vertex on the plane counts with the side `≥ 0`, so every crossing is
+/// counted once and they come in pairs.
+fn polygon_section(proj: &Projection, vertices: &[DVec3]) -> Vec<[DVec2; 2]> {
+    let w = proj.toward_viewer();
+    let side: Vec<f64> = vertices.iter().map(|&v| (v - proj.origin).dot(w)).collect();
+    let mut ends = Vec::new();
+    for i in 0..vertices.len() {
+        let j = (i + 1) % vertices.len();
+        if (side[i] < 0.0) != (side[j] < 0.0) {
+            let s = side[i] / (side[i] - side[j]);
+            ends.push(proj.point(vertices[i] + s * (vertices[j] - vertices[i])));
+        }
+    }
+    let Some(along) = ends
+        .iter()
+        .map(|&e| e - ends[0])
+        .max_by(|a, b| a.length_squared().total_cmp(&b.length_squared()))
+    else {
+        return Vec::new();
+    };
+    ends.sort_by(|a, b| a.dot(along).total_cmp(&b.dot(along)));
+    ends.chunks_exact(2)
+        .map(|pair| [pair[0], pair[1]])
+        .filter(|[a, b]| a != b)
+        .collect()
 }
 
 /// The part of a convex polygon where `inside(p) ≥ 0`, for a linear `inside`
@@ -213,10 +249,13 @@ fn inside_2d(outline: &Outline, p: DVec2, q: DVec2) -> Vec<[f64; 2]> {
 }
 
 /// Where the 3D segment `a → b` is inside the solid, as parameter intervals in
-/// `[0, 1]`: between the entering and the leaving root. Triangles and meshes
-/// are surfaces and hold nothing.
+/// `[0, 1]`: between the entering and the leaving root. Triangles, meshes and
+/// polygons are surfaces and hold nothing.
 fn inside_3d(object: &Object, a: DVec3, b: DVec3) -> Vec<[f64; 2]> {
-    if matches!(object.shape, Shape::Triangle(_) | Shape::Mesh(_)) {
+    if matches!(
+        object.shape,
+        Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_)
+    ) {
         return Vec::new();
     }
     let roots = object.roots(&Ray::new(a, b - a), crate::methods::SphereMethod::Stable);

@@ -63,6 +63,14 @@ const GOLDEN: &[Golden] = &[
         ],
     },
     Golden {
+        name: "polygons-star",
+        args: &["trace", "scenes/polygons.json", "--pixel", "95,215"],
+    },
+    Golden {
+        name: "polygons-vase",
+        args: &["trace", "scenes/polygons.json", "--pixel", "360,200"],
+    },
+    Golden {
         name: "nested-ray-to-core",
         args: &[
             "trace",

@@ -274,7 +274,7 @@ fn every_field_is_documented() {
     let mut shallow = scene.clone();
     shallow.settings.max_depth = 2;
     traces.push(raytree::tree::record::pixel(&shallow, src.clone(), 416, 209, None).unwrap());
-    // Transformed spheres, a mesh, a box and a triangle: every kind of test.
+    // Transformed spheres, a mesh, a box, a triangle and a polygon: every kind of test.
     for (name, x, y) in [("ellipsoids.json", 320, 240), ("gaspra.json", 320, 240)] {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
@@ -285,9 +285,10 @@ fn every_field_is_documented() {
     let shapes = common::scene(
         r#"{ "camera": {"eye": [0, 0, 5], "look_at": [0, 0, 0]}, "render": {"width": 9, "height": 9},
              "objects": [{"box": {"min": [-1, -1, -1], "max": [0.5, 0.5, 0]}},
-                         {"triangle": {"vertices": [[0, 0, 1], [2, 0, 1], [0, 2, 1]]}}] }"#,
+                         {"triangle": {"vertices": [[0, 0, 1], [2, 0, 1], [0, 2, 1]]}},
+                         {"polygon": {"vertices": [[-2, 0, 2], [-2, -1, 2], [-1, -1, 2], [-1, 0, 2]], "one_sided": true}}] }"#,
     );
-    for (x, y) in [(4, 4), (5, 3), (2, 6)] {
+    for (x, y) in [(4, 4), (5, 3), (2, 6), (1, 5)] {
         traces.push(raytree::tree::record::pixel(&shapes, src.clone(), x, y, None).unwrap());
     }
     let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
@@ -327,6 +328,7 @@ fn every_field_is_documented() {
         "stable_quadratic",
         "plane_equation",
         "watertight",
+        "crossing_number",
         "faces_away",
         "max_depth",
         "total_internal_reflection",
