@@ -9,5 +9,7 @@ pub mod cuboid; // ray–box by slabs
 pub mod triangle; // watertight and Möller–Trumbore
 pub mod mesh; // many triangles, one object, a hierarchy of their own
 pub mod transform; // transformed primitives: the inverse-transformed ray
+pub mod unit_cone; // the open cylinder and cone in its own space: a quadratic, roots kept for 0 ≤ z ≤ 1
 pub mod object; // a shape, its transform and its material
+pub mod cone; // the open cylinder or cone between two points: the unit cone placed by a transform
 pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)

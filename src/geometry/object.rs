@@ -11,6 +11,7 @@ use crate::geometry::plane::Plane;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::{ShearedRay, Triangle};
+use crate::geometry::unit_cone::Cone;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
 use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
@@ -28,6 +29,9 @@ pub enum Shape {
     Triangle(Triangle),
     /// A triangle mesh (shared: scenes are cloned, meshes can be large).
     Mesh(Arc<Mesh>),
+    /// The unit open cone (a cylinder when its radii are equal), placed by
+    /// its object's transform.
+    Cone(Cone),
 }
 
 impl Shape {
@@ -67,6 +71,10 @@ impl Shape {
                 triangle_roots(tri, ray, methods.triangle)
             }
             Shape::Mesh(m) => m.roots(ray, methods.triangle, t_max, search, tested),
+            Shape::Cone(c) => {
+                tested.primitives += 1;
+                c.roots(ray)
+            }
         }
     }
 
@@ -84,24 +92,25 @@ impl Shape {
                 tri.surface(&hit, None)
             }
             Shape::Mesh(m) => m.surface(ray, t, face as usize, methods.triangle),
+            Shape::Cone(c) => c.surface(ray, t),
         }
     }
 
-    /// Whether `p` lies strictly inside the solid. Triangles and meshes are
-    /// surfaces, not solids: nothing is inside them.
+    /// Whether `p` lies strictly inside the solid. Triangles, meshes and open
+    /// cones are surfaces, not solids: nothing is inside them.
     pub fn contains(&self, p: DVec3) -> bool {
         match self {
             Shape::Sphere(s) => s.contains(p),
             Shape::Plane(pl) => pl.contains(p),
             Shape::Box(b) => b.contains(p),
-            Shape::Triangle(_) | Shape::Mesh(_) => false,
+            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Cone(_) => false,
         }
     }
 
     /// Whether the shape is a solid, with an inside [`Shape::contains`] can
-    /// tell: not a triangle or a mesh, which are surfaces.
+    /// tell: not a triangle, a mesh or an open cone, which are surfaces.
     pub fn is_solid(&self) -> bool {
-        !matches!(self, Shape::Triangle(_) | Shape::Mesh(_))
+        !matches!(self, Shape::Triangle(_) | Shape::Mesh(_) | Shape::Cone(_))
     }
 
     /// The box around the shape in its own space; `None` for a plane.
@@ -115,6 +124,7 @@ impl Shape {
             Shape::Box(b) => Some(b.bounds()),
             Shape::Triangle(t) => Some(Bounds::around([t.a, t.b, t.c])),
             Shape::Mesh(m) => Some(m.bounds()),
+            Shape::Cone(c) => Some(c.bounds_under(&glam::DAffine3::IDENTITY)),
         }
     }
 
@@ -135,6 +145,7 @@ impl Shape {
             Shape::Box(_) => "box",
             Shape::Triangle(_) => "triangle",
             Shape::Mesh(_) => "mesh",
+            Shape::Cone(_) => "cone",
         }
     }
 }
@@ -215,7 +226,12 @@ impl Object {
     }
 
     /// The world-space box around the object; `None` for an unbounded plane.
+    /// A cone's is made around its two end discs in world space, tighter than
+    /// its own box transformed.
     pub fn bounds(&self) -> Option<Bounds> {
+        if let (Shape::Cone(c), Some(tf)) = (&self.shape, &self.transform) {
+            return Some(c.bounds_under(&tf.to_world));
+        }
         let b = self.shape.bounds()?;
         Some(match &self.transform {
             None => b,

@@ -17,6 +17,7 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
+use crate::geometry::cone::cone_placement;
 use crate::geometry::cuboid::Cuboid;
 use crate::geometry::mesh::Mesh;
 use crate::geometry::object::{Object, Shape};
@@ -28,8 +29,8 @@ use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
 use crate::scene::format::{
-    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile,
-    SphereFile, TransformStep, TriangleFile,
+    BoxFile, CellSize, ConeFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root,
+    SceneFile, SphereFile, TransformStep, TriangleFile,
 };
 use crate::scene::light::PointLight;
 use crate::scene::limits;
@@ -358,8 +359,8 @@ impl Builder<'_> {
     }
 
     fn object(&self, i: usize, o: &ObjectFile, material: usize) -> Result<Object, SceneError> {
-        let shape = self.shape(i, o)?;
-        let transform = self.transform(i, &o.transform)?;
+        let (shape, placed) = self.shape(i, o)?;
+        let transform = self.transform(i, placed, &o.transform)?;
         let name = o
             .name
             .clone()
@@ -372,19 +373,44 @@ impl Builder<'_> {
         })
     }
 
-    /// Object `i`'s one shape.
-    fn shape(&self, i: usize, o: &ObjectFile) -> Result<Shape, SceneError> {
-        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh) {
-            (Some(s), None, None, None, None) => self.sphere(i, s),
-            (None, Some(p), None, None, None) => self.plane(i, p),
-            (None, None, Some(b), None, None) => self.cuboid(i, b),
-            (None, None, None, Some(t), None) => self.triangle(i, t),
-            (None, None, None, None, Some(m)) => self.mesh(i, m),
+    /// Object `i`'s one shape and, for a shape made in a unit space of its own
+    /// (a cone), the map placing it, which its `transform` steps follow.
+    fn shape(&self, i: usize, o: &ObjectFile) -> Result<(Shape, Option<DAffine3>), SceneError> {
+        let own = |shape: Result<Shape, SceneError>| shape.map(|s| (s, None));
+        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh, &o.cone) {
+            (Some(s), None, None, None, None, None) => own(self.sphere(i, s)),
+            (None, Some(p), None, None, None, None) => own(self.plane(i, p)),
+            (None, None, Some(b), None, None, None) => own(self.cuboid(i, b)),
+            (None, None, None, Some(t), None, None) => own(self.triangle(i, t)),
+            (None, None, None, None, Some(m), None) => own(self.mesh(i, m)),
+            (None, None, None, None, None, Some(c)) => self.cone(i, c),
             _ => Err(self.invalid(
                 format_args!("objects[{i}]"),
-                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\" or \"mesh\"",
+                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\", \"mesh\" or \"cone\"",
             )),
         }
+    }
+
+    /// The unit cone and the map placing it between its two ends, made as
+    /// [`crate::geometry::cone::cone_object`] makes it; its numbers within
+    /// the limits first.
+    fn cone(&self, i: usize, c: &ConeFile) -> Result<(Shape, Option<DAffine3>), SceneError> {
+        let at = |f: &str| format!("objects[{i}].cone.{f}");
+        let base = self.check(at("base"), c.base, limits::point)?;
+        let apex = self.check(at("apex"), c.apex, limits::point)?;
+        let radius =
+            |f: &str, r: f64| self.check(at(f), r, |r| limits::within(r, 0.0, limits::MAX_LENGTH));
+        let base_radius = radius("base_radius", c.base_radius)?;
+        let apex_radius = radius("apex_radius", c.apex_radius)?;
+        let (cone, m) = cone_placement(base, base_radius, apex, apex_radius).map_err(|e| {
+            let field = if e.field.is_empty() {
+                format!("objects[{i}].cone")
+            } else {
+                at(e.field)
+            };
+            self.invalid(field, e.message)
+        })?;
+        Ok((Shape::Cone(cone), Some(m)))
     }
 
     fn sphere(&self, i: usize, s: &SphereFile) -> Result<Shape, SceneError> {
@@ -460,22 +486,29 @@ impl Builder<'_> {
         Ok(Shape::Mesh(mesh))
     }
 
-    /// Object `i`'s transform steps as one invertible transform; `None` without steps.
+    /// Object `i`'s transform steps, after the map `placed` placing its shape
+    /// if it has one, as one invertible transform; `None` without either.
     fn transform(
         &self,
         i: usize,
+        placed: Option<DAffine3>,
         steps: &[TransformStep],
     ) -> Result<Option<Box<Transform>>, SceneError> {
-        if steps.is_empty() {
+        if steps.is_empty() && placed.is_none() {
             return Ok(None);
         }
         let m = steps
             .iter()
             .enumerate()
-            .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
+            .try_fold(placed.unwrap_or(DAffine3::IDENTITY), |m, (k, step)| {
                 self.step(i, k, step).map(|s| s * m)
             })?;
-        let at = format!("objects[{i}].transform");
+        // A cone's own placement alone is named as the cone's.
+        let at = if steps.is_empty() {
+            format!("objects[{i}].cone")
+        } else {
+            format!("objects[{i}].transform")
+        };
         let transform = Transform::new(m).ok_or_else(|| {
             self.invalid(
                 &at,

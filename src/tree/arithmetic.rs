@@ -12,6 +12,7 @@ use crate::geometry::cuboid::{Cuboid, SlabSpan};
 use crate::geometry::hit::Roots;
 use crate::geometry::object::{Object, Shape};
 use crate::geometry::sphere::Sphere;
+use crate::geometry::unit_cone::Cone;
 use crate::math::ray::Ray;
 use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
 use crate::scene::camera::{Camera, CameraSpec};
@@ -157,6 +158,38 @@ pub enum Arithmetic {
         /// Weights of its three vertices.
         weights: [f64; 3],
     },
+    /// The lecture's `A t² + 2B t + C = 0` for the unit open cone
+    /// `x² + y² = (1 + (s − 1)z)²`, `0 ≤ z ≤ 1`, met by the inverse-transformed
+    /// ray `S + t·c` (a cylinder when `s = 1`).
+    ConeQuadratic {
+        /// `S` in the unit cone's space.
+        origin: DVec3,
+        /// `c` in the unit cone's space.
+        direction: DVec3,
+        /// `s`, the radius at `z = 1` over the radius at `z = 0`.
+        ratio: f64,
+        /// `A = c_x² + c_y² − (s − 1)²c_z²`.
+        a: f64,
+        /// `B = S_x c_x + S_y c_y − (1 + (s − 1)S_z)(s − 1)c_z`.
+        b: f64,
+        /// `C = S_x² + S_y² − (1 + (s − 1)S_z)²`.
+        c: f64,
+        /// `B² − AC`.
+        discriminant: f64,
+        /// Every root of the quadratic and the height `z` there; only those
+        /// with `0 ≤ z ≤ 1` are on the open cone and become the test's roots.
+        crossings: Vec<Crossing>,
+    },
+}
+
+/// Where a ray's line crosses the infinite cone.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Crossing {
+    /// The ray parameter.
+    pub t: f64,
+    /// The height in the unit cone's space, `S_z + t·c_z`.
+    pub z: f64,
 }
 
 /// One axis of the slab test.
@@ -324,6 +357,7 @@ pub fn object_test(
             }),
         ),
         Shape::Box(b) => (TestMethod::Slabs, Some(slabs(b, &own))),
+        Shape::Cone(c) => (TestMethod::StableQuadratic, Some(cone_quadratic(c, &own))),
         Shape::Triangle(t) => (
             triangle_method,
             first.map(|t_hit| Arithmetic::Barycentric {
@@ -354,6 +388,27 @@ fn quadratic(s: &Sphere, ray: &Ray) -> Arithmetic {
         b: q.b,
         c: q.c,
         discriminant: q.discriminant,
+    }
+}
+
+/// The unit cone's quadratic for `ray` (in the cone's own space), with every
+/// crossing and its height: the cone test's own numbers.
+fn cone_quadratic(cone: &Cone, ray: &Ray) -> Arithmetic {
+    let q = cone.quadratic(ray);
+    Arithmetic::ConeQuadratic {
+        origin: q.origin,
+        direction: q.direction,
+        ratio: cone.ratio,
+        a: q.a,
+        b: q.b,
+        c: q.c,
+        discriminant: q.discriminant,
+        crossings: q
+            .crossings
+            .as_slice()
+            .iter()
+            .map(|&t| Crossing { t, z: q.height(t) })
+            .collect(),
     }
 }
 

@@ -401,6 +401,7 @@ impl Recorder for TreeRecorder<'_> {
                 Shape::Plane(_) => Placement::OntoPlane,
                 Shape::Box(_) => Placement::OntoBoxFace,
                 Shape::Triangle(_) | Shape::Mesh(_) => Placement::FromCorners,
+                Shape::Cone(_) => Placement::OntoCone,
             },
             point: hit.point,
             object_point: transform.map(|tf| tf.to_object.transform_point3(hit.point)),

@@ -204,12 +204,99 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
             "nearest face {face}: {roots}, barycentric weights {}",
             vec3(DVec3::from_array(*weights))
         ),
+        Some(Arithmetic::ConeQuadratic {
+            ratio,
+            a,
+            b,
+            c,
+            discriminant,
+            crossings,
+            ..
+        }) => {
+            let names = if test.object_ray.is_some() {
+                ("S'", "c'")
+            } else {
+                ("S", "c")
+            };
+            details.extend(cone_quadratic(*ratio, [*a, *b, *c], names));
+            let each = crossings
+                .iter()
+                .map(|x| {
+                    let why = crossing_fate(x.t, x.z, *ratio, &fates);
+                    format!("t = {} at z = {} ({why})", num(x.t), num(x.z))
+                })
+                .collect::<Vec<_>>()
+                .join(", ");
+            let d = *discriminant;
+            if *a == 0.0 && *b == 0.0 {
+                "A = B = 0: the ray runs along the surface's lines and never crosses it: no root"
+                    .to_owned()
+            } else if *a == 0.0 {
+                format!(
+                    "A = 0: the ray runs parallel to a line of the surface, so 2B t + C = 0 has one root, t = −C/(2B): {each}"
+                )
+            } else if d < 0.0 {
+                format!("B² − AC = {} < 0: no root, the ray misses", num(d))
+            } else if d == 0.0 {
+                format!("B² − AC = 0: one root, t = −B/A: {each}")
+            } else {
+                format!(
+                    "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {each}",
+                    num(d)
+                )
+            }
+        }
         None => "miss".to_owned(),
     };
     (
         format!("test {kind} '{}'{method}: {found}", test.name),
         details,
     )
+}
+
+/// The unit cone's equation and its `A`, `B` and `C` written out with the
+/// ray's names `(S, c)`; for a cylinder (`s = 1`), in its shorter form.
+fn cone_quadratic(ratio: f64, [a, b, c]: [f64; 3], (s, d): (&str, &str)) -> [String; 2] {
+    if ratio == 1.0 {
+        return [
+            "the unit cylinder x² + y² = 1, 0 ≤ z ≤ 1, open at both ends".to_owned(),
+            format!(
+                "A = {d}x² + {d}y² = {}, B = {s}x·{d}x + {s}y·{d}y = {}, C = {s}x² + {s}y² − 1 = {}",
+                num(a),
+                num(b),
+                num(c)
+            ),
+        ];
+    }
+    [
+        format!(
+            "the unit cone x² + y² = (1 + (s − 1)z)², 0 ≤ z ≤ 1, open at both ends, radius 1 at z = 0 and s = {} at z = 1",
+            num(ratio)
+        ),
+        format!(
+            "A = {d}x² + {d}y² − (s − 1)²{d}z² = {}, B = {s}x·{d}x + {s}y·{d}y − (1 + (s − 1){s}z)(s − 1){d}z = {}, C = {s}x² + {s}y² − (1 + (s − 1){s}z)² = {}",
+            num(a),
+            num(b),
+            num(c)
+        ),
+    ]
+}
+
+/// What became of a crossing of the infinite cone at height `z`: off the open
+/// cone it is no root; on it, its fate among the test's roots.
+fn crossing_fate(t: f64, z: f64, ratio: f64, fates: &[(f64, &'static str)]) -> &'static str {
+    if z < 0.0 {
+        "below the open end z = 0: not on the cone"
+    } else if ratio < 1.0 && z * (1.0 - ratio) > 1.0 {
+        "past the tip, on the other half of the double cone: not on the cone"
+    } else if z > 1.0 {
+        "past the open end z = 1: not on the cone"
+    } else {
+        fates
+            .iter()
+            .find(|(root, _)| *root == t)
+            .map_or("on the cone", |(_, why)| why)
+    }
 }
 
 /// The verdict read off the intervals the trace prints, by the box test's own
@@ -333,6 +420,7 @@ fn hit_point(hit: &HitRecord) -> String {
         Placement::OntoPlane => "projected onto the plane",
         Placement::OntoBoxFace => "put on the box's face",
         Placement::FromCorners => "made from the triangle's corners",
+        Placement::OntoCone => "put at the cone's radius at its height",
     };
     if hit.object_point.is_some() {
         format!(
