@@ -365,13 +365,22 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
                 put("object_origin", vec3(r.origin));
                 put("object_direction", vec3(r.direction));
             }
-            if let Some(crate::tree::arithmetic::Arithmetic::Quadratic {
-                a,
-                b,
-                c,
-                discriminant,
-                ..
-            }) = &test.arithmetic
+            if let Some(
+                crate::tree::arithmetic::Arithmetic::Quadratic {
+                    a,
+                    b,
+                    c,
+                    discriminant,
+                    ..
+                }
+                | crate::tree::arithmetic::Arithmetic::ConeQuadratic {
+                    a,
+                    b,
+                    c,
+                    discriminant,
+                    ..
+                },
+            ) = &test.arithmetic
             {
                 put("A", num(*a));
                 put("B", num(*b));

@@ -10,5 +10,7 @@ pub mod triangle; // watertight and Möller–Trumbore
 pub mod polygon; // planar polygons and patches, any number of vertices: the crossing-number test in the watertight frame
 pub mod mesh; // many triangles, one object, a hierarchy of their own
 pub mod transform; // transformed primitives: the inverse-transformed ray
+pub mod unit_cone; // the open cylinder and cone in its own space: a quadratic, roots kept for 0 ≤ z ≤ 1
 pub mod object; // a shape, its transform and its material
+pub mod cone; // the open cylinder or cone between two points: the unit cone placed by a transform
 pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)

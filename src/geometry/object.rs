@@ -12,6 +12,7 @@ use crate::geometry::polygon::Polygon;
 use crate::geometry::sphere::Sphere;
 use crate::geometry::transform::Transform;
 use crate::geometry::triangle::{ShearedRay, Triangle};
+use crate::geometry::unit_cone::Cone;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
 use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
@@ -31,6 +32,9 @@ pub enum Shape {
     Mesh(Arc<Mesh>),
     /// A planar polygon or patch (shared: it may have many vertices).
     Polygon(Arc<Polygon>),
+    /// The unit open cone (a cylinder when its radii are equal), placed by
+    /// its object's transform.
+    Cone(Cone),
 }
 
 impl Shape {
@@ -74,6 +78,10 @@ impl Shape {
                 tested.primitives += 1;
                 p.roots(ray, t_max)
             }
+            Shape::Cone(c) => {
+                tested.primitives += 1;
+                c.roots(ray)
+            }
         }
     }
 
@@ -92,26 +100,27 @@ impl Shape {
             }
             Shape::Mesh(m) => m.surface(ray, t, face as usize, methods.triangle),
             Shape::Polygon(p) => p.surface(ray, t),
+            Shape::Cone(c) => c.surface(ray, t),
         }
     }
 
-    /// Whether `p` lies strictly inside the solid. Triangles, meshes and polygons are
-    /// surfaces, not solids: nothing is inside them.
+    /// Whether `p` lies strictly inside the solid. Triangles, meshes, polygons
+    /// and open cones are surfaces, not solids: nothing is inside them.
     pub fn contains(&self, p: DVec3) -> bool {
         match self {
             Shape::Sphere(s) => s.contains(p),
             Shape::Plane(pl) => pl.contains(p),
             Shape::Box(b) => b.contains(p),
-            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_) => false,
+            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_) | Shape::Cone(_) => false,
         }
     }
 
     /// Whether the shape is a solid, with an inside [`Shape::contains`] can
-    /// tell: not a triangle, a mesh or a polygon, which are surfaces.
+    /// tell: not a triangle, a mesh, a polygon or an open cone, which are surfaces.
     pub fn is_solid(&self) -> bool {
         !matches!(
             self,
-            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_)
+            Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_) | Shape::Cone(_)
         )
     }
 
@@ -127,6 +136,7 @@ impl Shape {
             Shape::Triangle(t) => Some(Bounds::around([t.a, t.b, t.c])),
             Shape::Mesh(m) => Some(m.bounds()),
             Shape::Polygon(p) => Some(p.bounds()),
+            Shape::Cone(c) => Some(c.bounds_under(&glam::DAffine3::IDENTITY)),
         }
     }
 
@@ -148,6 +158,7 @@ impl Shape {
             Shape::Triangle(_) => "triangle",
             Shape::Mesh(_) => "mesh",
             Shape::Polygon(_) => "polygon",
+            Shape::Cone(_) => "cone",
         }
     }
 }
@@ -228,7 +239,12 @@ impl Object {
     }
 
     /// The world-space box around the object; `None` for an unbounded plane.
+    /// A cone's is made around its two end discs in world space, tighter than
+    /// its own box transformed.
     pub fn bounds(&self) -> Option<Bounds> {
+        if let (Shape::Cone(c), Some(tf)) = (&self.shape, &self.transform) {
+            return Some(c.bounds_under(&tf.to_world));
+        }
         let b = self.shape.bounds()?;
         Some(match &self.transform {
             None => b,

@@ -112,6 +112,8 @@ pub(super) struct ObjectFile {
     pub(super) mesh: Option<MeshFile>,
     #[serde(default, deserialize_with = "strict::some_object")]
     pub(super) polygon: Option<PolygonFile>,
+    #[serde(default, deserialize_with = "strict::some_object")]
+    pub(super) cone: Option<ConeFile>,
     pub(super) material: Option<String>,
     #[serde(default)]
     pub(super) transform: Vec<TransformStep>,
@@ -142,6 +144,16 @@ pub(super) struct BoxFile {
 #[serde(deny_unknown_fields)]
 pub(super) struct TriangleFile {
     pub(super) vertices: [DVec3; 3],
+}
+
+/// An open cylinder or cone from `base` to `apex`, with a radius at each end.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+pub(super) struct ConeFile {
+    pub(super) base: DVec3,
+    pub(super) base_radius: f64,
+    pub(super) apex: DVec3,
+    pub(super) apex_radius: f64,
 }
 
 #[derive(Deserialize)]

@@ -15,23 +15,13 @@ use std::fmt::Display;
 use std::path::{Path, PathBuf};
 use std::sync::Arc;
 
-use glam::{DAffine3, DVec3};
+use glam::DVec3;
 
-use crate::geometry::cuboid::Cuboid;
 use crate::geometry::mesh::Mesh;
-use crate::geometry::object::{Object, Shape};
-use crate::geometry::plane::Plane;
-use crate::geometry::polygon::Polygon;
-use crate::geometry::sphere::Sphere;
-use crate::geometry::transform::Transform;
-use crate::geometry::triangle::Triangle;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
-use crate::scene::format::{
-    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, PolygonFile, Root,
-    SceneFile, SphereFile, TransformStep, TriangleFile,
-};
+use crate::scene::format::{CellSize, LightFile, MaterialFile, Root, SceneFile};
 use crate::scene::light::PointLight;
 use crate::scene::limits;
 use crate::scene::overrides::Overrides;
@@ -145,17 +135,17 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
 /// The material objects get when they name none.
 const DEFAULT_MATERIAL: &str = "default";
 
-struct Builder<'a> {
-    file: &'a str,
+pub(super) struct Builder<'a> {
+    pub(super) file: &'a str,
     /// Where the scene file is: mesh files are found relative to it.
-    dir: &'a Path,
+    pub(super) dir: &'a Path,
     /// Each OBJ file read so far, by its canonical path and whether it is
     /// smooth: a file many objects use is read and parsed once.
-    meshes: RefCell<HashMap<(PathBuf, bool), Arc<Mesh>>>,
+    pub(super) meshes: RefCell<HashMap<(PathBuf, bool), Arc<Mesh>>>,
 }
 
 impl Builder<'_> {
-    fn invalid(&self, field: impl Display, message: impl Display) -> SceneError {
+    pub(super) fn invalid(&self, field: impl Display, message: impl Display) -> SceneError {
         SceneError::Invalid {
             file: self.file.to_owned(),
             field: strict::printable(&field.to_string()),
@@ -164,7 +154,7 @@ impl Builder<'_> {
     }
 
     /// `value` checked by `check`, or an error naming `field`.
-    fn check<T, U>(
+    pub(super) fn check<T, U>(
         &self,
         field: impl Display,
         value: T,
@@ -247,7 +237,7 @@ impl Builder<'_> {
         Ok(s)
     }
 
-    fn color(&self, field: impl Display, c: DVec3) -> Result<DVec3, SceneError> {
+    pub(super) fn color(&self, field: impl Display, c: DVec3) -> Result<DVec3, SceneError> {
         self.check(field, c, limits::color)
     }
 
@@ -357,254 +347,11 @@ impl Builder<'_> {
             color,
         })
     }
-
-    fn object(&self, i: usize, o: &ObjectFile, material: usize) -> Result<Object, SceneError> {
-        let shape = self.shape(i, o)?;
-        let transform = self.transform(i, &o.transform)?;
-        let name = o
-            .name
-            .clone()
-            .unwrap_or_else(|| format!("{}{i}", shape.kind()));
-        Ok(Object {
-            name,
-            shape,
-            transform,
-            material,
-        })
-    }
-
-    /// Object `i`'s one shape.
-    fn shape(&self, i: usize, o: &ObjectFile) -> Result<Shape, SceneError> {
-        match (&o.sphere, &o.plane, &o.aligned_box, &o.triangle, &o.mesh, &o.polygon) {
-            (Some(s), None, None, None, None, None) => self.sphere(i, s),
-            (None, Some(p), None, None, None, None) => self.plane(i, p),
-            (None, None, Some(b), None, None, None) => self.cuboid(i, b),
-            (None, None, None, Some(t), None, None) => self.triangle(i, t),
-            (None, None, None, None, Some(m), None) => self.mesh(i, m),
-            (None, None, None, None, None, Some(p)) => self.polygon(i, p),
-            _ => Err(self.invalid(
-                format_args!("objects[{i}]"),
-                "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\", \"mesh\" or \"polygon\"",
-            )),
-        }
-    }
-
-    fn sphere(&self, i: usize, s: &SphereFile) -> Result<Shape, SceneError> {
-        let at = |f: &str| format!("objects[{i}].sphere.{f}");
-        let radius = self.check(at("radius"), s.radius.unwrap_or(1.0), limits::length)?;
-        let center = self.check(at("center"), s.center.unwrap_or(DVec3::ZERO), limits::point)?;
-        Ok(Shape::Sphere(Sphere { center, radius }))
-    }
-
-    fn plane(&self, i: usize, p: &PlaneFile) -> Result<Shape, SceneError> {
-        let at = |f: &str| format!("objects[{i}].plane.{f}");
-        let normal = self.check(
-            at("normal"),
-            p.normal.unwrap_or(DVec3::Y),
-            limits::direction,
-        )?;
-        let point = self.check(at("point"), p.point.unwrap_or(DVec3::ZERO), limits::point)?;
-        Ok(Shape::Plane(Plane { point, normal }))
-    }
-
-    fn cuboid(&self, i: usize, b: &BoxFile) -> Result<Shape, SceneError> {
-        let at = |f: &str| format!("objects[{i}].box.{f}");
-        let min = self.check(
-            at("min"),
-            b.min.unwrap_or(DVec3::splat(-1.0)),
-            limits::point,
-        )?;
-        let max = self.check(at("max"), b.max.unwrap_or(DVec3::ONE), limits::point)?;
-        if !min.cmplt(max).all() {
-            return Err(self.invalid(
-                format_args!("objects[{i}].box"),
-                format_args!("min must be below max on every axis, got min {min} and max {max}"),
-            ));
-        }
-        Ok(Shape::Box(Cuboid { min, max }))
-    }
-
-    fn triangle(&self, i: usize, t: &TriangleFile) -> Result<Shape, SceneError> {
-        let at = format!("objects[{i}].triangle.vertices");
-        for (k, &v) in t.vertices.iter().enumerate() {
-            self.check(format_args!("{at}[{k}]"), v, limits::point)?;
-        }
-        let [a, b, c] = t.vertices;
-        let tri = Triangle { a, b, c };
-        if tri.normal() == DVec3::ZERO {
-            return Err(self.invalid(at, "must be three points not on one line"));
-        }
-        Ok(Shape::Triangle(tri))
-    }
-
-    /// A polygon or patch: each vertex and normal within the scene's limits,
-    /// then [`Polygon::new`]'s own checks (the plane of the first three, every
-    /// vertex on it), named by field.
-    fn polygon(&self, i: usize, p: &PolygonFile) -> Result<Shape, SceneError> {
-        let at = |f: &str| format!("objects[{i}].polygon.{f}");
-        for (k, &v) in p.vertices.iter().enumerate() {
-            self.check(format_args!("{}[{k}]", at("vertices")), v, limits::point)?;
-        }
-        if p.vertices.len() < 3 {
-            return Err(self.invalid(
-                at("vertices"),
-                format_args!("give at least 3 vertices, got {}", p.vertices.len()),
-            ));
-        }
-        let normals = match &p.normals {
-            None => None,
-            Some(ns) => {
-                if ns.len() != p.vertices.len() {
-                    return Err(self.invalid(
-                        at("normals"),
-                        format_args!(
-                            "give one normal per vertex: {} vertices, {} normals",
-                            p.vertices.len(),
-                            ns.len()
-                        ),
-                    ));
-                }
-                let checked = ns.iter().enumerate().map(|(k, &n)| {
-                    self.check(format_args!("{}[{k}]", at("normals")), n, limits::direction)
-                });
-                Some(checked.collect::<Result<Vec<_>, _>>()?)
-            }
-        };
-        Polygon::new(p.vertices.clone(), normals, p.one_sided.unwrap_or(false))
-            .map(|polygon| Shape::Polygon(Arc::new(polygon)))
-            .map_err(|why| self.invalid(format_args!("objects[{i}].polygon"), why))
-    }
-
-    /// A mesh from its OBJ file, found relative to the scene file; read once
-    /// however many objects use it.
-    fn mesh(&self, i: usize, m: &MeshFile) -> Result<Shape, SceneError> {
-        self.check(format_args!("objects[{i}].mesh.file"), &m.file, |f| {
-            name_ok(f)?;
-            within(self.dir, f)
-        })?;
-        let path = self.dir.join(&m.file);
-        let key = (
-            std::fs::canonicalize(&path).unwrap_or_else(|_| path.clone()),
-            m.smooth.unwrap_or(true),
-        );
-        if let Some(mesh) = self.meshes.borrow().get(&key) {
-            return Ok(Shape::Mesh(Arc::clone(mesh)));
-        }
-        let mesh = crate::scene::obj::load(&path, key.1).map_err(|error| SceneError::Mesh {
-            file: self.file.to_owned(),
-            field: format!("objects[{i}].mesh.file"),
-            error,
-        })?;
-        let mesh = Arc::new(mesh);
-        self.meshes.borrow_mut().insert(key, Arc::clone(&mesh));
-        Ok(Shape::Mesh(mesh))
-    }
-
-    /// Object `i`'s transform steps as one invertible transform; `None` without steps.
-    fn transform(
-        &self,
-        i: usize,
-        steps: &[TransformStep],
-    ) -> Result<Option<Box<Transform>>, SceneError> {
-        if steps.is_empty() {
-            return Ok(None);
-        }
-        let m = steps
-            .iter()
-            .enumerate()
-            .try_fold(DAffine3::IDENTITY, |m, (k, step)| {
-                self.step(i, k, step).map(|s| s * m)
-            })?;
-        let at = format!("objects[{i}].transform");
-        let transform = Transform::new(m).ok_or_else(|| {
-            self.invalid(
-                &at,
-                "is singular (it flattens the object, e.g. a zero scale) and cannot be inverted",
-            )
-        })?;
-        self.check(&at, &transform, |t| {
-            limits::transform(&t.to_world, &t.to_object)
-        })?;
-        Ok(Some(Box::new(transform)))
-    }
-
-    /// One transform step's matrix; steps apply in the order written, so the
-    /// whole transform is `M = M_last ⋯ M_first`.
-    fn step(&self, i: usize, k: usize, step: &TransformStep) -> Result<DAffine3, SceneError> {
-        let at = |f: &str| format!("objects[{i}].transform[{k}].{f}");
-        let angle = |f: &str, d: f64| {
-            let max = limits::MAX_COORDINATE;
-            self.check(at(f), d, |d| limits::within(d, -max, max))
-                .map(f64::to_radians)
-        };
-        Ok(match step {
-            TransformStep::Translate(t) => {
-                DAffine3::from_translation(self.check(at("translate"), *t, limits::point)?)
-            }
-            TransformStep::Scale(s) => {
-                DAffine3::from_scale(self.check(at("scale"), *s, limits::scale)?)
-            }
-            TransformStep::RotateX(d) => DAffine3::from_rotation_x(angle("rotate_x", *d)?),
-            TransformStep::RotateY(d) => DAffine3::from_rotation_y(angle("rotate_y", *d)?),
-            TransformStep::RotateZ(d) => DAffine3::from_rotation_z(angle("rotate_z", *d)?),
-            TransformStep::Rotate(r) => {
-                let axis = self.check(at("rotate.axis"), r.axis, limits::direction)?;
-                DAffine3::from_axis_angle(axis, angle("rotate.degrees", r.degrees)?)
-            }
-        })
-    }
 }
 
 /// A name shown in traces, errors and the terminal: no control characters,
 /// which a terminal would obey (`\u{1b}[2J` clears the screen).
-/// A mesh's `file` stays in the scene's folder `dir` or below it: no `..`
-/// above the folder, no absolute path or symlink that resolves out of it (the
-/// deepest part of the path that exists is resolved). A path out is refused whether or not
-/// its file exists, so a scene cannot probe the machine's files.
-fn within(dir: &Path, file: &str) -> Result<(), String> {
-    use std::path::Component;
-    let leaves = || {
-        Err(format!(
-            "'{file}' leaves the scene's folder (a mesh is read from the scene's folder or one below it)"
-        ))
-    };
-    // A relative path climbing above the folder, by its words alone (an
-    // absolute path is judged by where it resolves, below).
-    let mut depth = 0usize;
-    for part in Path::new(file).components() {
-        match part {
-            Component::Normal(_) => depth += 1,
-            Component::ParentDir if depth > 0 => depth -= 1,
-            Component::ParentDir => return leaves(),
-            Component::CurDir | Component::RootDir | Component::Prefix(_) => {}
-        }
-    }
-    let dir = if dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        dir
-    };
-    let Ok(root) = std::fs::canonicalize(dir) else {
-        return Ok(());
-    };
-    let path = dir.join(file);
-    let mut part: &Path = &path;
-    loop {
-        if let Ok(real) = std::fs::canonicalize(part) {
-            return if real.starts_with(&root) {
-                Ok(())
-            } else {
-                leaves()
-            };
-        }
-        match part.parent() {
-            Some(up) => part = up,
-            None => return Ok(()),
-        }
-    }
-}
-
-fn name_ok(name: &str) -> Result<(), String> {
+pub(super) fn name_ok(name: &str) -> Result<(), String> {
     match name.chars().find(|c| c.is_control()) {
         Some(c) => Err(format!(
             "'{}' holds a control character ({}); names must be printable",

@@ -10,6 +10,7 @@ pub mod strict; // JSON objects only, each name once
 pub mod limits; // the ranges that keep every computed number finite
 pub mod camera_file; // the camera block, checked (right-handed frames only)
 pub mod loader; // the scene file, checked, into a Scene
+mod object_file; // its objects: shapes, transforms, mesh files
 pub mod obj; // OBJ meshes
 pub mod source; // which scene file, by name and hash
 pub mod generate; // scenes made by program

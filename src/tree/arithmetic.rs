@@ -8,14 +8,6 @@
 use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
-use crate::geometry::cuboid::{Cuboid, SlabSpan};
-use crate::geometry::hit::Roots;
-use crate::geometry::object::{Object, Shape};
-use crate::geometry::polygon::Polygon;
-use crate::geometry::sphere::Sphere;
-use crate::geometry::triangle::ShearedRay;
-use crate::math::ray::Ray;
-use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
 use crate::scene::camera::{Camera, CameraSpec};
 use crate::shading::optics::{reflect, refract};
 
@@ -178,6 +170,38 @@ pub enum Arithmetic {
         /// The ray passes exactly through an edge or a vertex: inside.
         on_edge: bool,
     },
+    /// The lecture's `A t² + 2B t + C = 0` for the unit open cone
+    /// `x² + y² = (1 + (s − 1)z)²`, `0 ≤ z ≤ 1`, met by the inverse-transformed
+    /// ray `S + t·c` (a cylinder when `s = 1`).
+    ConeQuadratic {
+        /// `S` in the unit cone's space.
+        origin: DVec3,
+        /// `c` in the unit cone's space.
+        direction: DVec3,
+        /// `s`, the radius at `z = 1` over the radius at `z = 0`.
+        ratio: f64,
+        /// `A = c_x² + c_y² − (s − 1)²c_z²`.
+        a: f64,
+        /// `B = S_x c_x + S_y c_y − (1 + (s − 1)S_z)(s − 1)c_z`.
+        b: f64,
+        /// `C = S_x² + S_y² − (1 + (s − 1)S_z)²`.
+        c: f64,
+        /// `B² − AC`.
+        discriminant: f64,
+        /// Every root of the quadratic and the height `z` there; only those
+        /// with `0 ≤ z ≤ 1` are on the open cone and become the test's roots.
+        crossings: Vec<Crossing>,
+    },
+}
+
+/// Where a ray's line crosses the infinite cone.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Crossing {
+    /// The ray parameter.
+    pub t: f64,
+    /// The height in the unit cone's space, `S_z + t·c_z`.
+    pub z: f64,
 }
 
 /// One axis of the slab test.
@@ -309,100 +333,6 @@ pub fn camera_stage(camera: &Camera, pixel: (u32, u32), (x, y): (f64, f64)) -> C
     }
 }
 
-/// How `object` was tested against the world ray `ray`, the ray in its own
-/// frame when it is transformed (the lecture's `S' + t·c'`), and the test's
-/// own numbers (for a mesh or triangle, at the root found).
-pub fn object_test(
-    object: &Object,
-    ray: &Ray,
-    methods: IntersectionMethods,
-    roots: &Roots,
-) -> (TestMethod, Option<RayRecord>, Option<Arithmetic>) {
-    let local = object.transform.as_ref().map(|tf| tf.ray_to_object(ray));
-    let own = local.unwrap_or(*ray);
-    let object_ray = local.map(|r| RayRecord {
-        origin: r.origin,
-        direction: r.dir,
-    });
-    let triangle_method = match methods.triangle {
-        TriangleMethod::Watertight => TestMethod::Watertight,
-        TriangleMethod::MollerTrumbore => TestMethod::MollerTrumbore,
-    };
-    let first = roots.as_slice().first().copied();
-    let (method, arithmetic) = match &object.shape {
-        Shape::Sphere(s) => {
-            let method = match methods.sphere {
-                SphereMethod::Lecture => TestMethod::LectureQuadratic,
-                SphereMethod::Stable => TestMethod::StableQuadratic,
-            };
-            (method, Some(quadratic(s, &own)))
-        }
-        Shape::Plane(p) => (
-            TestMethod::PlaneEquation,
-            Some(Arithmetic::Plane {
-                n_dot_c: own.dir.dot(p.normal),
-                numerator: (p.point - own.origin).dot(p.normal),
-            }),
-        ),
-        Shape::Box(b) => (TestMethod::Slabs, Some(slabs(b, &own))),
-        Shape::Triangle(t) => (
-            triangle_method,
-            first.map(|t_hit| Arithmetic::Barycentric {
-                weights: t.barycentric(own.at(t_hit)).to_array(),
-            }),
-        ),
-        Shape::Mesh(m) => (
-            triangle_method,
-            first.map(|t_hit| Arithmetic::Face {
-                face: roots.face(),
-                weights: m
-                    .triangle(roots.face() as usize)
-                    .barycentric(own.at(t_hit))
-                    .to_array(),
-            }),
-        ),
-        Shape::Polygon(p) => (TestMethod::CrossingNumber, Some(polygon(p, &own))),
-    };
-    (method, object_ray, arithmetic)
-}
-
-/// A polygon's test, by the polygon's own functions, so the numbers are those
-/// that decided. The crossings are counted even where the tracer stopped at `t`.
-fn polygon(p: &Polygon, ray: &Ray) -> Arithmetic {
-    let (n_dot_c, numerator) = p.plane(ray);
-    let crossings = p.crossings(&ShearedRay::new(ray));
-    Arithmetic::Polygon {
-        n_dot_c,
-        numerator,
-        one_sided: p.one_sided(),
-        crossings: crossings.count,
-        on_edge: crossings.on_edge,
-    }
-}
-
-/// The lecture's unit-sphere quadratic for `ray` (in the sphere's object frame).
-fn quadratic(s: &Sphere, ray: &Ray) -> Arithmetic {
-    let q = s.unit_quadratic(ray);
-    Arithmetic::Quadratic {
-        origin: q.origin,
-        direction: q.direction,
-        a: q.a,
-        b: q.b,
-        c: q.c,
-        discriminant: q.discriminant,
-    }
-}
-
-/// Each axis's slab interval (Kay & Kajiya), ordered near to far: the box
-/// test's own, so the trace shows the numbers that decided.
-fn slabs(b: &Cuboid, ray: &Ray) -> Arithmetic {
-    let axes = b.slabs(ray).map(|slab| match slab {
-        SlabSpan::Crossing { near, far } => Slab::Crossing { near, far },
-        SlabSpan::Parallel { inside } => Slab::Parallel { inside },
-    });
-    Arithmetic::Slabs { axes }
-}
-
 /// What became of each root of a ray's tests: the hit's root is chosen, those
 /// at or behind the origin and past a bounded ray's end are ignored, the rest
 /// are farther. `start` is the object the ray leaves (none for a primary ray);
@@ -476,6 +406,9 @@ pub fn hit_optics(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geometry::sphere::Sphere;
+    use crate::math::ray::Ray;
+    use crate::tree::shape_arithmetic::quadratic;
 
     #[test]
     fn quadratic_of_a_ray_through_the_center() {

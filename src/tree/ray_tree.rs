@@ -174,6 +174,9 @@ pub enum Placement {
     /// Made from the triangle's corners with its barycentric weights at the
     /// hit: `b₀A + b₁B + b₂C`.
     FromCorners,
+    /// Put at the radius of its height on the unit cone: `z` kept, `(x, y)`
+    /// scaled to `1 + (s − 1)z`.
+    OntoCone,
 }
 
 /// A shadow ray toward one light.

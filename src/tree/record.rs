@@ -19,14 +19,13 @@ use crate::trace::recorder::{
     ShadowEvent, ShadowOutcome, SumEvent,
 };
 use crate::trace::tracer::Tracer;
-use crate::tree::arithmetic::{
-    Fate, RootRecord, TUnit, camera_stage, fates, hit_optics, object_test,
-};
+use crate::tree::arithmetic::{Fate, RootRecord, TUnit, camera_stage, fates, hit_optics};
 use crate::tree::document::{GivenRay, ObjectEntry, Pixel, Sample, TraceDocument, object_entries};
 use crate::tree::ray_tree::{
     BoxRecord, BranchRecord, HitRecord, LightRecord, LocalRecord, PhongRecord, Placement, RayNode,
     RayTree, RecentRecord, ShadowOutcomeRecord, ShadowRecord, SumRecord, TestRecord,
 };
+use crate::tree::shape_arithmetic::object_test;
 use crate::tree::trace_check::MAX_TRACE_RAYS;
 
 /// Why a trace could not be made.
@@ -402,6 +401,7 @@ impl Recorder for TreeRecorder<'_> {
                 Shape::Plane(_) | Shape::Polygon(_) => Placement::OntoPlane,
                 Shape::Box(_) => Placement::OntoBoxFace,
                 Shape::Triangle(_) | Shape::Mesh(_) => Placement::FromCorners,
+                Shape::Cone(_) => Placement::OntoCone,
             },
             point: hit.point,
             object_point: transform.map(|tf| tf.to_object.transform_point3(hit.point)),

@@ -13,6 +13,7 @@ use crate::tree::arithmetic::{
 use crate::tree::ray_tree::{
     HitRecord, LightRecord, LocalRecord, RayNode, ShadowOutcomeRecord, ShadowRecord, TestRecord,
 };
+use crate::views::explain_shapes::{cone_quadratic, crossing_fate, polygon};
 use crate::views::numbers::{color, degrees, factor, num, vec3};
 
 /// A step's headline and the lines that show its arithmetic.
@@ -215,66 +216,54 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
             "nearest face {face}: {roots}, barycentric weights {}",
             vec3(DVec3::from_array(*weights))
         ),
+        Some(Arithmetic::ConeQuadratic {
+            ratio,
+            a,
+            b,
+            c,
+            discriminant,
+            crossings,
+            ..
+        }) => {
+            let names = if test.object_ray.is_some() {
+                ("S'", "c'")
+            } else {
+                ("S", "c")
+            };
+            details.extend(cone_quadratic(*ratio, [*a, *b, *c], names));
+            let each = crossings
+                .iter()
+                .map(|x| {
+                    let why = crossing_fate(x.t, x.z, *ratio, &fates);
+                    format!("t = {} at z = {} ({why})", num(x.t), num(x.z))
+                })
+                .collect::<Vec<_>>()
+                .join(", ");
+            let d = *discriminant;
+            if *a == 0.0 && *b == 0.0 {
+                "A = B = 0: the ray runs along the surface's lines and never crosses it: no root"
+                    .to_owned()
+            } else if *a == 0.0 {
+                format!(
+                    "A = 0: the ray runs parallel to a line of the surface, so 2B t + C = 0 has one root, t = −C/(2B): {each}"
+                )
+            } else if d < 0.0 {
+                format!("B² − AC = {} < 0: no root, the ray misses", num(d))
+            } else if d == 0.0 {
+                format!("B² − AC = 0: one root, t = −B/A: {each}")
+            } else {
+                format!(
+                    "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {each}",
+                    num(d)
+                )
+            }
+        }
         None => "miss".to_owned(),
     };
     (
         format!("test {kind} '{}'{method}: {found}", test.name),
         details,
     )
-}
-
-/// A polygon's test in words: the plane's `t`, then the crossing number's
-/// verdict, then what became of the root (`roots`, the fates written out).
-fn polygon(
-    (n_dot_c, numerator, one_sided): (f64, f64, bool),
-    (crossings, on_edge): (u32, bool),
-    roots: &str,
-) -> String {
-    if n_dot_c == 0.0 {
-        return "n·c = 0: the ray runs parallel to the polygon's plane, no root".to_owned();
-    }
-    if one_sided && n_dot_c >= 0.0 {
-        return format!(
-            "n·c = {} ≥ 0: the ray meets the back of a one-sided polygon, no root",
-            num(n_dot_c)
-        );
-    }
-    let t = numerator / n_dot_c;
-    let plane = format!(
-        "n·c = {}, t = (V₀ − S)·n / (n·c) = {} / {} = {}",
-        num(n_dot_c),
-        num(numerator),
-        factor(n_dot_c),
-        num(t)
-    );
-    let inside = on_edge || crossings % 2 == 1;
-    let verdict = if on_edge {
-        "the ray passes through an edge or a vertex: inside".to_owned()
-    } else {
-        let times = if crossings == 1 { "once" } else { "times" };
-        let count = if crossings == 1 {
-            String::new()
-        } else {
-            format!("{crossings} ")
-        };
-        let parity = if inside {
-            "odd: inside"
-        } else {
-            "even: outside"
-        };
-        format!("the half-line from the ray's point crosses the outline {count}{times}, {parity}")
-    };
-    let outcome = if !roots.is_empty() {
-        roots.to_owned()
-    } else if !inside {
-        "no root".to_owned()
-    } else if t <= 0.0 {
-        "behind the origin, no root".to_owned()
-    } else {
-        "not kept: past the ray's end or the nearest hit so far, or within rounding of its start"
-            .to_owned()
-    };
-    format!("{plane}; {verdict}; {outcome}")
 }
 
 /// The verdict read off the intervals the trace prints, by the box test's own
@@ -398,6 +387,7 @@ fn hit_point(hit: &HitRecord) -> String {
         Placement::OntoPlane => "projected onto the plane",
         Placement::OntoBoxFace => "put on the box's face",
         Placement::FromCorners => "made from the triangle's corners",
+        Placement::OntoCone => "put at the cone's radius at its height",
     };
     if hit.object_point.is_some() {
         format!(

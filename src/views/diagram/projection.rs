@@ -13,6 +13,11 @@ use crate::geometry::sphere::Sphere;
 use crate::scene::camera::Camera;
 use crate::tree::document::TraceDocument;
 
+/// How many points around each of a cone's rims it is drawn with: its
+/// outline and cut are off by at most a chord's sag, `1 − cos(π/96)` ≈ 0.05%
+/// of the radius.
+pub const RIM_POINTS: usize = 96;
+
 /// Which plane to project onto.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
 pub enum View {
@@ -123,6 +128,9 @@ impl Projection {
             Shape::Triangle(t) => self.hull([t.a, t.b, t.c].map(to_world).to_vec()),
             Shape::Mesh(m) => self.hull(m.positions.iter().map(|&p| to_world(p)).collect()),
             Shape::Polygon(p) => self.hull(p.vertices().iter().map(|&v| to_world(v)).collect()),
+            // The cone lies in the convex hull of its two end discs, and reaches
+            // its every edge: the hull of the rims' points, within a chord's sag.
+            Shape::Cone(c) => self.hull(c.rims(RIM_POINTS).into_iter().map(to_world).collect()),
             Shape::Box(_) => {
                 let b = object.shape.bounds().expect("a box is bounded");
                 let corners = (0..8).map(|i: u32| {
@@ -137,8 +145,8 @@ impl Projection {
         }
     }
 
-    /// A box, triangle, polygon or mesh: the convex hull of its projected world
-    /// vertices (for a non-convex polygon, its silhouette's hull).
+    /// A box, triangle, polygon, mesh or cone: the convex hull of its projected
+    /// world vertices (for a non-convex polygon, its silhouette's hull).
     fn hull(&self, world: Vec<DVec3>) -> Outline {
         Outline::Polygon {
             points: convex_hull(world.into_iter().map(|p| self.point(p)).collect()),

@@ -12,11 +12,12 @@ use glam::{DMat3, DVec2, DVec3};
 
 use crate::geometry::object::{Object, Shape};
 use crate::math::ray::Ray;
-use crate::views::diagram::projection::{Outline, Projection};
+use crate::views::diagram::projection::{Outline, Projection, RIM_POINTS};
 
 /// The cross-section of `object` with the drawing plane of `proj`: an ellipse
 /// for a sphere or ellipsoid, a convex polygon for a box, the segments where
-/// the plane cuts a triangle, a polygon or a mesh's faces, the line of a plane; `None`
+/// the plane cuts a triangle, a polygon, a mesh's faces or a cone, the line of a
+/// plane; `None`
 /// when the plane misses the object.
 pub fn cross_section(proj: &Projection, object: &Object) -> Option<Outline> {
     let (linear, translation) = match &object.transform {
@@ -57,6 +58,21 @@ pub fn cross_section(proj: &Projection, object: &Object) -> Option<Outline> {
                 .flat_map(|f| {
                     let t = m.triangle(f);
                     triangle_section(proj, [t.a, t.b, t.c].map(to_world))
+                })
+                .collect();
+            (!segments.is_empty()).then_some(Outline::Segments { segments })
+        }
+        Shape::Cone(c) => {
+            // The surface as thin triangles between the two rims: the cut is
+            // the conic within a chord's sag (1 − cos(π/RIM_POINTS) of the radius).
+            let rims: Vec<DVec3> = c.rims(RIM_POINTS).into_iter().map(to_world).collect();
+            let (bottom, top) = rims.split_at(RIM_POINTS);
+            let segments: Vec<[DVec2; 2]> = (0..RIM_POINTS)
+                .flat_map(|k| {
+                    let l = (k + 1) % RIM_POINTS;
+                    let mut cut = triangle_section(proj, [bottom[k], bottom[l], top[k]]);
+                    cut.extend(triangle_section(proj, [bottom[l], top[l], top[k]]));
+                    cut
                 })
                 .collect();
             (!segments.is_empty()).then_some(Outline::Segments { segments })
@@ -249,13 +265,10 @@ fn inside_2d(outline: &Outline, p: DVec2, q: DVec2) -> Vec<[f64; 2]> {
 }
 
 /// Where the 3D segment `a → b` is inside the solid, as parameter intervals in
-/// `[0, 1]`: between the entering and the leaving root. Triangles, meshes and
-/// polygons are surfaces and hold nothing.
+/// `[0, 1]`: between the entering and the leaving root. Triangles, meshes,
+/// polygons and open cones are surfaces and hold nothing.
 fn inside_3d(object: &Object, a: DVec3, b: DVec3) -> Vec<[f64; 2]> {
-    if matches!(
-        object.shape,
-        Shape::Triangle(_) | Shape::Mesh(_) | Shape::Polygon(_)
-    ) {
+    if !object.shape.is_solid() {
         return Vec::new();
     }
     let roots = object.roots(&Ray::new(a, b - a), crate::methods::SphereMethod::Stable);
