@@ -17,7 +17,6 @@ use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
 
-use crate::geometry::cone::cone_placement;
 use crate::geometry::cuboid::Cuboid;
 use crate::geometry::mesh::Mesh;
 use crate::geometry::object::{Object, Shape};
@@ -28,9 +27,10 @@ use crate::geometry::triangle::Triangle;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
+use crate::scene::cone_file;
 use crate::scene::format::{
-    BoxFile, CellSize, ConeFile, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root,
-    SceneFile, SphereFile, TransformStep, TriangleFile,
+    BoxFile, CellSize, LightFile, MaterialFile, MeshFile, ObjectFile, PlaneFile, Root, SceneFile,
+    SphereFile, TransformStep, TriangleFile,
 };
 use crate::scene::light::PointLight;
 use crate::scene::limits;
@@ -383,34 +383,14 @@ impl Builder<'_> {
             (None, None, Some(b), None, None, None) => own(self.cuboid(i, b)),
             (None, None, None, Some(t), None, None) => own(self.triangle(i, t)),
             (None, None, None, None, Some(m), None) => own(self.mesh(i, m)),
-            (None, None, None, None, None, Some(c)) => self.cone(i, c),
+            (None, None, None, None, None, Some(c)) => cone_file::placed(i, c)
+                .map(|(cone, m)| (Shape::Cone(cone), Some(m)))
+                .map_err(|(field, message)| self.invalid(field, message)),
             _ => Err(self.invalid(
                 format_args!("objects[{i}]"),
                 "give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\", \"mesh\" or \"cone\"",
             )),
         }
-    }
-
-    /// The unit cone and the map placing it between its two ends, made as
-    /// [`crate::geometry::cone::cone_object`] makes it; its numbers within
-    /// the limits first.
-    fn cone(&self, i: usize, c: &ConeFile) -> Result<(Shape, Option<DAffine3>), SceneError> {
-        let at = |f: &str| format!("objects[{i}].cone.{f}");
-        let base = self.check(at("base"), c.base, limits::point)?;
-        let apex = self.check(at("apex"), c.apex, limits::point)?;
-        let radius =
-            |f: &str, r: f64| self.check(at(f), r, |r| limits::within(r, 0.0, limits::MAX_LENGTH));
-        let base_radius = radius("base_radius", c.base_radius)?;
-        let apex_radius = radius("apex_radius", c.apex_radius)?;
-        let (cone, m) = cone_placement(base, base_radius, apex, apex_radius).map_err(|e| {
-            let field = if e.field.is_empty() {
-                format!("objects[{i}].cone")
-            } else {
-                at(e.field)
-            };
-            self.invalid(field, e.message)
-        })?;
-        Ok((Shape::Cone(cone), Some(m)))
     }
 
     fn sphere(&self, i: usize, s: &SphereFile) -> Result<Shape, SceneError> {
