@@ -11,18 +11,23 @@ pub fn scene(json: &str) -> Scene {
 
 /// The shipped scenes, by file name.
 pub fn shipped() -> Vec<(&'static str, Scene)> {
-    ["whitted.json", "nested.json", "ellipsoids.json"]
-        .into_iter()
-        .map(|name| {
-            let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-                .join("scenes")
-                .join(name);
-            (
-                name,
-                raytree::scene::loader::load(&path).unwrap_or_else(|e| panic!("{e}")),
-            )
-        })
-        .collect()
+    [
+        "whitted.json",
+        "nested.json",
+        "ellipsoids.json",
+        "cones.json",
+    ]
+    .into_iter()
+    .map(|name| {
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("scenes")
+            .join(name);
+        (
+            name,
+            raytree::scene::loader::load(&path).unwrap_or_else(|e| panic!("{e}")),
+        )
+    })
+    .collect()
 }
 
 /// Keeps every event of interest, flat, in the order the tracer sent them.

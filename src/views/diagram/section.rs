@@ -319,6 +319,43 @@ mod tests {
     }
 
     #[test]
+    fn a_cone_is_cut_along_its_two_side_lines_and_outlined_by_its_hull() {
+        // A pointed cone standing on the plane y = 0, radius 1, tip at (0, 2, 0):
+        // the plane z = 0 cuts it along |x| = 1 − y/2, and seen from the front
+        // its outline is the triangle (−1, 0), (1, 0), (0, 2).
+        let cone = crate::geometry::cone::cone_object(
+            "c".into(),
+            DVec3::ZERO,
+            1.0,
+            DVec3::new(0.0, 2.0, 0.0),
+            0.0,
+            0,
+        )
+        .unwrap();
+        let Some(Outline::Segments { segments }) = cross_section(&front(), &cone) else {
+            panic!("a cone's cut is drawn");
+        };
+        let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
+        for p in segments.iter().flatten() {
+            // Tolerance: on the side lines up to rounding (the cut runs through
+            // rim points), a few ULPs of 2.
+            assert!((p.x.abs() - (1.0 - p.y / 2.0)).abs() < 1e-12, "{p}");
+            (low, high) = (low.min(p.y), high.max(p.y));
+        }
+        assert!(
+            low.abs() < 1e-12 && (high - 2.0).abs() < 1e-12,
+            "{low} {high}"
+        );
+        let Outline::Polygon { points } = front().outline(&cone) else {
+            panic!("a cone's outline is its hull");
+        };
+        let (lo, hi) = Outline::Polygon { points }.bounds().unwrap();
+        // Tolerance: a few ULPs; the rims' points include φ = 0 and π.
+        assert!(lo.abs_diff_eq(DVec2::new(-1.0, 0.0), 1e-12), "{lo}");
+        assert!(hi.abs_diff_eq(DVec2::new(1.0, 2.0), 1e-12), "{hi}");
+    }
+
+    #[test]
     fn a_ray_over_a_sphere_it_does_not_enter_passes_it() {
         // The ball of radius 1 at (0, 0, -5); a ray along x at z = 0 crosses its
         // silhouette (x in [-1, 1]) but never enters it.

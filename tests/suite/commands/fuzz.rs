@@ -53,10 +53,15 @@ const OBJ_SEEDS: [&str; 3] = [
 
 fn scene_seeds() -> Vec<Value> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
-    let mut seeds: Vec<Value> = ["whitted.json", "nested.json", "ellipsoids.json"]
-        .iter()
-        .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
-        .collect();
+    let mut seeds: Vec<Value> = [
+        "whitted.json",
+        "nested.json",
+        "ellipsoids.json",
+        "cones.json",
+    ]
+    .iter()
+    .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
+    .collect();
     seeds.push(serde_json::from_str(&generate::random_spheres(12, 1)).unwrap());
     seeds.push(serde_json::from_str(&generate::icosphere_scene("n.obj", 80)).unwrap());
     seeds.push(json!({

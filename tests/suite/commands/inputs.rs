@@ -249,9 +249,82 @@ fn numbers_outside_the_limits_and_left_handed_frames_are_refused() {
     assert!(scene.is_ok());
 }
 
+/// A cone's fields, each refused in one line naming it, by `raytree render`
+/// (exit 1): what the loader checks against the limits, then what
+/// `cone_object` refuses, named as the cone's own.
+#[test]
+fn a_bad_cone_is_refused_naming_its_field() {
+    let cone = |fields: &str| format!(r#"{{"objects": [{{"cone": {{{fields}}}}}]}}"#);
+    let cases = [
+        (
+            "cone-missing-radius",
+            cone(r#""base": [0, 0, 0], "base_radius": 1, "apex": [0, 1, 0]"#),
+            "objects[0].cone: missing field `apex_radius`",
+        ),
+        (
+            "cone-unknown-field",
+            cone(r#""base": [0, 0, 0], "radius": 1, "apex": [0, 1, 0], "apex_radius": 1"#),
+            "objects[0].cone.radius: unknown field `radius`",
+        ),
+        (
+            "cone-negative-radius",
+            cone(r#""base": [0, 0, 0], "base_radius": -1, "apex": [0, 1, 0], "apex_radius": 1"#),
+            ": objects[0].cone.base_radius: must be from 0 to 1e9, got -1",
+        ),
+        (
+            "cone-huge-radius",
+            cone(r#""base": [0, 0, 0], "base_radius": 1, "apex": [0, 1, 0], "apex_radius": 1e10"#),
+            ": objects[0].cone.apex_radius: must be from 0 to 1e9, got 1e10",
+        ),
+        (
+            "cone-far-apex",
+            cone(r#""base": [0, 0, 0], "base_radius": 1, "apex": [0, 2e9, 0], "apex_radius": 1"#),
+            ": objects[0].cone.apex: every coordinate must be within ±1e9, got [0, 2e9, 0]",
+        ),
+        (
+            "cone-both-radii-zero",
+            cone(r#""base": [0, 0, 0], "base_radius": 0, "apex": [0, 1, 0], "apex_radius": 0"#),
+            ": objects[0].cone: base_radius and apex_radius are both 0: the cone would be a line",
+        ),
+        (
+            "cone-no-length",
+            cone(r#""base": [1, 2, 3], "base_radius": 1, "apex": [1, 2, 3], "apex_radius": 0.5"#),
+            ": objects[0].cone: base and apex are the same point: the cone would have no length",
+        ),
+        (
+            "cone-too-thin-to-invert",
+            cone(r#""base": [0, 0, 0], "base_radius": 1e-300, "apex": [0, 1, 0], "apex_radius": 0"#),
+            ": objects[0].cone: radius 1e-300 over a length of 1 is too extreme: its transform cannot be inverted",
+        ),
+        (
+            "cone-too-thin",
+            cone(r#""base": [0, 0, 0], "base_radius": 1e-15, "apex": [0, 1, 0], "apex_radius": 0"#),
+            ": objects[0].cone: scales or moves too far",
+        ),
+        (
+            "cone-and-sphere",
+            r#"{"objects": [{"sphere": {}, "cone": {"base": [0, 0, 0], "base_radius": 1, "apex": [0, 1, 0], "apex_radius": 1}}]}"#.to_owned(),
+            ": objects[0]: give exactly one shape: \"sphere\", \"plane\", \"box\", \"triangle\", \"mesh\", \"polygon\" or \"cone\"",
+        ),
+        (
+            "cone-moved-too-far-by-its-transform",
+            r#"{"objects": [{"cone": {"base": [0, 0, 0], "base_radius": 1, "apex": [0, 1, 0], "apex_radius": 1}, "transform": [{"scale": [1e-9, 1e-9, 1e-9]}, {"translate": [1e9, 0, 0]}]}]}"#.to_owned(),
+            ": objects[0].transform: scales or moves too far",
+        ),
+    ];
+    for (name, text, expected) in cases {
+        let e = scene_refused(name, &text);
+        assert!(e.contains(expected), "{name}: {e}");
+        assert!(!e.trim_end().contains('\n'), "{name}: one line: {e}");
+    }
+}
+
 /// Every number at the edge of its range at once: the eye in a corner of a
 /// mirror box 2e9 wide, lights of 1e6 and every coefficient at 1e6, a sphere
-/// of radius 1e-9 beside one of 1e9, indices 0.01 and 100, the deepest
+/// of radius 1e-9 beside one of 1e9, a cone as wide as the box and one as
+/// thin as the thinnest sphere (near the origin: a cone's inverse transform
+/// grows with its distance from the origin over its radius, and its entries
+/// must stay within 1e12), indices 0.01 and 100, the deepest
 /// recursion and the widest view. One sample a pixel: at depth 1000 under the
 /// default cutoff a sample may trace 1,014,783 rays, and a trace holds at most
 /// 1,048,576 (`trace_check::MAX_TRACE_RAYS`), so four would not be recorded.
@@ -276,7 +349,9 @@ const EXTREME: &str = r#"{
         {"sphere": {"center": [9.99e8, 9.99e8, 9.98e8], "radius": 1e-9}, "material": "thin"},
         {"sphere": {}, "material": "thin", "transform": [{"scale": [1e6, 1e-6, 1]}, {"rotate": {"axis": [1, 1, 1], "degrees": 1e9}}, {"translate": [1e5, 1e5, 1e5]}]},
         {"plane": {"point": [1e9, 1e9, 1e9], "normal": [1e-9, 1, 1e9]}, "material": "dense"},
-        {"triangle": {"vertices": [[1e9, -1e9, 0], [-1e9, 1e9, 0], [1e9, 1e9, 1e-9]]}, "material": "thin"}
+        {"triangle": {"vertices": [[1e9, -1e9, 0], [-1e9, 1e9, 0], [1e9, 1e9, 1e-9]]}, "material": "thin"},
+        {"cone": {"base": [-1e9, -1e9, -1e9], "base_radius": 1e9, "apex": [1e9, 1e9, 1e9], "apex_radius": 0}, "material": "mirror"},
+        {"cone": {"base": [1, 1, 1], "base_radius": 1e-9, "apex": [1, 1, 1.000000001], "apex_radius": 1e-9}, "material": "thin"}
     ]
 }"#;
 

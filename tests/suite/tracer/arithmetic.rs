@@ -39,6 +39,8 @@ fn traces() -> Vec<(String, Scene, TraceDocument)> {
         ),
         ("ellipsoids.json", vec![(320, 240), (250, 200), (400, 180)]),
         ("nested.json", vec![(320, 240), (300, 200)]),
+        // The horn from inside through its open end, the pillar, the spire.
+        ("cones.json", vec![(540, 280), (130, 200), (320, 150)]),
     ] {
         let s = scene(name);
         for (x, y) in pixels {
@@ -197,26 +199,95 @@ fn the_quadratic_and_the_inverse_transformed_ray_agree_with_the_scene() {
 }
 
 #[test]
+fn the_cone_quadratic_agrees_with_the_scene_and_keeps_the_roots_between_its_ends() {
+    let seen: [std::cell::Cell<u32>; 3] = Default::default();
+    each_node(|at, scene, _, _, node| {
+        for test in &node.tests {
+            let Shape::Cone(cone) = &scene.objects[test.object].shape else {
+                continue;
+            };
+            let r = test.object_ray.expect("a cone is placed by a transform");
+            let Some(Arithmetic::ConeQuadratic {
+                ratio,
+                a,
+                b,
+                c,
+                discriminant,
+                crossings,
+                ..
+            }) = &test.arithmetic
+            else {
+                panic!("{at}: a cone test records its quadratic");
+            };
+            assert_eq!(*ratio, cone.ratio, "{at}");
+            // A, B, C of x² + y² = (1 + kz)², k = s − 1, written out by hand
+            // from S' + t·c'.
+            let (s, d, k) = (r.origin, r.direction, ratio - 1.0);
+            let w = 1.0 + k * s.z;
+            let a2 = d.x * d.x + d.y * d.y - k * k * d.z * d.z;
+            let b2 = s.x * d.x + s.y * d.y - w * k * d.z;
+            let c2 = s.x * s.x + s.y * s.y - w * w;
+            // Tolerance: the same sums in another order, a few ULPs of their terms.
+            assert!(
+                close(*a, a2, 1e-13) && close(*b, b2, 1e-12) && close(*c, c2, 1e-12),
+                "{at}: A, B, C"
+            );
+            assert!(
+                close(*discriminant, b2 * b2 - a2 * c2, 1e-9),
+                "{at}: B² − AC"
+            );
+            // Each crossing solves the quadratic (relative to its terms' size)
+            // at the height recorded; those between the ends are the roots.
+            for x in crossings {
+                let f = a2 * x.t * x.t + 2.0 * b2 * x.t + c2;
+                let size = (a2 * x.t * x.t).abs() + (2.0 * b2 * x.t).abs() + c2.abs();
+                assert!(f.abs() <= 1e-9 * size.max(1.0), "{at}: {f} at t = {}", x.t);
+                assert!(close(x.z, s.z + x.t * d.z, 1e-15), "{at}: z");
+            }
+            let kept: Vec<f64> = crossings
+                .iter()
+                .filter(|x| (0.0..=1.0).contains(&x.z))
+                .map(|x| x.t)
+                .collect();
+            let roots: Vec<f64> = test.roots.iter().map(|r| r.t).collect();
+            assert_eq!(roots, kept, "{at}");
+            seen[roots.len()].set(seen[roots.len()].get() + 1);
+        }
+    });
+    // Among them: a cone missed, one met once (the other crossing off an
+    // end: the horn seen through its open end), one met twice.
+    assert!(seen.iter().all(|n| n.get() > 0), "{seen:?}");
+}
+
+#[test]
 fn normals_come_back_through_the_inverse_transpose() {
     each_node(|at, scene, _, _, node| {
         let Some(hit) = &node.hit else { return };
         let object = &scene.objects[hit.object];
-        let (Some(tf), Shape::Sphere(sphere)) = (&object.transform, &object.shape) else {
+        let (Some(tf), Shape::Sphere(_) | Shape::Cone(_)) = (&object.transform, &object.shape)
+        else {
             assert!(
                 hit.object_normal.is_none() && hit.normal_like_point.is_none(),
                 "{at}"
             );
             return;
         };
-        // On the untransformed sphere the outward normal points from its center to P'.
         let p = hit.object_point.expect("a transformed hit records P'");
         let n = hit.object_normal.expect("a transformed hit records n'");
         let like_point = hit.normal_like_point.expect("and M·n'");
+        // On the untransformed sphere the outward normal points from its center
+        // to P'; on the unit cone it is the gradient of x² + y² − (1 + kz)²,
+        // k = s − 1: (x, y, −k(1 + kz)).
+        let want = match &object.shape {
+            Shape::Sphere(sphere) => (p - sphere.center) / sphere.radius,
+            Shape::Cone(cone) => {
+                let k = cone.ratio - 1.0;
+                DVec3::new(p.x, p.y, -k * (1.0 + k * p.z))
+            }
+            _ => unreachable!("matched above"),
+        };
         // Tolerance: P' is M⁻¹ of a rounded point; a few ULPs of 1 after normalizing.
-        assert!(
-            (n - ((p - sphere.center) / sphere.radius).normalize()).length() < 1e-12,
-            "{at}: n'"
-        );
+        assert!((n - want.normalize()).length() < 1e-12, "{at}: n'");
         let m = tf.to_world.matrix3;
         let right = (m.inverse().transpose() * n).normalize();
         assert!((hit.normal - right).length() < 1e-12, "{at}: N = (M⁻¹)ᵀn'");
@@ -668,4 +739,42 @@ fn the_hit_point_printed_is_s_plus_t_c_and_then_the_point_projected_onto_the_sph
     // Tolerance: a normalisation, a few ULPs of a unit vector.
     assert!((hit.point - hit.on_ray.normalize()).length() < 1e-15);
     assert!(hit.on_ray.length() < 0.998, "S + t·c lies inside the ball");
+}
+
+/// The text trace writes a cone's quadratic out and says which crossings fell
+/// off its open ends: the horn seen through its wide end, a cylinder (the
+/// pillar) in its shorter form, and a ray along the pillar's axis.
+#[test]
+fn the_text_trace_says_which_crossings_of_a_cone_are_off_its_ends() {
+    let s = scene("cones.json");
+    let horn = record::pixel(&s, source(), 540, 280, None).unwrap();
+    let text = raytree::views::text::format(&horn, false);
+    for want in [
+        "test cone 'horn': B² − AC = ",
+        "> 0: two roots, t = (−B ± √(B² − AC))/A: t = ",
+        "(below the open end z = 0: not on the cone), t = ",
+        "(the closest hit)",
+        "the unit cone x² + y² = (1 + (s − 1)z)², 0 ≤ z ≤ 1, open at both ends, radius 1 at z = 0 and s = 0.4167 at z = 1",
+        "A = c'x² + c'y² − (s − 1)²c'z² = ",
+        "put at the cone's radius at its height",
+    ] {
+        assert!(text.contains(want), "{want:?} not in\n{text}");
+    }
+    let pillar = record::pixel(&s, source(), 130, 200, None).unwrap();
+    let text = raytree::views::text::format(&pillar, false);
+    for want in [
+        "the unit cylinder x² + y² = 1, 0 ≤ z ≤ 1, open at both ends",
+        "A = c'x² + c'y² = ",
+        "C = S'x² + S'y² − 1 = ",
+        "(farther than the closest hit)",
+    ] {
+        assert!(text.contains(want), "{want:?} not in\n{text}");
+    }
+    // Down the pillar's axis from above: c' = (0, 0, −c), A = B = 0.
+    let down = Ray::new(DVec3::new(-2.2, 5.0, 0.0), DVec3::NEG_Y);
+    let text = raytree::views::text::format(&record::ray(&s, source(), down).unwrap(), false);
+    assert!(
+        text.contains("test cone 'pillar': A = B = 0: the ray runs along the surface's lines and never crosses it: no root"),
+        "{text}"
+    );
 }

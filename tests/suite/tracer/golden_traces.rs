@@ -71,6 +71,10 @@ const GOLDEN: &[Golden] = &[
         args: &["trace", "scenes/polygons.json", "--pixel", "360,200"],
     },
     Golden {
+        name: "cones-horn-inside",
+        args: &["trace", "scenes/cones.json", "--pixel", "540,280"],
+    },
+    Golden {
         name: "nested-ray-to-core",
         args: &[
             "trace",
@@ -279,6 +283,19 @@ fn golden_traces_show_what_they_are_named_for() {
 
     assert!(root_node(&load("whitted-miss")).hit.is_none());
     assert_eq!(load("whitted-glass-edge-4spp").samples.len(), 4);
+    // Through the horn's wide open end onto its inner side: the crossing
+    // before the open end is no root, the one inside is the hit, met from inside.
+    let horn = root_node(&load("cones-horn-inside"));
+    let hit = horn.hit.as_ref().unwrap();
+    assert_eq!(hit.name, "horn");
+    assert!(hit.normal.dot(horn.direction) > 0.0);
+    let test = horn.tests.iter().find(|t| t.name == "horn").unwrap();
+    let Some(raytree::tree::arithmetic::Arithmetic::ConeQuadratic { crossings, .. }) =
+        &test.arithmetic
+    else {
+        panic!("the horn's test records its quadratic")
+    };
+    assert!(crossings.len() == 2 && crossings[0].z < 0.0 && test.roots.len() == 1);
     assert!(
         load("nested-ray-to-core").samples[0]
             .tree

@@ -274,8 +274,12 @@ fn every_field_is_documented() {
     let mut shallow = scene.clone();
     shallow.settings.max_depth = 2;
     traces.push(raytree::tree::record::pixel(&shallow, src.clone(), 416, 209, None).unwrap());
-    // Transformed spheres, a mesh, a box, a triangle and a polygon: every kind of test.
-    for (name, x, y) in [("ellipsoids.json", 320, 240), ("gaspra.json", 320, 240)] {
+    // Transformed spheres, a mesh, a cone, a box, a triangle and a polygon: every kind of test.
+    for (name, x, y) in [
+        ("ellipsoids.json", 320, 240),
+        ("gaspra.json", 320, 240),
+        ("cones.json", 540, 280),
+    ] {
         let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
             .join("scenes")
             .join(name);
@@ -319,6 +323,8 @@ fn every_field_is_documented() {
         "parallel",
         "barycentric",
         "face",
+        "cone_quadratic",
+        "onto_cone",
         "chosen",
         "farther",
         "behind",
@@ -344,7 +350,7 @@ fn collect(v: &serde_json::Value, keys: &mut BTreeSet<String>, tags: &mut BTreeS
         serde_json::Value::Object(map) => {
             for (k, v) in map {
                 keys.insert(k.clone());
-                let enum_like = ["kind", "outcome", "fate", "method", "t_unit"];
+                let enum_like = ["kind", "outcome", "fate", "method", "t_unit", "placement"];
                 if let (Some(s), true) = (v.as_str(), enum_like.contains(&k.as_str())) {
                     tags.insert(s.to_owned());
                 }
