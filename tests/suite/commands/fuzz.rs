@@ -53,10 +53,15 @@ const OBJ_SEEDS: [&str; 3] = [
 
 fn scene_seeds() -> Vec<Value> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
-    let mut seeds: Vec<Value> = ["whitted.json", "nested.json", "ellipsoids.json"]
-        .iter()
-        .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
-        .collect();
+    let mut seeds: Vec<Value> = [
+        "whitted.json",
+        "nested.json",
+        "ellipsoids.json",
+        "polygons.json",
+    ]
+    .iter()
+    .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
+    .collect();
     seeds.push(serde_json::from_str(&generate::random_spheres(12, 1)).unwrap());
     seeds.push(serde_json::from_str(&generate::icosphere_scene("n.obj", 80)).unwrap());
     seeds.push(json!({
@@ -67,7 +72,9 @@ fn scene_seeds() -> Vec<Value> {
         "objects": [
             {"mesh": {"file": "m.obj", "smooth": false}, "material": "m"},
             {"box": {"min": [-1, -1, -1], "max": [0, 0, 0]}, "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 30}}, {"rotate_x": 10}, {"scale": [1, 2, 3]}]},
-            {"triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}
+            {"triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}},
+            {"polygon": {"vertices": [[0, 0, 1], [1, 0, 1], [1, 1, 1], [0.5, 0.2, 1], [0, 1, 1]], "one_sided": true}},
+            {"polygon": {"vertices": [[0, 0, -1], [1, 0, -1], [0, 1, -1]], "normals": [[0, 0, 1], [0, 1, 1], [1, 0, 1]]}, "transform": [{"scale": [1, 2, 3]}]}
         ]
     }));
     seeds

@@ -276,7 +276,8 @@ const EXTREME: &str = r#"{
         {"sphere": {"center": [9.99e8, 9.99e8, 9.98e8], "radius": 1e-9}, "material": "thin"},
         {"sphere": {}, "material": "thin", "transform": [{"scale": [1e6, 1e-6, 1]}, {"rotate": {"axis": [1, 1, 1], "degrees": 1e9}}, {"translate": [1e5, 1e5, 1e5]}]},
         {"plane": {"point": [1e9, 1e9, 1e9], "normal": [1e-9, 1, 1e9]}, "material": "dense"},
-        {"triangle": {"vertices": [[1e9, -1e9, 0], [-1e9, 1e9, 0], [1e9, 1e9, 1e-9]]}, "material": "thin"}
+        {"triangle": {"vertices": [[1e9, -1e9, 0], [-1e9, 1e9, 0], [1e9, 1e9, 1e-9]]}, "material": "thin"},
+        {"polygon": {"vertices": [[1e9, -1e9, 1e9], [1e9, 1e9, 1e9], [-1e9, 1e9, 1e9], [0, 0, 1e9], [-1e9, -1e9, 1e9]], "normals": [[1e-9, 1, 1e9], [1e9, 1e9, 1e9], [-1e9, 0, 1e-9], [0, 0, -1], [1, 1e9, 0]]}, "material": "dense"}
     ]
 }"#;
 
