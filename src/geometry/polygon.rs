@@ -125,7 +125,7 @@ impl Polygon {
         }
         let (e1, e2) = (vertices[1] - vertices[0], vertices[2] - vertices[0]);
         let cross = e1.cross(e2);
-        if !(cross.length() > COLLINEAR_SINE * e1.length() * e2.length()) {
+        if cross.length() <= COLLINEAR_SINE * e1.length() * e2.length() || !cross.is_finite() {
             return Err(
                 "vertices[0], vertices[1] and vertices[2] lie on one line: they give the polygon no plane"
                     .to_owned(),

@@ -24,6 +24,7 @@ use crate::scene::camera_file;
 use crate::scene::format::{CellSize, LightFile, MaterialFile, Root, SceneFile};
 use crate::scene::light::PointLight;
 use crate::scene::limits;
+use crate::scene::names::name_ok;
 use crate::scene::overrides::Overrides;
 use crate::scene::settings::RenderSettings;
 use crate::scene::strict;
@@ -346,18 +347,5 @@ impl Builder<'_> {
             position,
             color,
         })
-    }
-}
-
-/// A name shown in traces, errors and the terminal: no control characters,
-/// which a terminal would obey (`\u{1b}[2J` clears the screen).
-pub(super) fn name_ok(name: &str) -> Result<(), String> {
-    match name.chars().find(|c| c.is_control()) {
-        Some(c) => Err(format!(
-            "'{}' holds a control character ({}); names must be printable",
-            name.escape_debug(),
-            c.escape_unicode()
-        )),
-        None => Ok(()),
     }
 }

@@ -9,6 +9,7 @@ pub mod format; // the scene file's shape, as serde reads it
 pub mod strict; // JSON objects only, each name once
 pub mod limits; // the ranges that keep every computed number finite
 pub mod camera_file; // the camera block, checked (right-handed frames only)
+pub mod names; // names printable, mesh files within the scene's folder
 pub mod loader; // the scene file, checked, into a Scene
 mod object_file; // its objects: shapes, transforms, mesh files
 pub mod obj; // OBJ meshes

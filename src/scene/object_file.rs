@@ -3,7 +3,6 @@
 //! placing it, and the mesh files it reads, only from the scene's folder.
 //! Part of [`crate::scene::loader`], whose `Builder` it extends.
 
-use std::path::Path;
 use std::sync::Arc;
 
 use glam::{DAffine3, DVec3};
@@ -21,7 +20,8 @@ use crate::scene::format::{
     TriangleFile,
 };
 use crate::scene::limits;
-use crate::scene::loader::{Builder, SceneError, name_ok};
+use crate::scene::loader::{Builder, SceneError};
+use crate::scene::names::{name_ok, within};
 
 impl Builder<'_> {
     pub(super) fn object(
@@ -268,52 +268,5 @@ impl Builder<'_> {
                 DAffine3::from_axis_angle(axis, angle("rotate.degrees", r.degrees)?)
             }
         })
-    }
-}
-
-/// A mesh's `file` stays in the scene's folder `dir` or below it: no `..`
-/// above the folder, no absolute path or symlink that resolves out of it (the
-/// deepest part of the path that exists is resolved). A path out is refused whether or not
-/// its file exists, so a scene cannot probe the machine's files.
-fn within(dir: &Path, file: &str) -> Result<(), String> {
-    use std::path::Component;
-    let leaves = || {
-        Err(format!(
-            "'{file}' leaves the scene's folder (a mesh is read from the scene's folder or one below it)"
-        ))
-    };
-    // A relative path climbing above the folder, by its words alone (an
-    // absolute path is judged by where it resolves, below).
-    let mut depth = 0usize;
-    for part in Path::new(file).components() {
-        match part {
-            Component::Normal(_) => depth += 1,
-            Component::ParentDir if depth > 0 => depth -= 1,
-            Component::ParentDir => return leaves(),
-            Component::CurDir | Component::RootDir | Component::Prefix(_) => {}
-        }
-    }
-    let dir = if dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        dir
-    };
-    let Ok(root) = std::fs::canonicalize(dir) else {
-        return Ok(());
-    };
-    let path = dir.join(file);
-    let mut part: &Path = &path;
-    loop {
-        if let Ok(real) = std::fs::canonicalize(part) {
-            return if real.starts_with(&root) {
-                Ok(())
-            } else {
-                leaves()
-            };
-        }
-        match part.parent() {
-            Some(up) => part = up,
-            None => return Ok(()),
-        }
     }
 }

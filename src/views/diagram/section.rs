@@ -378,4 +378,51 @@ mod tests {
         let to_surface = (DVec3::new(-4.0, 0.0, -5.0), DVec3::new(-1.0, 0.0, -5.0));
         assert!(passing(&front(), &b, to_surface).is_empty());
     }
+
+    #[test]
+    fn the_plane_cuts_a_non_convex_polygon_in_two_pieces() {
+        // A U lying on y = 0 (its arms along z from x in [0, 1] and [2, 3],
+        // joined by z in [-3, -2]), its arms' ends at z = 1: the front plane
+        // z = 0 cuts the arms only, x from 0 to 1 and from 2 to 3 at y = 0.
+        let at = |x: f64, z: f64| DVec3::new(x, 0.0, z);
+        let u = [
+            at(0., 1.),
+            at(0., -3.),
+            at(3., -3.),
+            at(3., 1.),
+            at(2., 1.),
+            at(2., -2.),
+            at(1., -2.),
+            at(1., 1.),
+        ];
+        let polygon = crate::geometry::polygon::Polygon::new(u.to_vec(), None, false).unwrap();
+        let object = Object {
+            name: "u".into(),
+            shape: Shape::Polygon(std::sync::Arc::new(polygon)),
+            transform: None,
+            material: 0,
+        };
+        let Some(Outline::Segments { mut segments }) = cross_section(&front(), &object) else {
+            panic!("no cut")
+        };
+        for s in &mut segments {
+            s.sort_by(|a, b| a.x.total_cmp(&b.x));
+        }
+        segments.sort_by(|a, b| a[0].x.total_cmp(&b[0].x));
+        // Each end is a vertex's x (the edges cross z = 0 at their middles, exactly).
+        let [x0, x1] = [DVec2::new(0.0, 0.0), DVec2::new(1.0, 0.0)];
+        let [x2, x3] = [DVec2::new(2.0, 0.0), DVec2::new(3.0, 0.0)];
+        assert_eq!(segments, vec![[x0, x1], [x2, x3]]);
+        // Moved behind the plane, it is not cut.
+        let behind = Object {
+            transform: Some(Box::new(
+                crate::geometry::transform::Transform::new(glam::DAffine3::from_translation(
+                    DVec3::new(0.0, 0.0, -5.0),
+                ))
+                .unwrap(),
+            )),
+            ..object
+        };
+        assert!(cross_section(&front(), &behind).is_none());
+    }
 }

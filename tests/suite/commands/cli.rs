@@ -177,6 +177,41 @@ fn each_validation_error_names_its_field() {
             "objects[0].triangle.vertices: must be three points not on one line",
         ),
         (
+            "two-vertex-polygon",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0]]}}]}"#,
+            "objects[0].polygon.vertices: give at least 3 vertices, got 2",
+        ),
+        (
+            "far-polygon-vertex",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [2e9, 1, 0]]}}]}"#,
+            "objects[0].polygon.vertices[2]: every coordinate must be within ±1e9",
+        ),
+        (
+            "line-polygon",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 1, 1], [2, 2, 2], [0, 1, 0]]}}]}"#,
+            "objects[0].polygon: vertices[0], vertices[1] and vertices[2] lie on one line",
+        ),
+        (
+            "bent-polygon",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]}}]}"#,
+            "objects[0].polygon: vertices[3] lies 5e-1 off the plane of the first three",
+        ),
+        (
+            "patch-normals-count",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "normals": [[0, 0, 1]]}}]}"#,
+            "objects[0].polygon.normals: give one normal per vertex: 3 vertices, 1 normals",
+        ),
+        (
+            "patch-zero-normal",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "normals": [[0, 0, 1], [0, 0, 0], [0, 0, 1]]}}]}"#,
+            "objects[0].polygon.normals[1]: must not be zero",
+        ),
+        (
+            "polygon-and-triangle",
+            r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}, "triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}]}"#,
+            "objects[0]: give exactly one shape",
+        ),
+        (
             "unknown-material",
             r#"{"materials": {"glass": {}}, "objects": [{"sphere": {}, "material": "glas"}]}"#,
             "objects[0].material: no material named 'glas' (defined: glass)",

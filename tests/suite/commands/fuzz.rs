@@ -58,6 +58,7 @@ fn scene_seeds() -> Vec<Value> {
         "nested.json",
         "ellipsoids.json",
         "cones.json",
+        "polygons.json",
     ]
     .iter()
     .map(|f| serde_json::from_str(&std::fs::read_to_string(root.join(f)).unwrap()).unwrap())
@@ -72,7 +73,9 @@ fn scene_seeds() -> Vec<Value> {
         "objects": [
             {"mesh": {"file": "m.obj", "smooth": false}, "material": "m"},
             {"box": {"min": [-1, -1, -1], "max": [0, 0, 0]}, "transform": [{"rotate": {"axis": [0, 1, 0], "degrees": 30}}, {"rotate_x": 10}, {"scale": [1, 2, 3]}]},
-            {"triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}}
+            {"triangle": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}},
+            {"polygon": {"vertices": [[0, 0, 1], [1, 0, 1], [1, 1, 1], [0.5, 0.2, 1], [0, 1, 1]], "one_sided": true}},
+            {"polygon": {"vertices": [[0, 0, -1], [1, 0, -1], [0, 1, -1]], "normals": [[0, 0, 1], [0, 1, 1], [1, 0, 1]]}, "transform": [{"scale": [1, 2, 3]}]}
         ]
     }));
     seeds

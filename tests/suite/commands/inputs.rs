@@ -351,7 +351,8 @@ const EXTREME: &str = r#"{
         {"plane": {"point": [1e9, 1e9, 1e9], "normal": [1e-9, 1, 1e9]}, "material": "dense"},
         {"triangle": {"vertices": [[1e9, -1e9, 0], [-1e9, 1e9, 0], [1e9, 1e9, 1e-9]]}, "material": "thin"},
         {"cone": {"base": [-1e9, -1e9, -1e9], "base_radius": 1e9, "apex": [1e9, 1e9, 1e9], "apex_radius": 0}, "material": "mirror"},
-        {"cone": {"base": [1, 1, 1], "base_radius": 1e-9, "apex": [1, 1, 1.000000001], "apex_radius": 1e-9}, "material": "thin"}
+        {"cone": {"base": [1, 1, 1], "base_radius": 1e-9, "apex": [1, 1, 1.000000001], "apex_radius": 1e-9}, "material": "thin"},
+        {"polygon": {"vertices": [[1e9, -1e9, 1e9], [1e9, 1e9, 1e9], [-1e9, 1e9, 1e9], [0, 0, 1e9], [-1e9, -1e9, 1e9]], "normals": [[1e-9, 1, 1e9], [1e9, 1e9, 1e9], [-1e9, 0, 1e-9], [0, 0, -1], [1, 1e9, 0]]}, "material": "dense"}
     ]
 }"#;
 

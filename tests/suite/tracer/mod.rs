@@ -6,6 +6,7 @@ mod arithmetic;
 mod forward;
 mod golden_traces;
 mod media;
+mod polygons;
 mod povray;
 mod ray_tree;
 mod recent;
