@@ -158,7 +158,7 @@ impl<'s> Tracer<'s> {
         let Some(found) = self.closest_hit(&start.ray, start.t_min, start.t_max, rec) else {
             return self.background(rec);
         };
-        let (hit, surface) = self.hit_at(&start.ray, found, media);
+        let (hit, surface, beyond) = self.hit_at(&start.ray, found, media);
         crate::record!(rec.hit(&hit));
         let material = self.scene.material_of(hit.object);
         // color_local = ambient + what each light's shadow ray lets through.
@@ -175,7 +175,6 @@ impl<'s> Tracer<'s> {
         // color_reflect = raytrace(reflected ray).
         let reflected = self.spawn(RayKind::Reflected, &shares, start, &surface, *media, rec);
         // color_refract = raytrace(refracted ray), in the media beyond the surface.
-        let beyond = media.crossed(hit.object, hit.entering);
         let refracted = self.spawn(RayKind::Refracted, &shares, start, &surface, beyond, rec);
         // color = color_local + k_rfl·color_reflect + k_rfa·color_refract.
         let color = local + shares.k_rfl * reflected + shares.k_rfa * refracted;
@@ -195,7 +194,8 @@ impl<'s> Tracer<'s> {
     /// this tracer's own intersection code.
     pub fn intersect(&self, ray: &Ray, media: &Media) -> Option<(HitEvent, Surface)> {
         let found = self.closest_hit(ray, 0.0, f64::INFINITY, &mut NoRecorder)?;
-        Some(self.hit_at(ray, found, media))
+        let (hit, surface, _) = self.hit_at(ray, found, media);
+        Some((hit, surface))
     }
 
     /// What a ray that hits nothing returns: the scene's background.
@@ -266,19 +266,20 @@ impl<'s> Tracer<'s> {
         closest.map(|(i, face)| (i, t_closest, face))
     }
 
-    /// The surface at a found hit, which side the ray hit, and the refractive
-    /// indices on either side of it.
+    /// The surface at a found hit, which side the ray hit, the refractive
+    /// indices on either side of it, and the media beyond it.
     #[inline(always)]
     fn hit_at(
         &self,
         ray: &Ray,
         (object, t, face): (usize, f64, u32),
         media: &Media,
-    ) -> (HitEvent, Surface) {
+    ) -> (HitEvent, Surface, Media) {
         let methods = self.scene.settings.intersection_methods();
         let surface = self.scene.objects[object].surface(ray, t, face, methods);
         let inside = media.holds(object);
         let entering = self.enters(object, inside, media, ray.dir.dot(surface.normal));
+        let medium = self.medium_bounded(object, inside, entering, media);
         // The media rule: n₁ is the innermost medium the ray travels in, n₂ the
         // innermost on the far side; so leaving one of two overlapping objects
         // while inside the other changes nothing. A ray leaving an object its
@@ -289,7 +290,8 @@ impl<'s> Tracer<'s> {
         } else {
             self.scene.material_of(object).ior
         };
-        let n2 = ior_of(media.crossed(object, entering).innermost());
+        let beyond = media.crossed(medium, entering);
+        let n2 = ior_of(beyond.innermost());
         // Which side was hit is the geometric normal's business; lighting uses the
         // shading normal (interpolated on smooth meshes), turned the same way.
         let shading_normal = if entering {
@@ -308,7 +310,28 @@ impl<'s> Tracer<'s> {
             n1,
             n2,
         };
-        (hit, surface)
+        (hit, surface, beyond)
+    }
+
+    /// The medium whose boundary the ray crosses at `object`: the object
+    /// itself, but for a surface of separate faces (polygons, triangles) that
+    /// the ray leaves through a face it did not enter by. A closed glass solid
+    /// made of such faces is entered through one and left through another; the
+    /// medium left is the innermost one of the same material on the stack (the
+    /// face the ray came in by), so the ray is back in what was around it.
+    #[inline(always)]
+    fn medium_bounded(&self, object: usize, inside: bool, entering: bool, media: &Media) -> usize {
+        if entering || inside || self.scene.objects[object].shape.is_solid() {
+            return object;
+        }
+        let material = self.scene.objects[object].material;
+        media
+            .as_slice()
+            .iter()
+            .rev()
+            .map(|&o| o as usize)
+            .find(|&o| self.scene.objects[o].material == material)
+            .unwrap_or(object)
     }
 
     /// Whether a ray crossing `object`'s surface with `n·c = n_dot_c` (outward

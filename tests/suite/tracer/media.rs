@@ -232,3 +232,62 @@ fn a_ray_touching_a_glass_ball_from_the_air_enters_it() {
     let out = inner.hit.as_ref().unwrap();
     assert_eq!((out.entering, out.n1, out.n2), (false, 1.5, 1.0));
 }
+
+/// A glass cube of six separate polygons (as the SPD's gears are made): a
+/// ray enters through one face and leaves through another, and there it goes
+/// from glass back into air (n 1.5 → 1), not from glass into glass, so the
+/// exit bends it and reflects part of it (issue 27).
+#[test]
+fn a_solid_of_separate_faces_is_left_through_another_face() {
+    let face =
+        |v: [[f64; 3]; 4]| serde_json::json!({"polygon": {"vertices": v}, "material": "glass"});
+    let faces = vec![
+        face([
+            [-1., -1., -1.],
+            [-1., 1., -1.],
+            [1., 1., -1.],
+            [1., -1., -1.],
+        ]),
+        face([[-1., -1., 1.], [1., -1., 1.], [1., 1., 1.], [-1., 1., 1.]]),
+        face([
+            [-1., -1., -1.],
+            [1., -1., -1.],
+            [1., -1., 1.],
+            [-1., -1., 1.],
+        ]),
+        face([[-1., 1., -1.], [-1., 1., 1.], [1., 1., 1.], [1., 1., -1.]]),
+        face([
+            [-1., -1., -1.],
+            [-1., -1., 1.],
+            [-1., 1., 1.],
+            [-1., 1., -1.],
+        ]),
+        face([[1., -1., -1.], [1., 1., -1.], [1., 1., 1.], [1., -1., 1.]]),
+    ];
+    let scene_json = serde_json::json!({
+        "render": {"weights": "fresnel", "max_depth": 3},
+        "materials": {"glass": {"color": [1, 1, 1], "transparent": 0.9, "ior": 1.5}},
+        "objects": faces,
+    });
+    let s = scene(&scene_json.to_string());
+    let tracer = raytree::trace::tracer::Tracer::new(&s);
+    let mut log = crate::common::Log::default();
+    let ray = raytree::math::ray::Ray::new(
+        glam::DVec3::new(0.2, 0.1, 5.0),
+        glam::DVec3::new(0.1, 0.05, -1.0),
+    );
+    tracer.trace_given(ray, &mut log);
+    // The primary ray enters (air → glass), the refracted ray leaves (glass → air).
+    assert_eq!((log.hits[0].n1, log.hits[0].n2), (1.0, 1.5));
+    assert!(log.hits[0].entering);
+    let exit = log.hits[1];
+    assert!(!exit.entering);
+    assert_eq!((exit.n1, exit.n2), (1.5, 1.0), "leaves the glass into air");
+    // Leaving the glass, the Fresnel reflectance is above 0: a reflected ray too.
+    assert!(
+        log.of_kind(raytree::trace::recorder::RayKind::Reflected)
+            .len()
+            >= 2,
+        "a reflected ray at the entry and at the exit"
+    );
+}
