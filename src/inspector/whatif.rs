@@ -196,7 +196,13 @@ impl WhatIf {
         before: Option<Before>,
     ) -> Result<Arc<Scene>, String> {
         if self.json.is_none() {
-            self.json = Some(skeleton(&read_text(source)?, &source.file)?);
+            let mut text = read_text(source)?;
+            if crate::scene::nff::is_nff(&source.file) {
+                // An NFF scene is edited in its JSON form, which the loader reads.
+                text =
+                    crate::scene::nff::to_json(&text, &source.file).map_err(|e| e.to_string())?;
+            }
+            self.json = Some(skeleton(&text, &source.file)?);
         }
         let json = self.json.as_mut().expect("read above");
         let edited = apply(json, material, typed, scene, &source.file)?;

@@ -57,6 +57,18 @@ pub fn linear_to_srgb8(v: f64) -> u8 {
     }
 }
 
+/// An sRGB-encoded component (0 to 1, as a display shows it) as linear RGB:
+/// the inverse of the sRGB transfer function (IEC 61966-2-1),
+/// `c/12.92` up to 0.04045, `((c + 0.055)/1.055)^2.4` above. Colors written
+/// for a screen, as NFF's are, become the light a renderer works in.
+pub fn srgb_to_linear(c: f64) -> f64 {
+    if c <= 0.04045 {
+        c / 12.92
+    } else {
+        ((c + 0.055) / 1.055).powf(2.4)
+    }
+}
+
 /// Cells of the lookup table over [0, 1] (see [`linear_to_srgb8`]).
 pub const SRGB_CELLS: usize = 4096;
 

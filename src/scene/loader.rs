@@ -25,6 +25,7 @@ use crate::scene::format::{CellSize, LightFile, MaterialFile, Root, SceneFile};
 use crate::scene::light::PointLight;
 use crate::scene::limits;
 use crate::scene::names::name_ok;
+use crate::scene::nff;
 use crate::scene::overrides::Overrides;
 use crate::scene::settings::RenderSettings;
 use crate::scene::strict;
@@ -33,54 +34,21 @@ use crate::shading::material::{Material, Pattern};
 /// The classic Whitted scene, built into the binary.
 pub const WHITTED: &str = include_str!("../../scenes/whitted.json");
 
-/// Why a scene could not be loaded. Each displays as one line.
-#[derive(Debug, thiserror::Error)]
-pub enum SceneError {
-    /// The file could not be read.
-    #[error("cannot read {file}: {reason}")]
-    Read {
-        /// The file.
-        file: String,
-        /// The OS's reason.
-        reason: String,
-    },
-    /// The text is not a scene: bad JSON, an unknown field, a wrong type.
-    #[error("{file}:{line}:{column}: {message}")]
-    Syntax {
-        /// The file.
-        file: String,
-        /// 1-based line.
-        line: usize,
-        /// 1-based column.
-        column: usize,
-        /// The field path and what was expected.
-        message: String,
-    },
-    /// A mesh's OBJ file cannot be used.
-    #[error("{error} (the mesh of {file}: {field})")]
-    Mesh {
-        /// The scene file.
-        file: String,
-        /// The object's field, e.g. `objects[3].mesh.file`.
-        field: String,
-        /// What is wrong in the OBJ file, and where.
-        error: crate::scene::obj::ObjError,
-    },
-    /// A value parses but is not allowed.
-    #[error("{file}: {field}: {message}")]
-    Invalid {
-        /// The file.
-        file: String,
-        /// Path of the offending field, e.g. `objects[2].sphere.radius`.
-        field: String,
-        /// What is wrong.
-        message: String,
-    },
-}
+pub use crate::scene::scene_error::SceneError;
 
 /// Reads and validates the scene file at `path`.
 pub fn load(path: &Path) -> Result<Scene, SceneError> {
-    parse(&read(path)?, &path.display().to_string())
+    parse_file(&read(path)?, &path.display().to_string())
+}
+
+/// Parses a scene file's text by its kind: NFF when `file` ends in `.nff`
+/// (read into scene JSON first, [`crate::scene::nff`]), else JSON.
+pub fn parse_file(text: &str, file: &str) -> Result<Scene, SceneError> {
+    if nff::is_nff(file) {
+        parse(&nff::to_json(text, file)?, file)
+    } else {
+        parse(text, file)
+    }
 }
 
 /// Reads a scene file's text: a regular file of at most

@@ -10,9 +10,12 @@ pub mod strict; // JSON objects only, each name once
 pub mod limits; // the ranges that keep every computed number finite
 pub mod camera_file; // the camera block, checked (right-handed frames only)
 pub mod names; // names printable, mesh files within the scene's folder
+pub mod scene_error; // why a scene file could not be read, in one line
 pub mod loader; // the scene file, checked, into a Scene
 mod object_file; // its objects: shapes, transforms, mesh files
 pub mod obj; // OBJ meshes
+pub mod nff; // NFF scenes (the Standard Procedural Databases), read as scene JSON
+mod nff_json; // an NFF scene written as scene JSON
 pub mod source; // which scene file, by name and hash
 pub mod generate; // scenes made by program
 pub mod vary; // one numeric field of a scene file, varied (filmstrips)

@@ -45,7 +45,10 @@ pub fn load(path: Option<&Path>) -> Result<(Scene, SceneSource), SceneError> {
         Some(path) => {
             let text = loader::read(path)?;
             let name = path.display().to_string();
-            Ok((loader::parse(&text, &name)?, SceneSource::new(&name, &text)))
+            Ok((
+                loader::parse_file(&text, &name)?,
+                SceneSource::new(&name, &text),
+            ))
         }
         None => Ok((loader::whitted(), SceneSource::new(BUILT_IN, WHITTED))),
     }

@@ -20,12 +20,20 @@ pub enum Need {
     /// `shared/lecture-raytracing.md` beside the repository (or above it), as
     /// `raytree postscript` looks for it.
     Lecture,
+    /// `shared/spd/` beside the repository: the Standard Procedural
+    /// Databases' NFF files, POV-Ray files and reference pictures.
+    Spd,
 }
 
 impl Need {
     /// Whether this machine has it (looked up once per test run).
     pub fn present(self) -> bool {
-        static FOUND: [OnceLock<bool>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+        static FOUND: [OnceLock<bool>; 4] = [
+            OnceLock::new(),
+            OnceLock::new(),
+            OnceLock::new(),
+            OnceLock::new(),
+        ];
         let runs = |program: &str, arg: &str| {
             Command::new(program)
                 .arg(arg)
@@ -36,6 +44,7 @@ impl Need {
             Need::Ghostscript => runs("gs", "--version"),
             Need::Tmux => runs("tmux", "-V"),
             Need::Lecture => lecture().is_some(),
+            Need::Spd => spd().is_some(),
         })
     }
 
@@ -45,6 +54,7 @@ impl Need {
             Need::Ghostscript => "Ghostscript (gs) is not installed",
             Need::Tmux => "tmux is not installed",
             Need::Lecture => "there is no ../shared/lecture-raytracing.md beside the repository",
+            Need::Spd => "there is no ../shared/spd/ beside the repository",
         }
     }
 
@@ -54,7 +64,7 @@ impl Need {
             (Need::Ghostscript | Need::Tmux, true) => ".ci/run installs it",
             (Need::Ghostscript, false) => ".ci/run installs Ghostscript",
             (Need::Tmux, false) => ".ci/run installs tmux",
-            (Need::Lecture, _) => "CI checks out ../shared beside the clone",
+            (Need::Lecture | Need::Spd, _) => "CI checks out ../shared beside the clone",
         }
     }
 }
@@ -67,6 +77,15 @@ pub fn lecture() -> Option<PathBuf> {
         .ancestors()
         .map(|d| d.join("shared/lecture-raytracing.md"))
         .find(|p| p.is_file())
+}
+
+/// The Standard Procedural Databases' folder, `shared/spd/` in the
+/// repository's folder or a folder above it.
+pub fn spd() -> Option<PathBuf> {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .ancestors()
+        .map(|d| d.join("shared/spd"))
+        .find(|p| p.join("balls.nff").is_file())
 }
 
 /// Whether the tests run in CI (`CI=true`, as CI services set it and as

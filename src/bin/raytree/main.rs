@@ -9,6 +9,7 @@
 mod aov;
 mod args;
 mod chart;
+mod convert;
 mod diagram;
 mod diff;
 mod forward;
@@ -59,6 +60,8 @@ enum Command {
     Postscript(postscript::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(generate::Args),
+    /// Write an NFF scene (Haines's Standard Procedural Databases) as raytree scene JSON, the scene render reads from it.
+    Convert(convert::Args),
 }
 
 fn main() -> ExitCode {
@@ -87,6 +90,7 @@ fn main() -> ExitCode {
         }
         Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
+        Command::Convert(args) => convert::run(&args),
     };
     finish(result)
 }

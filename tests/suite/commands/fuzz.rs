@@ -1,5 +1,6 @@
-//! Structure-aware mutation fuzzing of the three readers of outside files: the
-//! scene loader, the OBJ reader and the trace reader (issue 12). Each case
+//! Structure-aware mutation fuzzing of the readers of outside files: the
+//! scene loader, the OBJ reader, the trace reader (issue 12) and the NFF
+//! reader (issue 27). Each case
 //! takes a valid seed (a shipped or generated scene, a small OBJ, a real trace)
 //! and applies a few mutations chosen from random bytes through `arbitrary`: a
 //! value swapped for an edge case (huge, tiny, negative, NaN-like text, a
@@ -33,9 +34,17 @@ enum Target {
     Scene,
     Obj,
     Trace,
+    Nff,
 }
 
-const TARGETS: [Target; 3] = [Target::Scene, Target::Obj, Target::Trace];
+const TARGETS: [Target; 4] = [Target::Scene, Target::Obj, Target::Trace, Target::Nff];
+
+/// Small NFF scenes holding every entity: the view, background, lights with
+/// and without a color, materials opaque and transmitting, and each primitive.
+const NFF_SEEDS: [&str; 2] = [
+    "# every entity\nv\nfrom 0 -5 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution 6 4\nb 0.1 0.2 0.3\nl 2 -3 4\nl -2 -3 4 1 1 1\nf 1 0.5 0.2 0.7 0.3 20 0 0\np 4\n-2 -2 0\n2 -2 0\n2 2 0\n-2 2 0\ns 0 0 1 0.5\nf 0.9 0.9 1 0.1 0.1 100 0.8 1.5\nc\n1 0 0 0.3\n1 0 1 0.1\npp 3\n-1 0 0.5 0 -1 0\n-0.5 0 0.5 0 -1 0\n-0.75 0 1 0 -1 0.2\n",
+    "v\nfrom 3 3 3\nat 0 0 0\nup 0 0 1\nangle 45\nhither 0.01\nresolution 5 5\nl 1 1 5\nf 1 0 0 1 0 100000 0 0\np 6\n0 0 0\n2 0 0\n2 1 0\n1 1 0\n1 2 0\n0 2 0\nc\n0 0 0 0.5\n0 0 1 0.5\n",
+];
 
 /// A folder holding what scenes refer to: `m.obj` and `n.obj`.
 fn folder() -> tempfile::TempDir {
@@ -340,6 +349,90 @@ fn mutate_obj(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
     Ok(bytes)
 }
 
+/// An NFF seed with a few line-level mutations: lines dropped, repeated,
+/// swapped or cut short, words swapped for edge cases, entities with wrong
+/// counts, degenerate shapes and huge vertex counts.
+fn mutate_nff(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
+    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
+    for _ in 0..u.int_in_range(1..=4)? {
+        if lines.is_empty() {
+            lines.push("s 0 0 0 1".to_owned());
+        }
+        let i = u.choose_index(lines.len())?;
+        match u.int_in_range(0..=7)? {
+            0 => {
+                lines.remove(i);
+            }
+            1 => lines.insert(i, lines[i].clone()),
+            2 => {
+                let mut words: Vec<String> = lines[i].split(' ').map(str::to_owned).collect();
+                let w = u.choose_index(words.len())?;
+                words[w] = (*u.choose(&[
+                    "0",
+                    "-1",
+                    "1",
+                    "2",
+                    "3",
+                    "1e308",
+                    "nan",
+                    "NaN",
+                    "inf",
+                    "-inf",
+                    "2e9",
+                    "1e-300",
+                    "x",
+                    "",
+                    "4294967296",
+                    "99999999",
+                    "0.5",
+                    "-0",
+                ])?)
+                .to_owned();
+                lines[i] = words.join(" ");
+            }
+            3 => {
+                lines[i] = (*u.choose(&[
+                    "p 2",
+                    "p 3",
+                    "p 1000000000",
+                    "pp 3",
+                    "p 3\n0 0 0\n1 1 1\n2 2 2",
+                    "p 3\n0 0 0\n0 0 0\n1 0 0",
+                    "c\n0 0 0 0\n0 0 1 0",
+                    "c\n0 0 0 1\n0 0 0 1",
+                    "c\n0 0 0 -1\n0 0 1 1",
+                    "s 0 0 0 0",
+                    "s 0 0 0 -1",
+                    "f 1 1 1 1 0.6 10 0.6 1.5",
+                    "f 1 1 1 1 0 10 0.5 0",
+                    "v",
+                    "b 1 1",
+                    "l 1 2",
+                    "up 0 0 0",
+                    "angle 180",
+                    "resolution 0 4",
+                    "# comment",
+                    "q 1 2 3",
+                ])?)
+                .to_owned()
+            }
+            4 => {
+                let j = u.choose_index(lines.len())?;
+                lines.swap(i, j);
+            }
+            5 => lines[i] = u.arbitrary::<String>()?,
+            6 => lines.truncate(i),
+            _ => lines[i].push_str(" 1"),
+        }
+    }
+    let mut bytes = lines.join("\n").into_bytes();
+    if u.ratio(1, 20)? {
+        let at = u.choose_index(bytes.len().max(1))?.min(bytes.len());
+        bytes.insert(at, 0xff);
+    }
+    Ok(bytes)
+}
+
 /// The seeds, made once.
 struct Seeds {
     scenes: Vec<Value>,
@@ -361,6 +454,17 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
             let text = mutated(&mut u, &seeds.scenes);
             let file = dir.join("fuzz.json").display().to_string();
             match loader::parse(&text, &file) {
+                Ok(scene) => scene_works(scene, &text)?,
+                Err(e) => one_line(&e.to_string())?,
+            }
+        }
+        Target::Nff => {
+            let seed = *u.choose(&NFF_SEEDS).unwrap_or(&NFF_SEEDS[0]);
+            let bytes = mutate_nff(&mut u, seed).unwrap_or_default();
+            // The loader takes text: bytes that are not UTF-8 stop at reading (a test of inputs).
+            let text = String::from_utf8_lossy(&bytes);
+            let file = dir.join("fuzz.nff").display().to_string();
+            match loader::parse_file(&text, &file) {
                 Ok(scene) => scene_works(scene, &text)?,
                 Err(e) => one_line(&e.to_string())?,
             }
@@ -533,7 +637,22 @@ fn fuzz_the_trace_reader() {
     assert_eq!(campaign(Target::Trace, seeds(), 1500, 3, None), 1500);
 }
 
-/// The long run: `RAYTREE_FUZZ_SECONDS` (default 600) split between the three
+#[test]
+fn fuzz_the_nff_reader() {
+    assert_eq!(campaign(Target::Nff, seeds(), 3000, 4, None), 3000);
+}
+
+#[test]
+fn the_nff_seeds_are_read_whole() {
+    // The fuzzer's seeds must be valid, or every case would stop at the first error.
+    for (k, seed) in NFF_SEEDS.iter().enumerate() {
+        let scene =
+            loader::parse_file(seed, "seed.nff").unwrap_or_else(|e| panic!("NFF seed {k}: {e}"));
+        assert!(scene.objects.len() >= 2, "seed {k}");
+    }
+}
+
+/// The long run: `RAYTREE_FUZZ_SECONDS` (default 600) split between the four
 /// readers, fresh seeds each run; prints the cases tried.
 #[test]
 #[ignore = "runs for minutes: RAYTREE_FUZZ_SECONDS=600 cargo test --release fuzz_for_a_while -- --ignored --nocapture"]
@@ -545,7 +664,7 @@ fn fuzz_for_a_while() {
     let start = fastrand::u64(..);
     let mut total = 0;
     for (k, target) in TARGETS.into_iter().enumerate() {
-        let until = Instant::now() + Duration::from_secs(seconds / 3);
+        let until = Instant::now() + Duration::from_secs(seconds / 4);
         let tried = campaign(
             target,
             seeds(),
@@ -555,7 +674,7 @@ fn fuzz_for_a_while() {
         );
         println!(
             "{target:?}: {tried} cases in {} s, no panic, no hang, no file left (seed {})",
-            seconds / 3,
+            seconds / 4,
             start.wrapping_add(k as u64)
         );
         total += tried;
@@ -586,6 +705,10 @@ fn mutations_reach_the_interesting_places() {
                 )
                 .is_ok(),
                 Target::Trace => reading::parse(&mutated(&mut u, &seeds.traces)).is_ok(),
+                Target::Nff => {
+                    let bytes = mutate_nff(&mut u, NFF_SEEDS[0]).unwrap_or_default();
+                    loader::parse_file(&String::from_utf8_lossy(&bytes), "f.nff").is_ok()
+                }
             };
             if accepted { ok += 1 } else { err += 1 }
         }
