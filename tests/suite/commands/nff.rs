@@ -291,3 +291,48 @@ fn the_frame_is_taken_as_it_is_so_pictures_are_not_mirrored() {
     assert!(!hit_columns.is_empty());
     assert!(hit_columns.iter().all(|&x| x > 4), "{hit_columns:?}");
 }
+
+/// The seven renders in `docs/spd/` are what `raytree render
+/// ../shared/spd/NAME.nff --protocol spd` makes today; with `RAYTREE_BLESS`
+/// set, they are made again.
+#[test]
+fn the_spd_renders_in_docs_are_current() {
+    use raytree::io::{image, image_file};
+    use raytree::scene::overrides::Protocol;
+    if !tools::available("", &[Need::Spd], "the SPD scenes are read from it") {
+        return;
+    }
+    let dir = tools::spd().unwrap();
+    let docs = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/spd");
+    for name in [
+        "balls", "gears", "mount", "rings", "teapot", "tetra", "tree",
+    ] {
+        let mut scene = loader::load(&dir.join(format!("{name}.nff"))).unwrap();
+        scene.settings = Protocol::Spd.overrides().apply(&scene.settings);
+        let made =
+            raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET)
+                .unwrap();
+        let path = docs.join(format!("{name}.png"));
+        if std::env::var_os("RAYTREE_BLESS").is_some() {
+            std::fs::create_dir_all(&docs).unwrap();
+            std::fs::write(
+                &path,
+                image_file::encode(&made, image_file::Format::Png).unwrap(),
+            )
+            .unwrap();
+            continue;
+        }
+        let committed = image_file::read_rgb8(&path)
+            .unwrap_or_else(|e| panic!("{}: {e}; bless with RAYTREE_BLESS=1", path.display()))
+            .into_raw();
+        // One 8-bit level: the same arithmetic, but `powf` (Phong's exponent)
+        // may round its last bit differently on another machine's libm, which
+        // can move a pixel across a level's boundary; a changed scene or
+        // method moves many levels.
+        assert!(
+            crate::common::worst_difference(&image::to_rgb8(&made), &committed) <= 1,
+            "{} is stale: bless with RAYTREE_BLESS=1 cargo test --release spd_renders",
+            path.display()
+        );
+    }
+}
