@@ -43,6 +43,9 @@ pub const OWNED: &[&str] = &["book/src/lessons", "book/src/figures"];
 /// Book pages: `book/pages/NAME.md` and `NAME.toml`, made into `book/src/NAME.md`.
 const PAGES: &[(&str, &str)] = &[("preface", "Preface: reading a trace and a diagram")];
 
+/// Pages after the lessons, before the appendices: `book/pages/NAME.md`.
+const AFTER: &[(&str, &str)] = &[("spd", "The Standard Procedural Databases")];
+
 fn text(path: &str, text: String, origin: &str) -> File {
     File {
         path: path.to_owned(),
@@ -87,7 +90,7 @@ pub fn book() -> Result<Vec<File>, String> {
             &mut files,
         )?;
     }
-    for (name, _) in PAGES {
+    for (name, _) in PAGES.iter().chain(AFTER) {
         let spec_path = format!("book/pages/{name}.toml");
         let spec = lesson_spec::load(&run::root().join(&spec_path))?;
         let input = Input {
@@ -217,7 +220,11 @@ fn summary(entries: &[lesson::Entry]) -> String {
             e.name
         );
     }
-    out.push_str("- [Where next](where-next.md)\n\n# Appendices\n\n");
+    out.push_str("- [Where next](where-next.md)\n");
+    for (name, title) in AFTER {
+        let _ = writeln!(out, "- [{title}]({name}.md)");
+    }
+    out.push_str("\n# Appendices\n\n");
     out.push_str("- [Commands](commands.md)\n- [Scene files](scene-format.md)\n- [The trace format](trace-format.md)\n");
     out
 }

@@ -38,7 +38,7 @@ fn book_is_current() {
         let shown = available(
             &format!("not regenerated, left as committed: {}", unmade.join("; ")),
             &missing,
-            "`raytree postscript` draws the lecture's program",
+            "`raytree postscript` draws the lecture's program; the SPD page renders ../shared/spd/",
         );
         assert!(!shown, "made nothing of {unmade:?}, yet it has {missing:?}");
     }

@@ -52,9 +52,13 @@ pub enum Output {
 
 /// What `command` itself needs beyond raytree: `raytree postscript` draws
 /// with Ghostscript and, given no program file, reads the lecture (`--slips`
-/// only prints the list).
+/// only prints the list); a command on the SPD's scenes reads them from
+/// `../shared/spd/`.
 pub fn needs(command: &Command) -> Vec<Need> {
     let args = &command.args;
+    if args.iter().any(|a| a.starts_with("../shared/spd/")) {
+        return vec![Need::Spd];
+    }
     if args[0] != "postscript" || args.iter().any(|a| a == "--slips") {
         return Vec::new();
     }
