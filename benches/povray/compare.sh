@@ -28,17 +28,7 @@ root=$(cd "$here/../.." && pwd)
 source "$here/../idle.sh"
 cores=$(nproc)
 
-if ! command -v povray >/dev/null; then
-    echo "POV-Ray is missing: installing it with apt-get" >&2
-    sudo=""
-    [[ $(id -u) -eq 0 ]] || sudo=sudo
-    $sudo apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq povray >/dev/null
-fi
-povray_version=$(povray --version 2>&1 | grep -m1 -o 'POV-Ray [0-9.]*[^ ]*' || true)
-
-cargo build --release --quiet --manifest-path "$root/Cargo.toml"
-raytree="$root/target/release/raytree"
+source "$here/setup.sh"
 
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT

@@ -10,7 +10,6 @@
 use std::collections::TryReserveError;
 use std::sync::atomic::{AtomicU64, Ordering};
 
-use glam::DVec3;
 use rayon::prelude::*;
 
 use crate::io::image::Image;
@@ -211,21 +210,32 @@ pub fn render_counting_with(
 }
 
 /// The image, with a recorder of type `R` per band, the bands' recorders
-/// combined by [`Tally::merge`].
+/// combined by [`Tally::merge`]. Under the SPD protocol's sampling the pass
+/// traces every pixel corner once, and each pixel is then the mean of its
+/// four ([`corner_mean`], as a recorded pixel takes it).
 fn render_traced<R: Recorder + Default + Send + Tally>(
     tracer: &Tracer,
     progress: &Progress,
 ) -> Result<(Image, R), TryReserveError> {
     let scene = tracer.scene();
     let camera = scene.camera();
-    if scene.settings.aa == Antialiasing::Corners {
-        return render_corners(tracer, progress);
-    }
+    let corners = scene.settings.aa == Antialiasing::Corners;
     let traced = trace_pixels(
         scene,
-        Pixels::All,
+        if corners {
+            Pixels::Corners
+        } else {
+            Pixels::All
+        },
         R::default,
-        |rec, x, y| pixel_color(tracer, &camera, x, y, rec),
+        |rec, x, y| {
+            if corners {
+                let (sx, sy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
+                tracer.trace_primary(camera.pixel_ray(sx, sy), rec)
+            } else {
+                pixel_color(tracer, &camera, x, y, rec)
+            }
+        },
         // A render is never cancelled: only the reports pass through.
         &Progress::reporting(&|done, total| progress.report(done, total)),
     )
@@ -234,55 +244,25 @@ fn render_traced<R: Recorder + Default + Send + Tally>(
         Stopped::Cancelled => unreachable!("a render reports but is never cancelled"),
     })?;
     let tally = traced.bands.into_iter().fold(R::default(), R::merge);
-    let pixels: Vec<DVec3> = traced.cells;
-    Ok((
-        Image {
-            width: scene.settings.width,
-            height: scene.settings.height,
-            pixels,
-        },
-        tally,
-    ))
-}
-
-/// [`render_traced`] under the SPD protocol: every pixel corner traced once,
-/// then each pixel the mean of its four ([`corner_mean`], as a recorded pixel
-/// takes it).
-fn render_corners<R: Recorder + Default + Send + Tally>(
-    tracer: &Tracer,
-    progress: &Progress,
-) -> Result<(Image, R), TryReserveError> {
-    let scene = tracer.scene();
-    let camera = scene.camera();
-    let traced = trace_pixels(
-        scene,
-        Pixels::Corners,
-        R::default,
-        |rec, x, y| {
-            let (sx, sy) = (f64::from(x) - 0.5, f64::from(y) - 0.5);
-            tracer.trace_primary(camera.pixel_ray(sx, sy), rec)
-        },
-        &Progress::reporting(&|done, total| progress.report(done, total)),
-    )
-    .map_err(|stopped| match stopped {
-        Stopped::NoMemory(e) => e,
-        Stopped::Cancelled => unreachable!("a render reports but is never cancelled"),
-    })?;
-    let tally = traced.bands.into_iter().fold(R::default(), R::merge);
     let (width, height) = (scene.settings.width, scene.settings.height);
-    let corner = |x: u32, y: u32| traced.cells[(y * traced.cols + x) as usize];
-    let mut pixels = Vec::new();
-    pixels.try_reserve_exact(width as usize * height as usize)?;
-    for y in 0..height {
-        for x in 0..width {
-            pixels.push(corner_mean([
-                corner(x, y),
-                corner(x + 1, y),
-                corner(x, y + 1),
-                corner(x + 1, y + 1),
-            ]));
+    let pixels = if corners {
+        let corner = |x: u32, y: u32| traced.cells[(y * traced.cols + x) as usize];
+        let mut pixels = Vec::new();
+        pixels.try_reserve_exact(width as usize * height as usize)?;
+        for y in 0..height {
+            for x in 0..width {
+                pixels.push(corner_mean([
+                    corner(x, y),
+                    corner(x + 1, y),
+                    corner(x, y + 1),
+                    corner(x + 1, y + 1),
+                ]));
+            }
         }
-    }
+        pixels
+    } else {
+        traced.cells
+    };
     Ok((
         Image {
             width,

@@ -277,86 +277,110 @@ fn damage_text(u: &mut Unstructured, text: &mut String) -> arbitrary::Result<()>
     Ok(())
 }
 
-/// An OBJ seed with a few line-level mutations.
-fn mutate_obj(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
-    let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
-    for _ in 0..u.int_in_range(1..=4)? {
-        if lines.is_empty() {
-            lines.push("f 1 2 3".to_owned());
-        }
-        let i = u.choose_index(lines.len())?;
-        match u.int_in_range(0..=7)? {
-            0 => {
-                lines.remove(i);
-            }
-            1 => lines.insert(i, lines[i].clone()),
-            2 => {
-                let mut words: Vec<String> = lines[i].split(' ').map(str::to_owned).collect();
-                let w = u.choose_index(words.len())?;
-                words[w] = (*u.choose(&[
-                    "0",
-                    "-1",
-                    "-9",
-                    "99",
-                    "1e308",
-                    "nan",
-                    "inf",
-                    "-inf",
-                    "2e9",
-                    "1/",
-                    "//",
-                    "1//9",
-                    "x",
-                    "",
-                    "4294967296",
-                    "-2147483649",
-                ])?)
-                .to_owned();
-                lines[i] = words.join(" ");
-            }
-            3 => {
-                lines[i] = (*u.choose(&[
-                    "f 1",
-                    "f 1 2",
-                    "f 1 1 1",
-                    "v 1",
-                    "vn 0 0 0",
-                    "vt",
-                    "l 1 2",
-                    "p 1",
-                    "mtllib x.mtl",
-                    "usemtl red",
-                    "o",
-                    "g",
-                    "s off",
-                ])?)
-                .to_owned()
-            }
-            4 => {
-                let j = u.choose_index(lines.len())?;
-                lines.swap(i, j);
-            }
-            5 => lines[i] = u.arbitrary::<String>()?,
-            6 => lines.truncate(i),
-            _ => lines[i].push_str(" 1e-300"),
-        }
-    }
-    let mut bytes = lines.join("\n").into_bytes();
-    if u.ratio(1, 20)? {
-        let at = u.choose_index(bytes.len().max(1))?.min(bytes.len());
-        bytes.insert(at, 0xff);
-    }
-    Ok(bytes)
+/// What a line-level mutator may put in: a line for an emptied file, words
+/// to swap in, whole lines to swap in, and a word to append.
+struct LineEdits {
+    empty: &'static str,
+    words: &'static [&'static str],
+    lines: &'static [&'static str],
+    tail: &'static str,
 }
 
-/// An NFF seed with a few line-level mutations: lines dropped, repeated,
-/// swapped or cut short, words swapped for edge cases, entities with wrong
-/// counts, degenerate shapes and huge vertex counts.
-fn mutate_nff(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
+const OBJ_EDITS: LineEdits = LineEdits {
+    empty: "f 1 2 3",
+    words: &[
+        "0",
+        "-1",
+        "-9",
+        "99",
+        "1e308",
+        "nan",
+        "inf",
+        "-inf",
+        "2e9",
+        "1/",
+        "//",
+        "1//9",
+        "x",
+        "",
+        "4294967296",
+        "-2147483649",
+    ],
+    lines: &[
+        "f 1",
+        "f 1 2",
+        "f 1 1 1",
+        "v 1",
+        "vn 0 0 0",
+        "vt",
+        "l 1 2",
+        "p 1",
+        "mtllib x.mtl",
+        "usemtl red",
+        "o",
+        "g",
+        "s off",
+    ],
+    tail: " 1e-300",
+};
+
+/// NFF's: entities with wrong counts, degenerate shapes, huge vertex counts.
+const NFF_EDITS: LineEdits = LineEdits {
+    empty: "s 0 0 0 1",
+    words: &[
+        "0",
+        "-1",
+        "1",
+        "2",
+        "3",
+        "1e308",
+        "nan",
+        "NaN",
+        "inf",
+        "-inf",
+        "2e9",
+        "1e-300",
+        "x",
+        "",
+        "4294967296",
+        "99999999",
+        "0.5",
+        "-0",
+    ],
+    lines: &[
+        "p 2",
+        "p 3",
+        "p 1000000000",
+        "pp 3",
+        "p 3\n0 0 0\n1 1 1\n2 2 2",
+        "p 3\n0 0 0\n0 0 0\n1 0 0",
+        "c\n0 0 0 0\n0 0 1 0",
+        "c\n0 0 0 1\n0 0 0 1",
+        "c\n0 0 0 -1\n0 0 1 1",
+        "s 0 0 0 0",
+        "s 0 0 0 -1",
+        "f 1 1 1 1 0.6 10 0.6 1.5",
+        "f 1 1 1 1 0 10 0.5 0",
+        "v",
+        "b 1 1",
+        "l 1 2",
+        "up 0 0 0",
+        "angle 180",
+        "resolution 0 4",
+        "# comment",
+        "q 1 2 3",
+    ],
+    tail: " 1",
+};
+
+/// A seed of a line-based format (OBJ, NFF) with a few line-level
+/// mutations: lines dropped, repeated, swapped or cut short, words and lines
+/// swapped for `edits`' edge cases, and now and then a byte that is not UTF-8.
+fn mutate_lines(u: &mut Unstructured, text: &str, edits: &LineEdits) -> arbitrary::Result<Vec<u8>> {
     let mut lines: Vec<String> = text.lines().map(str::to_owned).collect();
     for _ in 0..u.int_in_range(1..=4)? {
         if lines.is_empty() {
-            lines.push("s 0 0 0 1".to_owned());
+            lines.push(edits.empty.to_owned());
         }
         let i = u.choose_index(lines.len())?;
         match u.int_in_range(0..=7)? {
@@ -367,62 +391,17 @@ fn mutate_nff(u: &mut Unstructured, text: &str) -> arbitrary::Result<Vec<u8>> {
             2 => {
                 let mut words: Vec<String> = lines[i].split(' ').map(str::to_owned).collect();
                 let w = u.choose_index(words.len())?;
-                words[w] = (*u.choose(&[
-                    "0",
-                    "-1",
-                    "1",
-                    "2",
-                    "3",
-                    "1e308",
-                    "nan",
-                    "NaN",
-                    "inf",
-                    "-inf",
-                    "2e9",
-                    "1e-300",
-                    "x",
-                    "",
-                    "4294967296",
-                    "99999999",
-                    "0.5",
-                    "-0",
-                ])?)
-                .to_owned();
+                words[w] = (*u.choose(edits.words)?).to_owned();
                 lines[i] = words.join(" ");
             }
-            3 => {
-                lines[i] = (*u.choose(&[
-                    "p 2",
-                    "p 3",
-                    "p 1000000000",
-                    "pp 3",
-                    "p 3\n0 0 0\n1 1 1\n2 2 2",
-                    "p 3\n0 0 0\n0 0 0\n1 0 0",
-                    "c\n0 0 0 0\n0 0 1 0",
-                    "c\n0 0 0 1\n0 0 0 1",
-                    "c\n0 0 0 -1\n0 0 1 1",
-                    "s 0 0 0 0",
-                    "s 0 0 0 -1",
-                    "f 1 1 1 1 0.6 10 0.6 1.5",
-                    "f 1 1 1 1 0 10 0.5 0",
-                    "v",
-                    "b 1 1",
-                    "l 1 2",
-                    "up 0 0 0",
-                    "angle 180",
-                    "resolution 0 4",
-                    "# comment",
-                    "q 1 2 3",
-                ])?)
-                .to_owned()
-            }
+            3 => lines[i] = (*u.choose(edits.lines)?).to_owned(),
             4 => {
                 let j = u.choose_index(lines.len())?;
                 lines.swap(i, j);
             }
             5 => lines[i] = u.arbitrary::<String>()?,
             6 => lines.truncate(i),
-            _ => lines[i].push_str(" 1"),
+            _ => lines[i].push_str(edits.tail),
         }
     }
     let mut bytes = lines.join("\n").into_bytes();
@@ -445,7 +424,7 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
     match target {
         Target::Obj => {
             let seed = *u.choose(&OBJ_SEEDS).unwrap_or(&OBJ_SEEDS[0]);
-            let bytes = mutate_obj(&mut u, seed).unwrap_or_default();
+            let bytes = mutate_lines(&mut u, seed, &OBJ_EDITS).unwrap_or_default();
             if let Err(e) = obj::parse(&bytes, "m.obj", true) {
                 one_line(&e.to_string())?;
             }
@@ -460,7 +439,7 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
         }
         Target::Nff => {
             let seed = *u.choose(&NFF_SEEDS).unwrap_or(&NFF_SEEDS[0]);
-            let bytes = mutate_nff(&mut u, seed).unwrap_or_default();
+            let bytes = mutate_lines(&mut u, seed, &NFF_EDITS).unwrap_or_default();
             // The loader takes text: bytes that are not UTF-8 stop at reading (a test of inputs).
             let text = String::from_utf8_lossy(&bytes);
             let file = dir.join("fuzz.nff").display().to_string();
@@ -696,7 +675,7 @@ fn mutations_reach_the_interesting_places() {
             let mut u = Unstructured::new(&data);
             let accepted = match target {
                 Target::Obj => {
-                    let bytes = mutate_obj(&mut u, OBJ_SEEDS[1]).unwrap_or_default();
+                    let bytes = mutate_lines(&mut u, OBJ_SEEDS[1], &OBJ_EDITS).unwrap_or_default();
                     obj::parse(&bytes, "m.obj", true).is_ok()
                 }
                 Target::Scene => loader::parse(
@@ -706,7 +685,7 @@ fn mutations_reach_the_interesting_places() {
                 .is_ok(),
                 Target::Trace => reading::parse(&mutated(&mut u, &seeds.traces)).is_ok(),
                 Target::Nff => {
-                    let bytes = mutate_nff(&mut u, NFF_SEEDS[0]).unwrap_or_default();
+                    let bytes = mutate_lines(&mut u, NFF_SEEDS[0], &NFF_EDITS).unwrap_or_default();
                     loader::parse_file(&String::from_utf8_lossy(&bytes), "f.nff").is_ok()
                 }
             };
