@@ -120,10 +120,12 @@ pub fn available(what: &str, needs: &[Need], why: &str) -> bool {
         format!("{test} ({what})")
     };
     let said: Vec<&str> = missing.iter().map(|n| n.missing()).collect();
-    let remedies: Vec<&str> = missing
+    let mut remedies: Vec<&str> = missing
         .iter()
         .map(|n| n.remedy(missing.len() == 1))
         .collect();
+    // The lecture and the SPD's scenes come the same way: say it once.
+    remedies.dedup();
     let line = format!(
         "{what}: {} ({why}; {})",
         said.join(" and "),
