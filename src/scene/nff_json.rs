@@ -57,34 +57,36 @@ impl NffScene {
         let name = std::path::Path::new(file)
             .file_name()
             .map_or_else(|| file.to_owned(), |f| f.to_string_lossy().into_owned());
-        let mut head = serde_json::Map::new();
-        head.insert(
-            "description".into(),
-            json!(format!(
-                "{name}, an NFF scene (Standard Procedural Databases), as raytree reads it"
-            )),
-        );
-        head.insert(
-            "camera".into(),
-            json!({
-                "eye": xyz(view.from),
-                "look_at": xyz(view.at),
-                "up": xyz(view.up),
-                "fov": view.angle,
-            }),
-        );
-        head.insert(
-            "render".into(),
-            json!({ "width": view.resolution.0, "height": view.resolution.1 }),
-        );
         let background = self.background.unwrap_or(DVec3::ZERO);
-        head.insert("background".into(), xyz(background));
-        head.insert("ambient_light".into(), xyz(DVec3::splat(intensity)));
-        let mut out = serde_json::to_string_pretty(&Value::Object(head))
-            .expect("JSON values always serialize");
-        out.truncate(out.trim_end().len() - 1); // reopen the object: drop the closing brace
-        out = out.trim_end().to_owned();
-        out.push_str(",\n  \"materials\": {\n");
+        // The header in the order a reader wants it, one field to a line.
+        let head = [
+            (
+                "description",
+                json!(format!(
+                    "{name}, an NFF scene (Standard Procedural Databases), as raytree reads it: colors made linear from sRGB, each light without a color and the ambient light √n/(2n) for n lights"
+                )),
+            ),
+            (
+                "camera",
+                json!({
+                    "eye": xyz(view.from),
+                    "look_at": xyz(view.at),
+                    "up": xyz(view.up),
+                    "fov": view.angle,
+                }),
+            ),
+            (
+                "render",
+                json!({ "width": view.resolution.0, "height": view.resolution.1 }),
+            ),
+            ("background", xyz(background)),
+            ("ambient_light", xyz(DVec3::splat(intensity))),
+        ];
+        let mut out = String::from("{\n");
+        for (key, value) in head {
+            let _ = writeln!(out, "  {}: {value},", json!(key));
+        }
+        out.push_str("  \"materials\": {\n");
         for (k, (name, m)) in self.materials.iter().enumerate() {
             let comma = if k + 1 < self.materials.len() {
                 ","
