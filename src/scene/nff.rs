@@ -56,6 +56,13 @@ use crate::scene::settings::RenderSettings;
 /// beyond this is refused before any vertex is read.
 pub const MAX_POLYGON_VERTICES: usize = 65_536;
 
+/// Most words (keywords and numbers) one NFF file may hold: about 4.2
+/// million, some 800,000 spheres or 300,000 triangles (the SPD's scenes
+/// hold under 300,000 words). Each object becomes a JSON value before the
+/// scene loads, some hundreds of bytes, so this bounds the memory a file can
+/// take to a few hundred megabytes, refused as it is reached.
+pub const MAX_WORDS: usize = 1 << 22;
+
 /// Whether `file` names an NFF file (by its extension, in any case).
 pub fn is_nff(file: &str) -> bool {
     std::path::Path::new(file)
@@ -81,6 +88,8 @@ struct Reader<'t> {
     lines: std::iter::Peekable<Box<dyn Iterator<Item = Line<'t>> + 't>>,
     /// The line the file ended after, for "ends early" errors.
     last: usize,
+    /// Words read so far: bounded by [`MAX_WORDS`].
+    words: usize,
 }
 
 impl<'t> Reader<'t> {
@@ -103,6 +112,7 @@ impl<'t> Reader<'t> {
         });
         let last = text.lines().count();
         Reader {
+            words: 0,
             file,
             lines: (Box::new(lines) as Box<dyn Iterator<Item = Line<'t>>>).peekable(),
             last,
@@ -118,9 +128,27 @@ impl<'t> Reader<'t> {
         }
     }
 
+    /// The next line, counted against [`MAX_WORDS`].
+    fn next_line(&mut self) -> Result<Option<Line<'t>>, SceneError> {
+        let Some(line) = self.lines.next() else {
+            return Ok(None);
+        };
+        self.words += line.words.len();
+        if self.words > MAX_WORDS {
+            return Err(self.error(
+                line.number,
+                1,
+                format!(
+                    "the file holds more than {MAX_WORDS} words (keywords and numbers), more than raytree reads from an NFF file"
+                ),
+            ));
+        }
+        Ok(Some(line))
+    }
+
     /// The next line, which entity `what` (begun on line `from`) needs.
     fn next_for(&mut self, what: &str, from: usize) -> Result<Line<'t>, SceneError> {
-        self.lines.next().ok_or_else(|| {
+        self.next_line()?.ok_or_else(|| {
             self.error(
                 self.last.max(1),
                 1,
@@ -134,7 +162,7 @@ impl<'t> Reader<'t> {
         // The current material's name, and whether it transmits.
         let mut material: Option<(String, bool)> = None;
         let mut known: HashMap<[u64; 8], String> = HashMap::new();
-        while let Some(line) = self.lines.next() {
+        while let Some(line) = self.next_line()? {
             let (column, keyword) = line.words[0];
             let n = line.number;
             match keyword {

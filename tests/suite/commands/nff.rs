@@ -336,3 +336,25 @@ fn the_spd_renders_in_docs_are_current() {
         );
     }
 }
+
+#[test]
+fn a_file_of_too_many_words_is_refused_as_the_limit_is_reached() {
+    // One sphere a line, five words each: the limit falls on the line where
+    // the count passes it, and nothing past it is read.
+    let lines = nff::MAX_WORDS / 5 + 10;
+    let mut text = String::from(
+        "v\nfrom 0 -5 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution 6 4\nf 1 1 1 1 0 1 0 0\n",
+    );
+    for _ in 0..lines {
+        text.push_str("s 0 0 0 1\n");
+    }
+    let e = loader::parse_file(&text, "big.nff")
+        .unwrap_err()
+        .to_string();
+    assert!(e.starts_with("big.nff:"), "{e}");
+    assert!(e.contains("more than 4194304 words"), "{e}");
+    // The header takes 8 lines and 29 words; the limit is passed on the
+    // sphere line that brings the count over 4,194,304.
+    let line: usize = e.split(':').nth(1).unwrap().parse().unwrap();
+    assert_eq!(line, 8 + (nff::MAX_WORDS - 29) / 5 + 1, "{e}");
+}
