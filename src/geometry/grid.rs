@@ -37,13 +37,17 @@
 //! exact one by at most `γ(2)·|u|`. The DDA itself only decides how the
 //! ray's parameter range is cut into pieces `[t₀, t₁]` (consecutive pieces share
 //! their end exactly, so the pieces cover the range whatever the DDA's rounding);
-//! for each piece the walk visits every cell between the smallest and largest `u`
-//! the piece reaches on each axis, widened by a bound on all those roundings
-//! ([`Walk::span`]). Usually that is the single cell the DDA is in; near a
-//! boundary, where the DDA's own rounded `t` may be off, it is two, and the walk
-//! visits both rather than guess. Clipping aims a whole cell outside the grid on
-//! every side, far more than its rounding. A ray parallel to an axis has a
-//! constant `u` on it and is clipped by whether that `u` lies in the grid.
+//! for each half of a piece the walk visits every cell between the smallest and
+//! largest `u` the half reaches on each axis, widened by a bound on all those
+//! roundings ([`Walk::span`]). Inside a piece that is the single cell the DDA
+//! is in; at its ends, where the DDA's own rounded `t` may be off, it is also
+//! the cell across the boundary, and the walk visits it rather than guess (the
+//! halves keep those two doubts from adding the diagonal cell between them, and
+//! a cell just visited is not visited again, so a walk visits about the cells
+//! the ray pierces and no more). Clipping aims just outside the grid on every
+//! side, by four times a bound on its own rounding ([`Walk::new`]). A ray
+//! parallel to an axis has a constant `u` on it and is clipped by whether that
+//! `u` lies in the grid so widened.
 
 use std::cmp::Ordering;
 use std::ops::ControlFlow;
@@ -248,7 +252,8 @@ impl Grid {
         let mut mailbox = Mailbox::new(self.n);
         let mut dda = walk.dda;
         let mut t0 = walk.t_start;
-        let mut previous: Option<[[usize; 2]; 3]> = None;
+        // The spans of the last two half-pieces: their cells are visited already.
+        let mut recent: [Option<[[usize; 2]; 3]>; 2] = [None, None];
         loop {
             let t_end = walk.t_end.min(*t_max);
             if t0 > t_end {
@@ -261,29 +266,41 @@ impl Grid {
             } else {
                 dda.t_next[axis].max(t0)
             };
-            let span = walk.span(self, t0, t1);
-            for z in span[2][0]..=span[2][1] {
-                for y in span[1][0]..=span[1][1] {
-                    for x in span[0][0]..=span[0][1] {
-                        let cell = [x, y, z];
-                        if previous.is_some_and(|p| (0..3).all(|a| within(cell[a], p[a]))) {
-                            continue; // visited with the piece before
-                        }
-                        tested.boxes += 1;
-                        seen(self.cell_bounds(cell), true);
-                        let c = self.index(cell);
-                        for &p in &self.items[self.start[c] as usize..self.start[c + 1] as usize] {
-                            if mailbox.first_time(p) {
-                                visit(p as usize, t_max)?;
+            // Each half of the piece on its own: the widening at the piece's start
+            // (the cell before, across the boundary just crossed) and at its end
+            // (the cell after) then never combine into a diagonal neighbour the
+            // ray does not pass, as one box over the whole piece would.
+            let t_mid = 0.5 * t0 + 0.5 * t1;
+            for (from, to) in [(t0, t_mid), (t_mid, t1)] {
+                let span = walk.span(self, from, to);
+                for z in span[2][0]..=span[2][1] {
+                    for y in span[1][0]..=span[1][1] {
+                        for x in span[0][0]..=span[0][1] {
+                            let cell = [x, y, z];
+                            let done = |r: &Option<[[usize; 2]; 3]>| {
+                                r.is_some_and(|r| (0..3).all(|a| within(cell[a], r[a])))
+                            };
+                            if recent.iter().any(done) {
+                                continue;
+                            }
+                            tested.boxes += 1;
+                            seen(self.cell_bounds(cell), true);
+                            let c = self.index(cell);
+                            let listed =
+                                &self.items[self.start[c] as usize..self.start[c + 1] as usize];
+                            for &p in listed {
+                                if mailbox.first_time(p) {
+                                    visit(p as usize, t_max)?;
+                                }
                             }
                         }
                     }
                 }
+                recent = [recent[1], Some(span)];
             }
             if last {
                 return ControlFlow::Continue(());
             }
-            previous = Some(span);
             dda.step(axis, self.res[axis]);
             t0 = t1;
         }
@@ -383,25 +400,28 @@ struct Walk {
 }
 
 impl Walk {
-    /// The ray clipped to the grid widened by a cell on every side, or `None` if
-    /// it misses that within `(t_min, t_max)`. The widening is a whole cell where
-    /// the clip's rounding is a few ULPs of `|a| + |t·b|` in cell units: this
-    /// assumes the origin lies within 2⁴⁰ cells of the grid, where that rounding
-    /// is below 2⁻¹⁰ of a cell.
+    /// The ray clipped to the grid, widened on each axis by `m = 2γ(8)·(|a| + n + 1)`
+    /// cell units, or `None` if it misses that within `(t_min, t_max)`. A box's
+    /// point has an exact `u` in `[0, n·(1 + γ(2))]` (the cell size rounds); the
+    /// clip's `t = (−m − a)/b` rounds twice, so the exact `u` there is within
+    /// `γ(2)·(|a| + n + m)` of its target; and `a` itself is within `γ(2)·|a|`.
+    /// Together under `γ(4)·(|a| + n + 1)`: the margin is four times that, and
+    /// so small (for an origin near the grid) that the walk hardly leaves it.
     fn new(grid: &Grid, ray: &Ray, t_min: f64, t_max: f64) -> Option<Walk> {
         let a = grid.u(ray.origin);
         let b = ray.dir * grid.inv;
         let (mut lo, mut hi) = (t_min, t_max);
         for axis in 0..3 {
             let n = grid.res[axis] as f64;
+            let m = 2.0 * gamma(8) * (a[axis].abs() + n + 1.0);
             if b[axis] == 0.0 {
                 // Parallel to this axis: u is constant along the ray.
-                if !(a[axis] >= -1.0 && a[axis] <= n + 1.0) {
+                if !(a[axis] >= -m && a[axis] <= n + m) {
                     return None;
                 }
             } else {
-                let t0 = (-1.0 - a[axis]) / b[axis];
-                let t1 = (n + 1.0 - a[axis]) / b[axis];
+                let t0 = (-m - a[axis]) / b[axis];
+                let t1 = (n + m - a[axis]) / b[axis];
                 lo = lo.max(t0.min(t1));
                 hi = hi.min(t0.max(t1));
             }
@@ -779,6 +799,38 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// The widening costs (almost) no extra cells: over random rays through
+    /// 5,000 small boxes, the cells visited are within 1% of the cells the ray
+    /// pierces (1 + the boundaries it crosses on each axis, inside the grid).
+    /// Fails if each piece's two doubts (the cell before, the cell after) are
+    /// joined in one box, which adds a diagonal cell at nearly every step.
+    #[test]
+    fn the_walk_visits_about_the_cells_the_ray_pierces() {
+        let mut rng = fastrand::Rng::with_seed(3);
+        let boxes: Vec<Bounds> = (0..5000)
+            .map(|_| cube(DVec3::new(rng.f64(), rng.f64(), rng.f64()) * 20.0, 0.1))
+            .collect();
+        let grid = Grid::build(&boxes);
+        let (mut steps, mut pierced) = (0, 0);
+        for _ in 0..2000 {
+            let origin = DVec3::new(rng.f64(), rng.f64(), rng.f64()) * 20.0;
+            let dir = DVec3::new(rng.f64(), rng.f64(), rng.f64()) * 2.0 - 1.0;
+            let ray = Ray::new(origin, dir);
+            steps += walk(&grid, &ray, 0.0).1;
+            // Where the ray leaves the grid's box, then the cells in between.
+            let b = grid.bounds;
+            let t_out = (0..3)
+                .map(|a| ((if dir[a] > 0.0 { b.max[a] } else { b.min[a] }) - origin[a]) / dir[a])
+                .fold(f64::INFINITY, f64::min);
+            let (from, to) = (grid.cell_of(origin), grid.cell_of(ray.at(t_out)));
+            pierced += 1 + (0..3).map(|a| from[a].abs_diff(to[a]) as u32).sum::<u32>();
+        }
+        assert!(
+            steps >= pierced && steps * 100 <= pierced * 101,
+            "{steps} cells visited, {pierced} pierced"
+        );
     }
 
     /// The nearest root of `|o + t·d − c|² = r²` beyond `t_min`, in the stable form.
