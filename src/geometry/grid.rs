@@ -5,18 +5,20 @@
 //! hit it has.
 //!
 //! **Resolution.** About `λ·N` cells for `N` primitives, each axis proportional
-//! to the box's extent `d`, so cells are near cubes (Cleary & Wyvill, "Analysis
-//! of an algorithm for fast ray tracing using uniform space subdivision", 1988;
-//! the rule as Wald et al., "Ray Tracing Animated Scenes using Coherent Grid
-//! Traversal", 2006, and pbrt-v1's grid accelerator state it):
-//! `n_x = ⌈d_x · (λN/V)^{1/3}⌉`. An axis the rule would give less than one cell
-//! (a flat or nearly flat scene) gets one, and the others share `λN` in two (or
-//! one) dimensions. Ize, Shirley & Parker ("Grid Creation Strategies for
-//! Efficient Ray Tracing", RT 2007) show `O(N)` cells is best for well-behaved
-//! models; the constant is a tuning choice, and [`LAMBDA`] = 4 is a value in the
-//! single digits those papers use, not a measurement of ours
-//! ([`Grid::build_with_resolution`] is there to sweep it). Each axis is clamped to
-//! `[1, MAX_AXIS]` and the total to [`MAX_CELLS`] so memory stays bounded.
+//! to the box's extent `d`, so cells are near cubes:
+//! `n_x = ⌈d_x · (λN/V)^{1/3}⌉` (the `O(N)` cells of Cleary & Wyvill, "Analysis
+//! of an algorithm for fast ray tracing using uniform space subdivision", 1988,
+//! in the form the grid papers around Wald et al., "Ray Tracing Animated Scenes
+//! using Coherent Grid Traversal", 2006, write it; pbrt-v1's grid accelerator
+//! scales the same way, `3·∛N` cells along the widest axis). An axis the rule
+//! would give less than one cell (a flat or nearly flat scene) gets one, and the
+//! others share `λN` in two (or one) dimensions. Ize, Shirley & Parker ("Grid
+//! Creation Strategies for Efficient Ray Tracing", RT 2007) show `O(N)` cells is
+//! best for well-behaved models; the constant is a tuning choice, and
+//! [`LAMBDA`] = 4 is a value in the single digits that literature uses, not a
+//! measurement of ours ([`Grid::build_with_resolution`] is there to sweep it).
+//! Each axis is clamped to `[1, MAX_AXIS]` and the total to [`MAX_CELLS`] so
+//! memory stays bounded.
 //!
 //! **Storage.** Compressed rows: cell `c` lists `items[start[c]..start[c + 1]]`,
 //! built in two passes over the primitives (count, then fill).
@@ -26,7 +28,7 @@
 //! found, and the 3D-DDA steps along the axis whose next boundary (`t_next`) is
 //! nearest, adding `t_delta` to that axis's boundary parameter. The walk ends when
 //! the next cell is entered beyond `*t_max`, so a hit shrinking it ends the walk.
-//! A primitive in several cells is visited once per walk ([`Mailbox`]).
+//! A primitive in several cells is visited once per walk (`Mailbox`).
 //!
 //! **Why no cell the ray meets is skipped, in floating point.** Everything is
 //! measured in cell units: `u(x) = (x − min) · inv` per axis, with `inv` the
@@ -39,13 +41,13 @@
 //! their end exactly, so the pieces cover the range whatever the DDA's rounding);
 //! for each half of a piece the walk visits every cell between the smallest and
 //! largest `u` the half reaches on each axis, widened by a bound on all those
-//! roundings ([`Walk::span`]). Inside a piece that is the single cell the DDA
+//! roundings (`Walk::span`). Inside a piece that is the single cell the DDA
 //! is in; at its ends, where the DDA's own rounded `t` may be off, it is also
 //! the cell across the boundary, and the walk visits it rather than guess (the
 //! halves keep those two doubts from adding the diagonal cell between them, and
 //! a cell just visited is not visited again, so a walk visits about the cells
 //! the ray pierces and no more). Clipping aims just outside the grid on every
-//! side, by four times a bound on its own rounding ([`Walk::new`]). A ray
+//! side, by four times a bound on its own rounding (`Walk::new`). A ray
 //! parallel to an axis has a constant `u` on it and is clipped by whether that
 //! `u` lies in the grid so widened.
 
@@ -371,8 +373,8 @@ fn capped(mut res: [usize; 3]) -> [usize; 3] {
     res
 }
 
-/// A cell coordinate (already floored, maybe NaN-free but out of range) clamped
-/// to `0..n`.
+/// A floored cell coordinate clamped to `0..n` (a NaN, which a finite grid
+/// and finite boxes never make, to cell 0).
 #[inline]
 fn clamp_cell(u: f64, n: usize) -> usize {
     if u >= n as f64 {
