@@ -15,3 +15,4 @@ pub mod object; // a shape, its transform and its material
 pub mod cone; // the open cylinder or cone between two points: the unit cone placed by a transform
 pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)
 pub mod grid; // avoiding intersection tests another way: a uniform grid of cells, walked by the 3D-DDA
+pub mod octree; // the lecture's octree: a cube split in eight, cells walked nearest first
