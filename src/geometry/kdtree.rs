@@ -761,6 +761,171 @@ mod tests {
         );
     }
 
+    /// The same containment with rays from far away aimed (in f64) at corners
+    /// and edges of small boxes with full-precision coordinates: here `p − o`
+    /// rounds, so computed crossings of different planes can fall out of their
+    /// exact order, which only the widening in [`crossing`] makes up for (on the
+    /// tick grid above every subtraction is exact and a rounded quotient keeps
+    /// the order). Every value is a multiple of 2⁻³⁰ below 2³¹, so the exact
+    /// test runs on integers.
+    #[test]
+    fn far_rays_grazing_fine_boxes_lose_nothing() {
+        const GRID: f64 = 1073741824.0; // 2³⁰
+        let ticks = |v: DVec3| {
+            v.to_array().map(|c| {
+                let s = c * GRID;
+                assert!(s.fract() == 0.0 && s.abs() < 2f64.powi(62), "{c}");
+                s as i64
+            })
+        };
+        let fine = |rng: &mut fastrand::Rng, r: f64| {
+            let mut c = || ((rng.f64() * 2.0 - 1.0) * r * GRID).round() / GRID;
+            DVec3::new(c(), c(), c())
+        };
+        let mut rng = fastrand::Rng::with_seed(1);
+        let mut bounds = Vec::new();
+        for i in 0..2000 {
+            let (a, h) = (fine(&mut rng, 4.0), fine(&mut rng, 0.25).abs());
+            let mut b = Bounds {
+                min: a - h,
+                max: a + h,
+            };
+            if i % 9 == 0 {
+                b.max.z = b.min.z;
+            }
+            if i % 5 == 0 && i > 0 {
+                // Share a plane with an earlier box.
+                let other: Bounds = bounds[rng.usize(0..i)];
+                b.min.x = other.max.x;
+                b.max.x = b.max.x.max(b.min.x);
+            }
+            bounds.push(b);
+        }
+        let boxes: Vec<IBox> = bounds
+            .iter()
+            .map(|b| IBox {
+                min: ticks(b.min),
+                max: ticks(b.max),
+            })
+            .collect();
+        let tree = KdTree::build(&bounds);
+        let mut count = vec![0u32; boxes.len()];
+        for case in 0..3000 {
+            let far = |rng: &mut fastrand::Rng| {
+                // Far enough that a difference with a fine coordinate is a
+                // multiple of 2⁻³⁰ (its ULP is at least that), and mostly rounds.
+                let e = rng.i32(22..30);
+                let m = 1.0 + f64::from(rng.u32(0..1024)) / 1024.0;
+                if rng.bool() {
+                    m * 2f64.powi(e)
+                } else {
+                    -m * 2f64.powi(e)
+                }
+            };
+            let o = if case % 4 == 0 {
+                fine(&mut rng, 4.0)
+            } else {
+                DVec3::new(far(&mut rng), far(&mut rng), far(&mut rng))
+            };
+            let b = bounds[rng.usize(0..bounds.len())];
+            let pick = |rng: &mut fastrand::Rng, k: usize| match rng.u32(0..3) {
+                0 => b.min[k],
+                1 => b.max[k],
+                _ => (b.center()[k] * GRID).floor() / GRID,
+            };
+            let target = DVec3::new(pick(&mut rng, 0), pick(&mut rng, 1), pick(&mut rng, 2));
+            let mut d = target - o;
+            if case % 7 == 0 {
+                d[rng.usize(0..3)] = 0.0;
+            }
+            if d == DVec3::ZERO {
+                continue;
+            }
+            let ray = Ray::new(o, d);
+            let (seen, _) = visited(&tree, &ray, 0.0);
+            for &p in &seen {
+                count[p] += 1;
+            }
+            let (oi, di) = (ticks(o), ticks(d));
+            for (p, b) in boxes.iter().enumerate() {
+                assert!(
+                    count[p] == 1 || (count[p] == 0 && !exact_meets(b, oi, di, (0, 1))),
+                    "box {p} {:?} visited {} times: ray {o:?} + t·{d:?}",
+                    bounds[p],
+                    count[p]
+                );
+            }
+            for &p in &seen {
+                count[p] = 0;
+            }
+        }
+    }
+
+    /// Four boxes in a 2 × 2 square, so the cells' corners are the boxes'
+    /// corners, and rays from far off aimed (in f64) near the corner `c`
+    /// of the box at the origin, `c` just above (1, 1) with low bits set so
+    /// that `c − o` rounds: each ray passes within a rounding of the corner,
+    /// clipping the box or not, and whether the walk enters the box's cell turns
+    /// on the order of two crossings `t_x`, `t_y` equal but for rounding. (With
+    /// exact subtractions a correctly rounded quotient keeps that order, and no
+    /// widening would be needed.) It fails if the crossings are taken as exact.
+    #[test]
+    fn rays_through_a_cell_corner_keep_the_box() {
+        const GRID: f64 = 1073741824.0; // 2³⁰
+        let ticks = |v: DVec3| {
+            v.to_array().map(|c| {
+                let s = c * GRID;
+                assert!(s.fract() == 0.0 && s.abs() < 2f64.powi(62), "{c}");
+                s as i64
+            })
+        };
+        let mut rng = fastrand::Rng::with_seed(3);
+        let (mut met, mut missed) = (0, 0);
+        for case in 0..400 {
+            let fine = |rng: &mut fastrand::Rng| 1.0 + f64::from(rng.u32(1..1 << 20) | 1) / GRID;
+            let c = DVec3::new(fine(&mut rng), fine(&mut rng), 1.0);
+            // Four boxes tiling [0, 2]² meeting at `c`: the only planes to split
+            // on inside the scene pass through `c`.
+            let quad = |x: [f64; 2], y: [f64; 2]| Bounds {
+                min: DVec3::new(x[0], y[0], 0.0),
+                max: DVec3::new(x[1], y[1], 1.0),
+            };
+            let (lo_x, hi_x, lo_y, hi_y) = ([0.0, c.x], [c.x, 2.0], [0.0, c.y], [c.y, 2.0]);
+            let bounds = [
+                quad(lo_x, lo_y),
+                quad(hi_x, lo_y),
+                quad(lo_x, hi_y),
+                quad(hi_x, hi_y),
+            ];
+            let tree = KdTree::build(&bounds);
+            let a = IBox {
+                min: ticks(bounds[0].min),
+                max: ticks(bounds[0].max),
+            };
+            for _ in 0..50 {
+                // Up and to the left of the corner, at 2²²…2³⁰ so that a
+                // difference with `c` is a multiple of 2⁻³⁰ and mostly rounds.
+                let e = rng.i32(22..30);
+                let far = |rng: &mut fastrand::Rng| (1.0 + rng.f64()) * 2f64.powi(e);
+                let o = DVec3::new(-far(&mut rng), far(&mut rng), 0.5);
+                // Aimed a few 2⁻³⁰ off the corner: aimed right at it, the
+                // computed crossings would both be `(c − o) / (c − o)` = 1.
+                let off = |rng: &mut fastrand::Rng| f64::from(rng.i32(-4..=4)) / GRID;
+                let d = DVec3::new(c.x + off(&mut rng), c.y + off(&mut rng), 0.5) - o;
+                let must = exact_meets(&a, ticks(o), ticks(d), (0, 1));
+                let got = visited(&tree, &Ray::new(o, d), 0.0).0.contains(&0);
+                assert!(
+                    got || !must,
+                    "box lost: ray {o:?} + t·{d:?}, corner {c:?} ({case})"
+                );
+                met += usize::from(must);
+                missed += usize::from(!must);
+            }
+        }
+        // The rays fall on both sides of the corner.
+        assert!(met > 100 && missed > 100, "{met} met, {missed} missed");
+    }
+
     /// The nearest root of a sphere's quadratic above `t_min`.
     fn sphere_hit(c: DVec3, r: f64, ray: &Ray, t_min: f64) -> Option<f64> {
         let oc = ray.origin - c;
