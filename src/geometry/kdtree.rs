@@ -1032,10 +1032,10 @@ mod tests {
         assert_eq!((flow, calls), (ControlFlow::Break(()), vec![0]));
     }
 
-    /// A hit shrinking `t_max` ends the walk: far fewer steps than the whole
-    /// row, and the first cube is visited first. Fails if the walk ignores the
-    /// shrunk `t_max` when taking far children off its stack, or visits cells
-    /// back to front.
+    /// A hit shrinking `t_max` ends the walk: no cell beyond the hit is visited,
+    /// far fewer steps than the whole row, and the first cube is visited first.
+    /// Fails if the walk ignores the shrunk `t_max` when taking far children off
+    /// its stack, or visits cells back to front.
     #[test]
     fn a_near_hit_stops_the_walk() {
         let tree = KdTree::build(&row());
@@ -1049,13 +1049,22 @@ mod tests {
         let mut tested = TestCounts::default();
         let mut calls = 0;
         let mut t_max = f64::INFINITY;
+        let hit = std::cell::Cell::new(false);
         let _ = tree.traverse_seeing(
             &ray,
             0.0,
             &mut t_max,
             &mut tested,
-            |_, _| {},
+            |cell, _| {
+                // Once the hit at t = 0.75 (x = −0.25) is known, no cell the
+                // ray enters beyond it is visited.
+                assert!(
+                    !hit.get() || cell.min.x <= -0.25 + 1e-9,
+                    "{cell:?} visited beyond the hit"
+                );
+            },
             |p, t_max| {
+                hit.set(true);
                 calls += 1;
                 // The cube at x = p is entered at t = p + 0.75.
                 *t_max = t_max.min(p as f64 + 0.75);
