@@ -14,10 +14,13 @@
 //! primitive box strictly inside the cell, on all three axes, is a candidate;
 //! it costs `traversal + (1 − bonus)·isect·(P(below)·N_below + P(above)·N_above)`,
 //! the probabilities being the children's surface areas over the cell's and the
-//! bonus rewarding cutting off empty space. A node becomes a leaf when no
-//! split beats `isect·N` (three such bad refinements allowed on one path, as in
-//! pbrt), at depth `8 + 1.3·log₂ N`, or when the duplicated entries would pass
-//! [`ENTRY_CAP`] times the primitives (which bounds memory). The edges are
+//! bonus rewarding cutting off empty space. A node becomes a leaf when its
+//! best split would be the third on its path to cost more than a leaf
+//! (`isect·N`; pbrt's bad refinements), at depth `8 + 1.3·log₂ N`, or when the
+//! split would copy more straddling primitives than its share of the entry
+//! budget: all leaves together hold at most [`ENTRY_CAP`] entries per
+//! primitive (which bounds memory), the budget being shared between two
+//! children by their sizes so the subtrees built last are not starved. The edges are
 //! sorted at every node: O(N log² N) (Wald & Havran's first algorithm).
 //! A primitive goes to every child whose cell its box reaches into, and one
 //! lying in a splitting plane goes below ([`goes`]): every point of its box
