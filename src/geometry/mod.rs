@@ -16,3 +16,4 @@ pub mod cone; // the open cylinder or cone between two points: the unit cone pla
 pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)
 pub mod grid; // avoiding intersection tests another way: a uniform grid of cells, walked by the 3D-DDA
 pub mod octree; // the lecture's octree: a cube split in eight, cells walked nearest first
+pub mod kdtree; // the axis-aligned BSP tree: a k-d tree built by the surface area heuristic, walked front to back
