@@ -40,6 +40,13 @@ pub enum Accel {
     None,
     /// A bounding volume hierarchy over the objects.
     Bvh,
+    /// A uniform voxel grid, walked cell by cell (Amanatides & Woo's 3D-DDA).
+    Grid,
+    /// An octree, walked front to back.
+    Octree,
+    /// A BSP tree: the axis-aligned one, a k-d tree built with the surface
+    /// area heuristic, walked front to back with the ray's interval.
+    Bsp,
 }
 
 /// The intersection methods a ray is tested with.

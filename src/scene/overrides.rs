@@ -74,7 +74,7 @@ overrides! {
     /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].
     #[arg(long, value_enum)]
     triangle: TriangleMethod,
-    /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), auto (a hierarchy from 16 bounded objects up) [default: auto].
+    /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), grid (a uniform voxel grid), octree, bsp (a k-d tree), auto (a hierarchy from 16 bounded objects up) [default: auto].
     #[arg(long, value_enum)]
     accel: Accel,
 }

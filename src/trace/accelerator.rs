@@ -1,12 +1,17 @@
 //! Which objects a ray is tested against: all of them (the lecture's loop), or
-//! those in the leaves of a bounding volume hierarchy the ray reaches. Planes have
-//! no bounds and are tested by every ray either way.
+//! those a structure of the efficiency slide hands it: the leaves of a bounding
+//! volume hierarchy, the cells of a uniform grid, the leaves of an octree or of
+//! a BSP (k-d) tree the ray reaches. Planes have no bounds and are tested by
+//! every ray either way.
 
 use std::cell::Cell;
 use std::ops::ControlFlow;
 
 use crate::geometry::bvh::Bvh;
+use crate::geometry::grid::Grid;
 use crate::geometry::hit::TestCounts;
+use crate::geometry::kdtree::KdTree;
+use crate::geometry::octree::Octree;
 use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;
 use crate::methods::Accel;
@@ -20,10 +25,26 @@ pub const AUTO_MIN_OBJECTS: usize = 16;
 /// The objects of one scene, arranged for the rays to come.
 #[derive(Clone, Debug)]
 pub struct Accelerator {
-    /// Objects without bounds (planes), or every object when there is no hierarchy.
+    /// Objects without bounds (planes), or every object when there is no structure.
     always: Vec<u32>,
-    /// The hierarchy over the bounded objects; its leaves hold object indices.
-    bvh: Option<Bvh>,
+    /// The structure over the bounded objects.
+    structure: Option<Structure>,
+    /// The object index of each of the structure's primitives, where it does
+    /// not hand out object indices itself (all but the BVH).
+    names: Vec<u32>,
+}
+
+/// One of the efficiency slide's structures over the bounded objects.
+#[derive(Clone, Debug)]
+pub enum Structure {
+    /// A bounding volume hierarchy.
+    Bvh(Bvh),
+    /// A uniform grid.
+    Grid(Grid),
+    /// An octree.
+    Octree(Octree),
+    /// A k-d tree (the axis-aligned BSP tree).
+    Bsp(KdTree),
 }
 
 thread_local! {
@@ -37,16 +58,17 @@ impl Accelerator {
         BUILT.with(|b| b.set(b.get() + 1));
         let bounds: Vec<Option<Bounds>> = scene.objects.iter().map(|o| o.bounds()).collect();
         let bounded_count = bounds.iter().flatten().count();
-        let use_bvh = match scene.settings.accel {
-            Accel::None => false,
-            Accel::Bvh => true,
-            Accel::Auto => bounded_count >= AUTO_MIN_OBJECTS,
+        let accel = match scene.settings.accel {
+            Accel::Auto if bounded_count >= AUTO_MIN_OBJECTS => Accel::Bvh,
+            Accel::Auto => Accel::None,
+            other => other,
         };
         let all = 0..scene.objects.len() as u32;
-        if !use_bvh {
+        if accel == Accel::None {
             return Accelerator {
                 always: all.collect(),
-                bvh: None,
+                structure: None,
+                names: Vec::new(),
             };
         }
         let (bounded, always): (Vec<u32>, Vec<u32>) =
@@ -55,11 +77,26 @@ impl Accelerator {
             .iter()
             .map(|&i| bounds[i as usize].expect("bounded"))
             .collect();
-        let mut bvh = Bvh::build(&boxes);
-        bvh.relabel(|i| bounded[i as usize]);
+        let structure = match accel {
+            Accel::Grid => Structure::Grid(Grid::build(&boxes)),
+            Accel::Octree => Structure::Octree(Octree::build(&boxes)),
+            Accel::Bsp => Structure::Bsp(KdTree::build(&boxes)),
+            _ => {
+                let mut bvh = Bvh::build(&boxes);
+                bvh.relabel(|i| bounded[i as usize]);
+                Structure::Bvh(bvh)
+            }
+        };
+        // The BVH hands out the callers' indices (relabelled above); the others
+        // their own, translated through `bounded` as they visit.
+        let names = match structure {
+            Structure::Bvh(_) => Vec::new(),
+            _ => bounded,
+        };
         Accelerator {
             always,
-            bvh: Some(bvh),
+            structure: Some(structure),
+            names,
         }
     }
 
@@ -70,9 +107,17 @@ impl Accelerator {
         BUILT.with(Cell::get)
     }
 
-    /// The hierarchy, if there is one.
+    /// The hierarchy, if the structure is one.
     pub fn bvh(&self) -> Option<&Bvh> {
-        self.bvh.as_ref()
+        match &self.structure {
+            Some(Structure::Bvh(b)) => Some(b),
+            _ => None,
+        }
+    }
+
+    /// The structure over the bounded objects, if any.
+    pub fn structure(&self) -> Option<&Structure> {
+        self.structure.as_ref()
     }
 
     /// Calls `visit(object, t_max)` for every object the ray may meet in
@@ -105,9 +150,23 @@ impl Accelerator {
         for &i in &self.always {
             visit(i as usize, t_max)?;
         }
-        match &self.bvh {
-            None => ControlFlow::Continue(()),
-            Some(bvh) => bvh.traverse_seeing(&RayBox::new(ray), t_min, t_max, tested, seen, visit),
+        let Some(structure) = &self.structure else {
+            return ControlFlow::Continue(());
+        };
+        let names = &self.names;
+        match structure {
+            Structure::Bvh(bvh) => {
+                bvh.traverse_seeing(&RayBox::new(ray), t_min, t_max, tested, seen, visit)
+            }
+            Structure::Grid(g) => g.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
+                visit(names[i] as usize, t)
+            }),
+            Structure::Octree(o) => o.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
+                visit(names[i] as usize, t)
+            }),
+            Structure::Bsp(k) => k.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
+                visit(names[i] as usize, t)
+            }),
         }
     }
 }

@@ -13,5 +13,6 @@ mod recent;
 mod recursion;
 mod render;
 mod scenes;
+mod structures;
 mod stability;
 mod worked;
