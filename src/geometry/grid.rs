@@ -28,7 +28,7 @@
 //! found, and the 3D-DDA steps along the axis whose next boundary (`t_next`) is
 //! nearest, adding `t_delta` to that axis's boundary parameter. The walk ends when
 //! the next cell is entered beyond `*t_max`, so a hit shrinking it ends the walk.
-//! A primitive in several cells is visited once per walk (`Mailbox`).
+//! A primitive in several cells is visited once per walk ([`Mailbox`]).
 //!
 //! **Why no cell the ray meets is skipped, in floating point.** Everything is
 //! measured in cell units: `u(x) = (x − min) · inv` per axis, with `inv` the
@@ -54,10 +54,10 @@
 use std::cmp::Ordering;
 use std::ops::ControlFlow;
 
-use arrayvec::ArrayVec;
 use glam::DVec3;
 
 use crate::geometry::hit::TestCounts;
+use crate::geometry::mailbox::Mailbox;
 use crate::math::bounds::Bounds;
 use crate::math::float::gamma;
 use crate::math::ray::Ray;
@@ -537,52 +537,6 @@ impl Dda {
             self.cell[axis] = if self.up[axis] { c + 1 } else { c - 1 };
             self.t_next[axis] += self.t_delta[axis];
         }
-    }
-}
-
-/// The primitives a walk has visited, so one listed in several cells is visited
-/// once. The interface gives the walk no state of its own between rays, so the
-/// set lives for one call: the first [`Mailbox::FEW`] primitives in an inline
-/// list checked linearly (most rays in a Whitted scene meet a handful, and the
-/// list costs no allocation and no clearing), then a bitset of `N` bits, made
-/// only for a walk that gets that far.
-struct Mailbox {
-    few: ArrayVec<u32, { Mailbox::FEW }>,
-    bits: Vec<u64>,
-    n: usize,
-}
-
-impl Mailbox {
-    const FEW: usize = 32;
-
-    fn new(n: usize) -> Mailbox {
-        Mailbox {
-            few: ArrayVec::new(),
-            bits: Vec::new(),
-            n,
-        }
-    }
-
-    /// Whether `p` is new to this walk (and from now on it is not).
-    #[inline]
-    fn first_time(&mut self, p: u32) -> bool {
-        if self.bits.is_empty() {
-            if self.few.contains(&p) {
-                return false;
-            }
-            if !self.few.is_full() {
-                self.few.push(p);
-                return true;
-            }
-            self.bits = vec![0; self.n.div_ceil(64)];
-            for &q in &self.few {
-                self.bits[q as usize / 64] |= 1 << (q % 64);
-            }
-        }
-        let (word, bit) = (p as usize / 64, 1u64 << (p % 64));
-        let new = self.bits[word] & bit == 0;
-        self.bits[word] |= bit;
-        new
     }
 }
 

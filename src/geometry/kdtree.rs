@@ -47,10 +47,10 @@
 //! division, so they stay on their origin's side; a ray lying *in* the plane
 //! (`0/0`, NaN) visits both sides over its whole interval.
 
-use std::collections::HashSet;
 use std::ops::ControlFlow;
 
 use crate::geometry::hit::TestCounts;
+use crate::geometry::mailbox::Mailbox;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
 
@@ -196,7 +196,7 @@ impl KdTree {
         if !(enter <= leave && enter < f64::INFINITY) {
             return ControlFlow::Continue(());
         }
-        let mut mailbox = Mailbox::new();
+        let mut mailbox = Mailbox::new(self.primitives);
         // Far children still to visit: node, the ray's interval in it, its cell.
         let mut stack = arrayvec::ArrayVec::<(u32, f64, f64, Bounds), STACK>::new();
         let (mut at, mut a, mut b, mut cell) = (0u32, enter, leave, self.bounds);
@@ -208,7 +208,7 @@ impl KdTree {
             if node.axis == LEAF {
                 for &e in &self.entries[node.a as usize..node.b as usize] {
                     let p = e & !SHARED;
-                    if e & SHARED != 0 && !mailbox.first_visit(p) {
+                    if e & SHARED != 0 && !mailbox.first_time(p) {
                         continue;
                     }
                     visit(p as usize, t_max)?;
@@ -314,39 +314,6 @@ fn crossing(p: f64, o: f64, d: f64) -> (f64, f64) {
         (f64::NEG_INFINITY, f64::INFINITY)
     } else {
         (t, t)
-    }
-}
-
-/// The primitives already reported in one traversal, among those stored in
-/// several leaves: the first few in an array on the stack, any more in a set
-/// (a ray that walks a long way through big straddling primitives).
-struct Mailbox {
-    few: [u32; 16],
-    len: usize,
-    many: Option<HashSet<u32>>,
-}
-
-impl Mailbox {
-    fn new() -> Mailbox {
-        Mailbox {
-            few: [0; 16],
-            len: 0,
-            many: None,
-        }
-    }
-
-    /// Whether `p` is new to this traversal (and now recorded).
-    #[inline]
-    fn first_visit(&mut self, p: u32) -> bool {
-        if self.few[..self.len].contains(&p) {
-            return false;
-        }
-        if self.len < self.few.len() {
-            self.few[self.len] = p;
-            self.len += 1;
-            return true;
-        }
-        self.many.get_or_insert_with(HashSet::new).insert(p)
     }
 }
 

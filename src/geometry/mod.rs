@@ -14,6 +14,7 @@ pub mod unit_cone; // the open cylinder and cone in its own space: a quadratic, 
 pub mod object; // a shape, its transform and its material
 pub mod cone; // the open cylinder or cone between two points: the unit cone placed by a transform
 pub mod bvh; // avoiding intersection tests: a bounding volume hierarchy (node layout, build, traversal)
+pub mod mailbox; // a primitive listed in several cells is handed to a ray once
 pub mod grid; // avoiding intersection tests another way: a uniform grid of cells, walked by the 3D-DDA
 pub mod octree; // the lecture's octree: a cube split in eight, cells walked nearest first
 pub mod kdtree; // the axis-aligned BSP tree: a k-d tree built by the surface area heuristic, walked front to back

@@ -50,13 +50,13 @@
 //!    no overflow or underflow: coordinates below 10³⁰⁰ and parameters above
 //!    10⁻³⁰⁰.)
 
-use std::collections::HashSet;
 use std::ops::ControlFlow;
 
 use arrayvec::ArrayVec;
 use glam::{BVec3, DVec3};
 
 use crate::geometry::hit::TestCounts;
+use crate::geometry::mailbox::Mailbox;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
 
@@ -181,7 +181,7 @@ impl Octree {
         if slabs.enter(&root.cell, t_min, reach).is_none() {
             return ControlFlow::Continue(());
         }
-        let mut mailbox = Mailbox::default();
+        let mut mailbox = Mailbox::new(self.primitives);
         // Nodes still to walk into, with where the ray enters them.
         let mut stack = ArrayVec::<(u32, f64), STACK>::new();
         let mut at = 0u32;
@@ -193,7 +193,7 @@ impl Octree {
                 Kind::Leaf { start, len } => {
                     let start = start as usize;
                     for &p in &self.entries[start..start + len as usize] {
-                        if mailbox.first_visit(p) {
+                        if mailbox.first_time(p) {
                             visit(p as usize, t_max)?;
                         }
                     }
@@ -400,30 +400,6 @@ impl Slabs {
             }
         }
         (enter <= widen(leave) && enter <= reach).then_some(enter)
-    }
-}
-
-/// The primitives one traversal has visited: a short list searched in place,
-/// and a hash set once a ray has met more than it holds. Local to the call, so
-/// the octree stays shareable between threads and a `visit` may traverse
-/// another structure (or this one) without confusing the marks.
-#[derive(Default)]
-struct Mailbox {
-    recent: ArrayVec<u32, 32>,
-    more: Option<HashSet<u32>>,
-}
-
-impl Mailbox {
-    /// Marks `p`, returning whether it was unmarked.
-    #[inline]
-    fn first_visit(&mut self, p: u32) -> bool {
-        if self.recent.contains(&p) {
-            return false;
-        }
-        if self.recent.try_push(p).is_ok() {
-            return true;
-        }
-        self.more.get_or_insert_with(HashSet::new).insert(p)
     }
 }
 
