@@ -49,6 +49,25 @@ pub enum Accel {
     Bsp,
 }
 
+impl Accel {
+    /// What one traversal step of this structure is called (`plural` for any
+    /// count but one): a box tested in a bounding volume hierarchy, a cell
+    /// walked in a grid, a node walked in a tree. Meshes' own boxes count as
+    /// box tests under every structure.
+    pub fn step_word(self, plural: bool) -> &'static str {
+        match (self, plural) {
+            (Accel::Grid, false) => "grid cell walked",
+            (Accel::Grid, true) => "grid cells walked",
+            (Accel::Octree, false) => "octree node walked",
+            (Accel::Octree, true) => "octree nodes walked",
+            (Accel::Bsp, false) => "k-d tree node walked",
+            (Accel::Bsp, true) => "k-d tree nodes walked",
+            (_, false) => "box test",
+            (_, true) => "box tests",
+        }
+    }
+}
+
 /// The intersection methods a ray is tested with.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct IntersectionMethods {
@@ -172,4 +191,90 @@ pub enum Weights {
     Schlick,
     /// The exact Fresnel equations for a dielectric.
     Fresnel,
+}
+
+/// A size of a structure of the efficiency slide: `auto` (its builder's own
+/// rule) or a number given by the user (a grid's cells along the scene's
+/// longest side, a tree's deepest level). Written `auto` or a whole number, in
+/// a scene file as on the command line.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Level {
+    /// The builder's own rule.
+    #[default]
+    Auto,
+    /// This many.
+    Given(u32),
+}
+
+impl Serialize for Level {
+    fn serialize<S: serde::Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Level::Auto => s.serialize_str("auto"),
+            Level::Given(n) => s.serialize_u32(*n),
+        }
+    }
+}
+
+impl<'de> Deserialize<'de> for Level {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(LevelVisitor)
+    }
+}
+
+/// Reads a [`Level`] from `"auto"` or a whole number, with errors in words.
+struct LevelVisitor;
+
+impl serde::de::Visitor<'_> for LevelVisitor {
+    type Value = Level;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("auto or a whole number")
+    }
+
+    fn visit_u64<E: serde::de::Error>(self, n: u64) -> Result<Level, E> {
+        u32::try_from(n).map(Level::Given).map_err(|_| {
+            E::custom(format!(
+                "expected auto or a whole number up to 4294967295, got {n}"
+            ))
+        })
+    }
+
+    fn visit_i64<E: serde::de::Error>(self, n: i64) -> Result<Level, E> {
+        u64::try_from(n)
+            .map_err(|_| E::custom(format!("expected auto or a whole number, got {n}")))
+            .and_then(|n| self.visit_u64(n))
+    }
+
+    fn visit_f64<E: serde::de::Error>(self, x: f64) -> Result<Level, E> {
+        Err(E::custom(format!(
+            "expected auto or a whole number, got {x}"
+        )))
+    }
+
+    fn visit_str<E: serde::de::Error>(self, s: &str) -> Result<Level, E> {
+        s.parse().map_err(E::custom)
+    }
+}
+
+impl std::str::FromStr for Level {
+    type Err = String;
+
+    /// `auto` or a whole number.
+    fn from_str(s: &str) -> Result<Self, String> {
+        if s == "auto" {
+            return Ok(Level::Auto);
+        }
+        s.parse::<u32>()
+            .map(Level::Given)
+            .map_err(|_| format!("expected auto or a whole number, got '{s}'"))
+    }
+}
+
+impl std::fmt::Display for Level {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Level::Auto => f.write_str("auto"),
+            Level::Given(n) => write!(f, "{n}"),
+        }
+    }
 }

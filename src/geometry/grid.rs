@@ -74,6 +74,11 @@ pub const MAX_AXIS_SWEEP: usize = 1024;
 /// The most cells in all: 4 M cells, 16 MB of row starts.
 pub const MAX_CELLS: usize = 1 << 22;
 
+/// The most cells a user may ask for along the scene's longest side
+/// ([`Grid::build_with_side`]): 160³ cells stay under [`MAX_CELLS`], so a
+/// resolution asked for is always the one built.
+pub const MAX_GIVEN_SIDE: u32 = 160;
+
 /// A uniform grid over primitives `0..n`, known by their bounding boxes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Grid {
@@ -114,6 +119,21 @@ impl Grid {
             capped(res.map(|n| n.clamp(1, MAX_AXIS_SWEEP)))
         };
         Grid::with(bounds, scene, res)
+    }
+
+    /// Builds with `side` cells (1 to [`MAX_GIVEN_SIDE`]) along the scene box's
+    /// longest side and the other sides in proportion, rounded up (at least one
+    /// cell each), so cells are near cubes as with the automatic rule.
+    pub fn build_with_side(bounds: &[Bounds], side: u32) -> Grid {
+        let scene = bounds.iter().fold(Bounds::EMPTY, |a, b| a.union(*b));
+        let d = scene.max - scene.min;
+        let longest = d.max_element();
+        let side = side.clamp(1, MAX_GIVEN_SIDE);
+        let res = [0, 1, 2].map(|a| {
+            let share = if longest > 0.0 { d[a] / longest } else { 1.0 };
+            ((f64::from(side) * share).ceil() as usize).clamp(1, side as usize)
+        });
+        Grid::build_with_resolution(bounds, res)
     }
 
     fn with(bounds: &[Bounds], scene: Bounds, res: [usize; 3]) -> Grid {

@@ -107,8 +107,15 @@ pub struct KdTree {
 }
 
 impl KdTree {
-    /// Builds over primitives `0..n` known by their (finite, non-empty) bounds.
+    /// Builds over primitives `0..n` known by their (finite, non-empty) bounds,
+    /// at most `8 + 1.3·log₂ N` levels deep.
     pub fn build(bounds: &[Bounds]) -> KdTree {
+        KdTree::build_to_depth(bounds, None)
+    }
+
+    /// [`KdTree::build`] with leaves at most `max_depth` levels below the root
+    /// (`None`: pbrt's `8 + 1.3·log₂ N`), clamped so the walk's stack holds.
+    pub fn build_to_depth(bounds: &[Bounds], max_depth: Option<u32>) -> KdTree {
         let n = bounds.len();
         let mut tree = KdTree {
             nodes: Vec::new(),
@@ -127,7 +134,8 @@ impl KdTree {
         );
         tree.bounds = bounds.iter().fold(Bounds::EMPTY, |a, &b| a.union(b));
         // pbrt: 8 + 1.3·Log2Int(N), rounded.
-        tree.max_depth = (8.0 + 1.3 * f64::from(n.ilog2())).round() as u32;
+        let rule = (8.0 + 1.3 * f64::from(n.ilog2())).round() as u32;
+        tree.max_depth = max_depth.unwrap_or(rule).min(STACK as u32 - 1);
         let mut builder = Builder {
             bounds,
             nodes: Vec::new(),

@@ -5,11 +5,17 @@
 //! nearest cell first.
 //!
 //! **Build.** A node becomes a leaf when it holds at most [`LEAF_SIZE`]
-//! primitives, when it is [`MAX_DEPTH`] levels deep, when splitting would not
-//! make its fullest child hold fewer primitives than it does (every primitive
-//! overlaps every child: splitting again would only copy the list eight times,
-//! level after level), or when the split would take the entries of all leaves
-//! past [`Octree::entry_cap`]. A primitive goes into every child whose closed
+//! primitives, when it is [`MAX_DEPTH`] levels deep (or as deep as asked), when
+//! every one of its primitives overlaps every child (splitting again would only
+//! copy the list eight times, level after level), or when the split would take
+//! the entries of all leaves past [`Octree::entry_cap`]. Nodes are split level
+//! by level (breadth first), so when the cap stops the splitting it stops it at
+//! about one depth everywhere; built depth first, the first corner of a scene
+//! could spend the whole budget and leave the rest in leaves of thousands. (A
+//! first version also stopped when all of a node's primitives fell into one
+//! child: the sphereflake's 7,382 spheres, all in one corner of the root's
+//! child, then stayed in one leaf and its rays tested 2,820 primitives each.)
+//! A primitive goes into every child whose closed
 //! box its closed box overlaps (touching counts). The nodes live in one `Vec`,
 //! the eight children of a node consecutive; the leaves' lists in one `Vec<u32>`.
 //!
@@ -69,9 +75,13 @@ pub const LEAF_SIZE: usize = 8;
 /// ones could not, only copying their lists, and the depth bounds the stack.
 pub const MAX_DEPTH: u32 = 10;
 
+/// The deepest an octree may be asked to go ([`Octree::build_to_depth`]): its
+/// cells are then 2⁻⁴⁸ of the scene's side, near the resolution of `f64`.
+pub const DEEPEST: u32 = 48;
+
 /// Room on the traversal stack: at most seven children pushed per level (eight
 /// met, the nearest walked into), one level below another.
-const STACK: usize = 7 * (MAX_DEPTH as usize + 1) + 1;
+const STACK: usize = 7 * (DEEPEST as usize + 1) + 1;
 
 /// The widening of a slab test's leaving parameter and of `t_max`: `32ε`
 /// (see the module documentation; γ(6) ≈ 3ε is what the test needs).
@@ -105,6 +115,8 @@ pub struct Octree {
     primitives: usize,
     /// The deepest leaf's level (the root's is 0).
     depth: u32,
+    /// The deepest level allowed.
+    max_depth: u32,
 }
 
 impl Octree {
@@ -115,8 +127,16 @@ impl Octree {
         16 * n + 1024
     }
 
-    /// Builds the octree over primitives with these (finite, non-empty) bounds.
+    /// Builds the octree over primitives with these (finite, non-empty) bounds,
+    /// at most [`MAX_DEPTH`] levels deep.
     pub fn build(bounds: &[Bounds]) -> Octree {
+        Octree::build_to_depth(bounds, MAX_DEPTH)
+    }
+
+    /// [`Octree::build`] with leaves at most `max_depth` levels below the root
+    /// (clamped to [`DEEPEST`]); 0 makes the root a leaf of every primitive.
+    pub fn build_to_depth(bounds: &[Bounds], max_depth: u32) -> Octree {
+        let max_depth = max_depth.min(DEEPEST);
         let n = bounds.len();
         if n == 0 {
             return Octree {
@@ -124,6 +144,7 @@ impl Octree {
                 entries: Vec::new(),
                 primitives: 0,
                 depth: 0,
+                max_depth,
             };
         }
         assert!(
@@ -147,14 +168,16 @@ impl Octree {
             entries: Vec::new(),
             live: n,
             cap: Octree::entry_cap(n),
+            max_depth,
             depth: 0,
         };
-        builder.node(0, (0..n as u32).collect(), 0);
+        builder.build((0..n as u32).collect());
         Octree {
             nodes: builder.nodes,
             entries: builder.entries,
             primitives: n,
             depth: builder.depth,
+            max_depth,
         }
     }
 
@@ -259,9 +282,9 @@ impl Octree {
             fullest,
             LEAF_SIZE,
             self.depth,
-            MAX_DEPTH,
+            self.max_depth,
             side,
-            side / f64::from(1u32 << self.depth),
+            side / 2f64.powi(self.depth as i32),
             self.entries.len(),
             self.entries.len() as f64 / self.primitives as f64,
             Octree::entry_cap(self.primitives),
@@ -277,43 +300,71 @@ struct Builder<'a> {
     entries: Vec<u32>,
     live: usize,
     cap: usize,
+    max_depth: u32,
     depth: u32,
 }
 
 impl Builder<'_> {
-    /// Makes node `at` (its cell already set) over `prims`, `depth` levels down.
-    fn node(&mut self, at: usize, prims: Vec<u32>, depth: u32) {
-        self.depth = self.depth.max(depth);
-        if prims.len() > LEAF_SIZE && depth < MAX_DEPTH {
-            let cells = octants(&self.nodes[at].cell);
-            let parts: [Vec<u32>; 8] = cells.map(|cell| {
-                prims
-                    .iter()
-                    .copied()
-                    .filter(|&p| overlaps(&self.boxes[p as usize], &cell))
-                    .collect()
-            });
-            let fullest = parts.iter().map(Vec::len).max().unwrap_or(0);
-            let live = self.live - prims.len() + parts.iter().map(Vec::len).sum::<usize>();
-            if fullest < prims.len() && live <= self.cap {
-                self.live = live;
-                let first = self.nodes.len();
-                self.nodes.extend(cells.iter().map(|&cell| Node {
-                    cell,
-                    kind: Kind::Leaf { start: 0, len: 0 },
-                }));
-                self.nodes[at].kind = Kind::Inner {
-                    first: first as u32,
-                };
-                drop(prims);
-                for (i, part) in parts.into_iter().enumerate() {
-                    self.node(first + i, part, depth + 1);
+    /// Makes the root (node 0, its cell set) over `all`, and every node under
+    /// it, a level at a time.
+    fn build(&mut self, all: Vec<u32>) {
+        let mut level = vec![(0usize, all)];
+        let mut depth = 0;
+        while !level.is_empty() {
+            self.depth = depth;
+            let mut next = Vec::new();
+            for (at, prims) in level {
+                match self.split(at, &prims, depth) {
+                    Some(children) => next.extend(children),
+                    None => self.leaf(at, &prims),
                 }
-                return;
             }
+            level = next;
+            depth += 1;
         }
+    }
+
+    /// Splits node `at` over `prims`, `depth` levels down, into eight children
+    /// (returned with their primitives), unless it should stay a leaf.
+    fn split(&mut self, at: usize, prims: &[u32], depth: u32) -> Option<Vec<(usize, Vec<u32>)>> {
+        if prims.len() <= LEAF_SIZE || depth >= self.max_depth {
+            return None;
+        }
+        let cells = octants(&self.nodes[at].cell);
+        let parts: [Vec<u32>; 8] = cells.map(|cell| {
+            prims
+                .iter()
+                .copied()
+                .filter(|&p| overlaps(&self.boxes[p as usize], &cell))
+                .collect()
+        });
+        let everywhere = parts.iter().all(|part| part.len() == prims.len());
+        let live = self.live - prims.len() + parts.iter().map(Vec::len).sum::<usize>();
+        if everywhere || live > self.cap {
+            return None;
+        }
+        self.live = live;
+        let first = self.nodes.len();
+        self.nodes.extend(cells.iter().map(|&cell| Node {
+            cell,
+            kind: Kind::Leaf { start: 0, len: 0 },
+        }));
+        self.nodes[at].kind = Kind::Inner {
+            first: first as u32,
+        };
+        Some(
+            parts
+                .into_iter()
+                .enumerate()
+                .map(|(i, part)| (first + i, part))
+                .collect(),
+        )
+    }
+
+    /// Makes node `at` a leaf listing `prims`.
+    fn leaf(&mut self, at: usize, prims: &[u32]) {
         let start = self.entries.len() as u32;
-        self.entries.extend_from_slice(&prims);
+        self.entries.extend_from_slice(prims);
         self.nodes[at].kind = Kind::Leaf {
             start,
             len: prims.len() as u32,

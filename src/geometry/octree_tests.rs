@@ -444,3 +444,37 @@ fn memory_stays_bounded() {
     listed.dedup();
     assert_eq!(listed, (0..3000).collect::<Vec<u32>>());
 }
+
+/// A cluster in one corner of a big scene (the sphereflake over its floor):
+/// the octree must keep splitting into the corner until the leaves are small,
+/// not stop because one child holds everything; and a depth asked for is kept.
+#[test]
+fn a_cluster_in_one_corner_is_split_down_to_small_leaves() {
+    let mut rng = fastrand::Rng::with_seed(5);
+    let mut boxes: Vec<Bounds> = (0..2000)
+        .map(|_| cube(point(&mut rng, 1.0, 3.0), 0.01))
+        .collect();
+    boxes.push(cube(DVec3::splat(50.0), 50.0)); // the "floor": the whole scene
+    let tree = Octree::build(&boxes);
+    let fullest = tree
+        .nodes
+        .iter()
+        .filter_map(|n| match n.kind {
+            Kind::Leaf { len, .. } => Some(len as usize),
+            Kind::Inner { .. } => None,
+        })
+        .max()
+        .unwrap();
+    // Eight spheres and the floor in a leaf at most, or a leaf at the depth limit.
+    assert!(
+        fullest <= LEAF_SIZE + 1 || tree.depth == MAX_DEPTH,
+        "{}",
+        tree.describe()
+    );
+    assert!(tree.depth >= 7, "{}", tree.describe());
+    for asked in [0, 3] {
+        let shallow = Octree::build_to_depth(&boxes, asked);
+        assert_eq!(shallow.depth, asked, "{}", shallow.describe());
+    }
+    assert_eq!(Octree::build_to_depth(&boxes, 1_000_000).max_depth, DEEPEST);
+}

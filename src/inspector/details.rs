@@ -9,6 +9,7 @@ use super::app::App;
 use super::colors::swatch;
 use super::reveal::Progress;
 use super::selection::Item;
+use crate::methods::Accel;
 use crate::tree::ray_tree::RayNode;
 use crate::tree::steps::StepKind;
 use crate::views::explain;
@@ -95,7 +96,7 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
     if app.step().is_some() {
         let revealed = app.revealed();
         let p = revealed.node(item.node());
-        let mut out = ray_details(node);
+        let mut out = ray_details(node, trace.structure);
         if revealed.camera {
             out.extend(camera);
         }
@@ -103,14 +104,14 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
             out.extend(explained(explain::test(test, kind_of(test), node)));
         }
         if p.hit {
-            out.extend(hit_details(node));
+            out.extend(hit_details(node, trace.structure));
         }
         out.extend(working(node, p, tc));
         return out;
     }
     // The results first (the ray, its hit, its color), then how each was worked out.
-    let mut out = ray_details(node);
-    out.extend(hit_details(node));
+    let mut out = ray_details(node, trace.structure);
+    out.extend(hit_details(node, trace.structure));
     out.extend(color_sum(node, tc));
     out.push(Line::from(""));
     out.extend(camera);
@@ -153,7 +154,7 @@ fn shadow_details(node: &RayNode, k: usize) -> Vec<Line<'static>> {
 }
 
 /// The ray itself: where it starts, where it goes, what `t` counts.
-fn ray_details(node: &RayNode) -> Vec<Line<'static>> {
+fn ray_details(node: &RayNode, structure: Accel) -> Vec<Line<'static>> {
     vec![
         Line::from(format!(
             "{} ray · depth {} · weight {}",
@@ -172,19 +173,19 @@ fn ray_details(node: &RayNode) -> Vec<Line<'static>> {
                 node.t_max.map_or("∞".to_owned(), num)
             ),
         ),
-        row("tested", searched(&node.tested)),
+        row("tested", searched(&node.tested, structure)),
     ]
 }
 
 /// What the ray hit, on which side, with the normal the formulas use.
-fn hit_details(node: &RayNode) -> Vec<Line<'static>> {
+fn hit_details(node: &RayNode, structure: Accel) -> Vec<Line<'static>> {
     let Some(h) = &node.hit else {
         return vec![row(
             "hit",
             format!("nothing: background {}", color(node.sum.color)),
         )];
     };
-    explained(explain::hit(h, &searched(&node.tested)))
+    explained(explain::hit(h, &searched(&node.tested, structure)))
 }
 
 /// How the hit's color was worked out, as far as `p` has come: the shadow

@@ -7,7 +7,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::methods::{Accel, Antialiasing, Offset, SphereMethod, TriangleMethod, Weights};
+use crate::methods::{Accel, Antialiasing, Level, Offset, SphereMethod, TriangleMethod, Weights};
 use crate::scene::settings::RenderSettings;
 
 /// Declares [`Overrides`], one `Option` per listed setting, and its `apply`,
@@ -77,6 +77,12 @@ overrides! {
     /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), grid (a uniform voxel grid), octree, bsp (a k-d tree), auto (a hierarchy from 16 bounded objects up) [default: auto].
     #[arg(long, value_enum)]
     accel: Accel,
+    /// With --accel grid: cells along the scene's longest side, 1 to 160, the other sides in proportion; auto gives about four cells an object [default: auto].
+    #[arg(long, value_name = "auto|N")]
+    grid_res: Level,
+    /// With --accel octree or bsp: the tree's deepest level, 0 (one leaf) to 48; auto is 10 for the octree, 8 + 1.3·log₂(objects) for the k-d tree [default: auto].
+    #[arg(long, value_name = "auto|D")]
+    tree_depth: Level,
 }
 
 /// A benchmark's fixed way of rendering, so that counts and times compare
@@ -132,6 +138,8 @@ mod tests {
             },
             triangle: TriangleMethod::MollerTrumbore,
             accel: Accel::Bvh,
+            grid_res: Level::Given(7),
+            tree_depth: Level::Given(3),
         }
     }
 

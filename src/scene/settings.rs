@@ -1,8 +1,9 @@
 //! Render settings: how big the image is, how pixels are sampled, how deep the
 //! recursion goes, and which method each numerical step uses.
 
+use crate::geometry::{grid, octree};
 use crate::methods::{
-    Accel, Antialiasing, IntersectionMethods, Offset, SphereMethod, TriangleMethod, Weights,
+    Accel, Antialiasing, IntersectionMethods, Level, Offset, SphereMethod, TriangleMethod, Weights,
 };
 use crate::scene::limits;
 
@@ -35,6 +36,14 @@ pub struct RenderSettings {
     /// Which acceleration structure finds the objects a ray may hit.
     #[serde(default)]
     pub accel: Accel,
+    /// The grid's cells along the scene's longest side, the other sides in
+    /// proportion (`auto`: about four cells an object, see `geometry::grid`).
+    #[serde(default)]
+    pub grid_res: Level,
+    /// The deepest level of the octree or the k-d tree (`auto`: 10 for the
+    /// octree, `8 + 1.3·log₂ N` for the k-d tree).
+    #[serde(default)]
+    pub tree_depth: Level,
 }
 
 impl RenderSettings {
@@ -194,6 +203,25 @@ impl RenderSettings {
                 ),
             ));
         }
+        if let Level::Given(n) = self.grid_res
+            && !(1..=grid::MAX_GIVEN_SIDE).contains(&n)
+        {
+            return Err((
+                "grid_res",
+                format!(
+                    "must be auto or 1 to {} cells along the scene's longest side, got {n}",
+                    grid::MAX_GIVEN_SIDE
+                ),
+            ));
+        }
+        if let Level::Given(d) = self.tree_depth
+            && d > octree::DEEPEST
+        {
+            return Err((
+                "tree_depth",
+                format!("must be auto or 0 to {} levels, got {d}", octree::DEEPEST),
+            ));
+        }
         if let Antialiasing::Adaptive { threshold, levels } = self.aa
             && !(threshold.is_finite() && threshold >= 0.0 && levels <= 6)
         {
@@ -241,6 +269,8 @@ impl Default for RenderSettings {
             aa: Antialiasing::default(),
             triangle: TriangleMethod::default(),
             accel: Accel::default(),
+            grid_res: Level::Auto,
+            tree_depth: Level::Auto,
         }
     }
 }

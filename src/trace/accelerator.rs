@@ -11,10 +11,10 @@ use crate::geometry::bvh::Bvh;
 use crate::geometry::grid::Grid;
 use crate::geometry::hit::TestCounts;
 use crate::geometry::kdtree::KdTree;
-use crate::geometry::octree::Octree;
+use crate::geometry::octree::{self, Octree};
 use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;
-use crate::methods::Accel;
+use crate::methods::{Accel, Level};
 use crate::scene::Scene;
 
 /// With [`Accel::Auto`], scenes with at least this many bounded objects get a
@@ -77,10 +77,20 @@ impl Accelerator {
             .iter()
             .map(|&i| bounds[i as usize].expect("bounded"))
             .collect();
+        let depth = match scene.settings.tree_depth {
+            Level::Auto => None,
+            Level::Given(d) => Some(d),
+        };
         let structure = match accel {
-            Accel::Grid => Structure::Grid(Grid::build(&boxes)),
-            Accel::Octree => Structure::Octree(Octree::build(&boxes)),
-            Accel::Bsp => Structure::Bsp(KdTree::build(&boxes)),
+            Accel::Grid => Structure::Grid(match scene.settings.grid_res {
+                Level::Auto => Grid::build(&boxes),
+                Level::Given(side) => Grid::build_with_side(&boxes, side),
+            }),
+            Accel::Octree => Structure::Octree(Octree::build_to_depth(
+                &boxes,
+                depth.unwrap_or(octree::MAX_DEPTH),
+            )),
+            Accel::Bsp => Structure::Bsp(KdTree::build_to_depth(&boxes, depth)),
             _ => {
                 let mut bvh = Bvh::build(&boxes);
                 bvh.relabel(|i| bounded[i as usize]);
@@ -118,6 +128,18 @@ impl Accelerator {
     /// The structure over the bounded objects, if any.
     pub fn structure(&self) -> Option<&Structure> {
         self.structure.as_ref()
+    }
+
+    /// Which structure the rays go through: the setting, with `auto` resolved
+    /// (never [`Accel::Auto`]).
+    pub fn kind(&self) -> Accel {
+        match &self.structure {
+            None => Accel::None,
+            Some(Structure::Bvh(_)) => Accel::Bvh,
+            Some(Structure::Grid(_)) => Accel::Grid,
+            Some(Structure::Octree(_)) => Accel::Octree,
+            Some(Structure::Bsp(_)) => Accel::Bsp,
+        }
     }
 
     /// Calls `visit(object, t_max)` for every object the ray may meet in

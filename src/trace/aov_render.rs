@@ -55,7 +55,14 @@ pub fn render_aov(
     Ok(AovImage {
         aov,
         name: aov.name(scene),
-        title: aov.title(scene),
+        title: match aov {
+            // What the counts count depends on the structure built.
+            Aov::Tests => format!(
+                "intersection tests per pixel ({} + objects)",
+                tracer.accelerator().kind().step_word(true)
+            ),
+            _ => aov.title(scene),
+        },
         key: aov.key(scene),
         undefined: aov.undefined(),
         note: aov.note(),

@@ -8,6 +8,7 @@ use glam::DVec3;
 use serde::{Deserialize, Serialize};
 
 use crate::io::image::rgb8;
+use crate::methods::Accel;
 use crate::scene::Scene;
 use crate::scene::settings::RenderSettings;
 use crate::scene::source::SceneSource;
@@ -18,7 +19,7 @@ use crate::tree::steps::{Step, StepKind, steps};
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 8;
+pub const VERSION: u32 = 9;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -32,6 +33,9 @@ pub struct TraceDocument {
     pub scene: SceneSource,
     /// The render settings in force.
     pub settings: RenderSettings,
+    /// The structure the rays went through: `settings.accel` with `auto`
+    /// resolved for this scene. It names what a node's `boxes` are.
+    pub structure: Accel,
     /// The camera, as the lecture names it.
     pub camera: CameraRecord,
     /// The scene's objects, by index. Shared: the inspector's traces of one
@@ -131,10 +135,23 @@ pub struct Sample {
 }
 
 impl TraceDocument {
-    /// A document of `samples` traced in `scene`, with the scene's objects and
-    /// lights named; the caller sets `pixel` or `ray`.
-    pub fn new(scene: &Scene, source: SceneSource, color: DVec3, samples: Vec<Sample>) -> Self {
-        Self::sharing(object_entries(scene), scene, source, color, samples)
+    /// A document of `samples` traced in `scene` through `structure`, with
+    /// the scene's objects and lights named; the caller sets `pixel` or `ray`.
+    pub fn new(
+        scene: &Scene,
+        structure: Accel,
+        source: SceneSource,
+        color: DVec3,
+        samples: Vec<Sample>,
+    ) -> Self {
+        Self::sharing(
+            object_entries(scene),
+            scene,
+            structure,
+            source,
+            color,
+            samples,
+        )
     }
 
     /// [`TraceDocument::new`] with `objects`, the scene's entries made
@@ -142,6 +159,7 @@ impl TraceDocument {
     pub fn sharing(
         objects: Arc<[ObjectEntry]>,
         scene: &Scene,
+        structure: Accel,
         source: SceneSource,
         color: DVec3,
         samples: Vec<Sample>,
@@ -153,6 +171,7 @@ impl TraceDocument {
             version: VERSION,
             scene: source,
             settings: s,
+            structure,
             camera: camera_record(&scene.camera(), &scene.camera),
             objects,
             lights: scene

@@ -177,7 +177,14 @@ pub fn pixel_with(
         .collect();
     Ok(TraceDocument {
         pixel: Some(Pixel { x, y }),
-        ..TraceDocument::sharing(objects, scene, source, color, samples)
+        ..TraceDocument::sharing(
+            objects,
+            scene,
+            tracer.accelerator().kind(),
+            source,
+            color,
+            samples,
+        )
     })
 }
 
@@ -192,7 +199,8 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
     }
     worst_case_rays(&scene.settings, 1, || "the ray".to_owned())?;
     let mut rec = TreeRecorder::new(scene, TUnit::Direction);
-    let color = Tracer::new(scene).trace_given(ray, &mut rec);
+    let tracer = Tracer::new(scene);
+    let color = tracer.trace_given(ray, &mut rec);
     let tree = rec.trees.pop().unwrap_or_default();
     let samples = vec![Sample {
         index: 0,
@@ -206,7 +214,7 @@ pub fn ray(scene: &Scene, source: SceneSource, ray: Ray) -> Result<TraceDocument
             origin: ray.origin,
             direction: ray.dir,
         }),
-        ..TraceDocument::new(scene, source, color, samples)
+        ..TraceDocument::new(scene, tracer.accelerator().kind(), source, color, samples)
     })
 }
 

@@ -236,7 +236,13 @@ fn printable(at: &str, name: &str) -> Result<(), String> {
 /// Checks that `scene` has the objects and lights `trace` names, in order, as
 /// the trace describes them, and every mesh face a hit names.
 pub fn against_scene(trace: &TraceDocument, scene: &Scene) -> Result<(), String> {
-    let now = TraceDocument::new(scene, SceneSource::new("", ""), trace.color, Vec::new());
+    let now = TraceDocument::new(
+        scene,
+        trace.structure,
+        SceneSource::new("", ""),
+        trace.color,
+        Vec::new(),
+    );
     if now.objects.len() != trace.objects.len() || now.lights.len() != trace.lights.len() {
         return Err(format!(
             "the trace names {} objects and {} lights, the scene has {} and {}",

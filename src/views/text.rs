@@ -8,7 +8,7 @@
 use std::fmt::Write;
 
 use crate::geometry::hit::TestCounts;
-use crate::methods::Antialiasing;
+use crate::methods::{Accel, Antialiasing};
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{
     Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, SumRecord,
@@ -111,12 +111,12 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
         }
         StepKind::Hit => node.hit.as_ref().map_or_else(
             || one(String::new()),
-            |h| explain::hit(h, &searched(&node.tested)),
+            |h| explain::hit(h, &searched(&node.tested, trace.structure)),
         ),
         StepKind::Miss => one(format!(
             "no hit: the ray returns the background {} ({})",
             color(node.sum.color),
-            searched(&node.tested)
+            searched(&node.tested, trace.structure)
         )),
         StepKind::Shadow(k) => one(explain::shadow(&node.shadow_rays[k])),
         StepKind::Local => node
@@ -210,16 +210,16 @@ fn returned_to(tree: &RayTree, node: &RayNode) -> String {
     })
 }
 
-/// How much searching a ray's closest hit took.
-pub fn searched(t: &TestCounts) -> String {
+/// How much searching a ray's closest hit took, through `structure`.
+pub fn searched(t: &TestCounts, structure: Accel) -> String {
     let s = |n: u32| if n == 1 { "" } else { "s" };
     if t.boxes == 0 {
         format!("{} object test{}", t.primitives, s(t.primitives))
     } else {
         format!(
-            "{} box test{} and {} primitive test{}",
+            "{} {} and {} primitive test{}",
             t.boxes,
-            s(t.boxes),
+            structure.step_word(t.boxes != 1),
             t.primitives,
             s(t.primitives)
         )

@@ -5,6 +5,7 @@ use std::time::Instant;
 
 use anyhow::{Context, Result, bail};
 use raytree::io::image_file;
+use raytree::methods::Accel;
 use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
@@ -66,10 +67,12 @@ pub fn run(args: &Args) -> Result<()> {
     );
     let s = &scene.settings;
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
+    let mut structure = Accel::None;
     let (image, rays) = if args.stats {
         let building = Instant::now();
         let tracer = pool.install(|| Tracer::new(&scene));
         let build_seconds = building.elapsed().as_secs_f64();
+        structure = tracer.accelerator().kind();
         let tracing = Instant::now();
         let (image, rays) = pool
             .install(|| {
@@ -108,7 +111,7 @@ pub fn run(args: &Args) -> Result<()> {
     if let Some((r, times)) = rays {
         // The counts are what --stats asked for: standard output, as strip and
         // forward print their figures; notes stay on standard error.
-        output::print(stats(&r, &times))?;
+        output::print(stats(&r, &times, structure))?;
     }
     Ok(())
 }
@@ -125,11 +128,12 @@ struct Times {
 /// primary rays that hit something, the SPD's "eye hit rays"), the
 /// intersection tests they made (the cost a hierarchy saves), the speed of
 /// the tracing, and the time split into preprocessing and tracing.
-fn stats(r: &RayCounter, t: &Times) -> String {
+fn stats(r: &RayCounter, t: &Times, structure: Accel) -> String {
     let rays = r.total().max(1);
+    let per_ray = |n: u64| num(n as f64 / rays as f64);
     format!(
         "{} rays: {} primary ({} hit), {} shadow, {} reflected, {} refracted; {} M rays/s\n\
-         {} tests: {} bounding boxes, {} primitives; {} per ray\n\
+         {} tests: {} {}, {} primitives; {} per ray{}, {}\n\
          time: {} s preprocessing ({} s reading, {} s building), {} s tracing\n",
         thousands(r.total()),
         thousands(r.primary),
@@ -140,8 +144,27 @@ fn stats(r: &RayCounter, t: &Times) -> String {
         num(r.total() as f64 / t.tracing / 1e6),
         thousands(r.tests()),
         thousands(r.boxes),
+        structure.step_word(r.boxes != 1),
         thousands(r.primitives),
-        num(r.tests() as f64 / rays as f64),
+        per_ray(r.tests()),
+        if r.boxes == 0 {
+            String::new()
+        } else {
+            format!(
+                " ({} {} and {} primitives)",
+                per_ray(r.boxes),
+                structure.step_word(true),
+                per_ray(r.primitives)
+            )
+        },
+        match structure {
+            Accel::None => "testing every object (--accel none)",
+            Accel::Bvh => "through a bounding volume hierarchy (--accel bvh)",
+            Accel::Grid => "through a uniform grid (--accel grid)",
+            Accel::Octree => "through an octree (--accel octree)",
+            Accel::Bsp => "through a k-d tree (--accel bsp)",
+            Accel::Auto => unreachable!("a built structure is never auto"),
+        },
         seconds(t.reading + t.building),
         seconds(t.reading),
         seconds(t.building),

@@ -137,6 +137,7 @@ pub fn layout_of(
         window: (DVec2::ZERO, DVec2::ZERO),
         near_misses,
         boxes,
+        structure: trace.structure,
     };
     lay.window = options
         .window

@@ -13,6 +13,7 @@ use crate::figure::clip::{clip_line, clip_segment};
 use crate::figure::labels::{self, Placed, PxRect};
 use crate::figure::pen::Rgb;
 use crate::figure::pen::{Pen, palette};
+use crate::methods::Accel;
 use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::RayKind;
@@ -430,7 +431,14 @@ fn draw_legend(fig: &mut Figure, lay: &Layout, scale: &Scale) -> (PxRect, Vec<St
     }
     let (tested, met) = boxes::counts(&lay.boxes);
     let (met_text, missed_text) = (
-        format!("box the ray entered ({met})"),
+        match lay.structure {
+            Accel::Grid => format!("grid cell the ray walked ({met})"),
+            Accel::Octree => format!("octree cube the ray walked ({met})"),
+            Accel::Bsp => {
+                format!("k-d tree cell the ray walked, sides on splitting planes ({met})")
+            }
+            _ => format!("box the ray entered ({met})"),
+        },
         format!("box tested, missed ({})", tested - met),
     );
     if met > 0 {

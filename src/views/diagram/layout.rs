@@ -5,6 +5,7 @@
 
 use glam::{DVec2, DVec3};
 
+use crate::methods::Accel;
 use crate::tree::ray_tree::RayKind;
 use crate::views::diagram::boxes::BoxMark;
 use crate::views::diagram::marks::Marks;
@@ -101,8 +102,11 @@ pub struct Layout {
     /// For a ray that hit nothing: the objects it passed nearest, each with its
     /// gap and the closest approach drawn (from the ray, to the object).
     pub near_misses: Vec<(usize, f64, DVec2, DVec2)>,
-    /// With `boxes`: the hierarchy's boxes the drawn rays were tested against.
+    /// With `boxes`: the hierarchy's boxes the drawn rays were tested against
+    /// (the cells or nodes they walked, for a grid or a tree).
     pub boxes: Vec<BoxMark>,
+    /// The structure the boxes are of (the trace's).
+    pub structure: Accel,
 }
 
 impl Layout {

@@ -342,6 +342,41 @@ fn bad_command_line_settings() {
         fails("cli-depth", None, &[scene, "--max-depth", "0"])
             .starts_with("error: --max-depth: must be 1 to 1000")
     );
+    // The structures' sizes (issue 28): 0 or 10⁹ grid cells, a depth of 10⁶.
+    for (name, flag, value, said) in [
+        (
+            "cli-grid0",
+            "--grid-res",
+            "0",
+            "error: --grid-res: must be auto or 1 to 160 cells along the scene's longest side, got 0",
+        ),
+        (
+            "cli-grid9",
+            "--grid-res",
+            "1000000000",
+            "error: --grid-res: must be auto or 1 to 160 cells along the scene's longest side, got 1000000000",
+        ),
+        (
+            "cli-deep",
+            "--tree-depth",
+            "1000000",
+            "error: --tree-depth: must be auto or 0 to 48 levels, got 1000000",
+        ),
+    ] {
+        assert_eq!(fails(name, None, &[scene, flag, value]), said);
+    }
+    let in_file = std::fs::read_to_string(scenes().join("whitted.json")).unwrap();
+    let bad = in_file.replacen(
+        "\"max_depth\": 8",
+        "\"max_depth\": 8, \"grid_res\": \"fine\"",
+        1,
+    );
+    assert_ne!(bad, in_file, "the scene's render block moved");
+    let e = fails("cli-grid-file", Some(&bad), &[]);
+    assert!(
+        e.contains("bad.json") && e.contains("expected auto or a whole number, got 'fine'"),
+        "{e}"
+    );
     assert_eq!(
         fails("cli-threads", None, &[scene, "--threads", "0"]),
         "error: --threads: must be 1 to 256, got 0"
@@ -728,7 +763,8 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
     };
     let stdout = run();
     // "5,130 rays: 768 primary (700 hit), …; 2.1 M rays/s",
-    // "40,211 tests: 30,000 bounding boxes, 10,211 primitives; 7.838 per ray" and
+    // "40,211 tests: 30,000 box tests, 10,211 primitives; 7.838 per ray (5.849
+    // box tests and 1.989 primitives), through a bounding volume hierarchy (--accel bvh)" and
     // "time: 0.012 s preprocessing (0.010 s reading, 0.002 s building), 0.100 s tracing".
     let mut lines = stdout.lines();
     let (rays, tests, time) = (
@@ -757,11 +793,21 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
     assert_eq!(r[0], r[1] + r[3] + r[4] + r[5], "{stdout}");
     assert!(rays.ends_with(" M rays/s"), "{stdout}");
     let t = counts(tests);
-    assert_eq!(t.len(), 4, "total, boxes, primitives, per ray: {stdout}");
+    assert_eq!(
+        t.len(),
+        6,
+        "total, boxes, primitives, per ray, and per ray again as boxes and primitives: {stdout}"
+    );
     assert!(t[1] > 0.0, "spheres.json has a hierarchy: {stdout}");
+    assert!(
+        tests.contains(" box tests, ") && tests.ends_with("(--accel bvh)"),
+        "the steps are named for the structure: {stdout}"
+    );
     assert_eq!(t[1] + t[2], t[0], "{stdout}");
-    // per ray is written to 4 significant digits.
+    // Each per-ray figure is written to 4 significant digits.
     assert!((t[3] - t[0] / r[0]).abs() <= 5e-4 * t[3], "{stdout}");
+    assert!((t[4] - t[1] / r[0]).abs() <= 5e-4 * t[4], "{stdout}");
+    assert!((t[5] - t[2] / r[0]).abs() <= 5e-4 * t[5], "{stdout}");
     let s = counts(time);
     assert_eq!(
         s.len(),

@@ -89,3 +89,58 @@ fn every_structure_tests_far_fewer_objects_than_the_lectures_loop() {
         assert_eq!(with.total(), all.total(), "{accel:?}: the same rays");
     }
 }
+
+/// The sizes a user may ask for, at both ends (a grid of one cell or of 160
+/// along the longest side, a tree of one leaf or 48 levels), still find what
+/// testing every object finds; and each changes the work as it should: one
+/// cell or one leaf tests every object, a finer grid walks more cells.
+#[test]
+fn every_size_a_user_may_ask_for_renders_the_same_images() {
+    use raytree::methods::Level;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes");
+    let mut scene = raytree::scene::loader::load(&root.join("spheres.json")).unwrap();
+    (scene.settings.width, scene.settings.height) = (40, 30);
+    scene.settings.accel = Accel::None;
+    let none = render_counting(&scene, &Progress::QUIET).unwrap();
+    let mut cells = Vec::new();
+    for (accel, grid_res, tree_depth) in [
+        (Accel::Grid, Level::Given(1), Level::Auto),
+        (Accel::Grid, Level::Given(20), Level::Auto),
+        (Accel::Grid, Level::Given(160), Level::Auto),
+        (Accel::Octree, Level::Auto, Level::Given(0)),
+        (Accel::Octree, Level::Auto, Level::Given(48)),
+        (Accel::Bsp, Level::Auto, Level::Given(0)),
+        (Accel::Bsp, Level::Auto, Level::Given(48)),
+    ] {
+        scene.settings.accel = accel;
+        scene.settings.grid_res = grid_res;
+        scene.settings.tree_depth = tree_depth;
+        let (image, counts) = render_counting(&scene, &Progress::QUIET).unwrap();
+        let what = format!("{accel:?} at grid_res {grid_res}, tree_depth {tree_depth}");
+        assert!(image.pixels == none.0.pixels, "{what}: the image differs");
+        if grid_res == Level::Given(1) || tree_depth == Level::Given(0) {
+            // Everything in one cell or leaf: a primary ray tests the floor
+            // plane, and if it reaches the cell, all 2,000 spheres. (Only primary
+            // rays: a shadow ray stops at its first blocker.)
+            let mut eyes_only = scene.clone();
+            eyes_only.lights.clear();
+            eyes_only.settings.max_depth = 1;
+            let with = render_counting(&eyes_only, &Progress::QUIET).unwrap().1;
+            eyes_only.settings.accel = Accel::None;
+            let all = render_counting(&eyes_only, &Progress::QUIET).unwrap().1;
+            assert_eq!(all.primitives, all.primary * 2001, "{what}");
+            let spheres = with.primitives - with.primary;
+            assert!(
+                spheres > 0 && spheres.is_multiple_of(2000),
+                "{what}: {with:?}"
+            );
+        }
+        if accel == Accel::Grid {
+            cells.push(counts.boxes);
+        }
+    }
+    assert!(
+        cells[0] < cells[1] && cells[1] < cells[2],
+        "cells walked: {cells:?}"
+    );
+}
