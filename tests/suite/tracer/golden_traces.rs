@@ -26,6 +26,9 @@ struct Golden {
     args: &'static [&'static str],
 }
 
+/// Lesson 12's scene of 32 spheres, where cells and nodes are big enough to see.
+const SCATTER: &str = "lessons/12-efficiency/scatter.json";
+
 const GOLDEN: &[Golden] = &[
     Golden {
         name: "whitted-diffuse",
@@ -73,6 +76,24 @@ const GOLDEN: &[Golden] = &[
     Golden {
         name: "cones-horn-inside",
         args: &["trace", "scenes/cones.json", "--pixel", "540,280"],
+    },
+    // One ray through each structure of the efficiency slide (issue 28):
+    // the same pixel of lesson 12's small scene, its steps in `boxes`.
+    Golden {
+        name: "scatter-bvh",
+        args: &["trace", SCATTER, "--pixel", "497,160", "--accel", "bvh"],
+    },
+    Golden {
+        name: "scatter-grid",
+        args: &["trace", SCATTER, "--pixel", "497,160", "--accel", "grid"],
+    },
+    Golden {
+        name: "scatter-octree",
+        args: &["trace", SCATTER, "--pixel", "497,160", "--accel", "octree"],
+    },
+    Golden {
+        name: "scatter-bsp",
+        args: &["trace", SCATTER, "--pixel", "497,160", "--accel", "bsp"],
     },
     Golden {
         name: "nested-ray-to-core",
@@ -296,6 +317,28 @@ fn golden_traces_show_what_they_are_named_for() {
         panic!("the horn's test records its quadratic")
     };
     assert!(crossings.len() == 2 && crossings[0].z < 0.0 && test.roots.len() == 1);
+    // The same ray through each structure: the same hit, found through that
+    // structure's own steps (recorded, and named by the trace's `structure`).
+    for (name, structure) in [
+        ("scatter-bvh", raytree::methods::Accel::Bvh),
+        ("scatter-grid", raytree::methods::Accel::Grid),
+        ("scatter-octree", raytree::methods::Accel::Octree),
+        ("scatter-bsp", raytree::methods::Accel::Bsp),
+    ] {
+        let trace = load(name);
+        assert_eq!(trace.structure, structure, "{name}");
+        let ray = root_node(&trace);
+        assert_eq!(ray.hit.as_ref().unwrap().name, "ball5", "{name}");
+        assert!(ray.tested.boxes > 0, "{name}: the walk took steps");
+        assert_eq!(ray.boxes.len() as u32, ray.tested.boxes, "{name}");
+        // Fewer objects than the 33 (32 spheres and the floor) a ray tests
+        // without a structure; the floor, unbounded, is tested either way.
+        assert!(
+            (2..33).contains(&ray.tested.primitives),
+            "{name}: {:?}",
+            ray.tested
+        );
+    }
     assert!(
         load("nested-ray-to-core").samples[0]
             .tree

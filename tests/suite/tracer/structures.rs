@@ -46,6 +46,7 @@ fn every_structure_renders_the_shipped_scenes_as_testing_every_object_does() {
         "cones.json",
         "polygons.json",
         "sampler.nff",
+        "../lessons/12-efficiency/scatter.json",
     ] {
         let scene = raytree::scene::loader::load(&root.join(name)).unwrap();
         same_images(name, scene, (64, 48));
