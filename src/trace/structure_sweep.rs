@@ -497,7 +497,7 @@ fn check_rows(rows: &[Row]) -> Result<Mode, String> {
         }
         return Ok(Mode::GridSweep);
     }
-    if rows.len() % STRUCTURES.len() != 0 || rows.len() / STRUCTURES.len() > MAX_SCENES {
+    if !rows.len().is_multiple_of(STRUCTURES.len()) || rows.len() / STRUCTURES.len() > MAX_SCENES {
         return Err(format!(
             "{} rows: a comparison has five per scene (none, bvh, grid, octree, bsp), for 1 to {MAX_SCENES} scenes",
             rows.len()

@@ -412,6 +412,9 @@ fn side(r: &Row) -> f64 {
     }
 }
 
+/// A line of the sweep: its panel, its color, and the figure it draws.
+type Series<'a> = (&'a Panel, Rgb, fn(&Row) -> f64);
+
 fn draw_sweep(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64; 4]) {
     let steps_c = palette::REFLECTED;
     let prims_c = palette::REFRACTED;
@@ -473,7 +476,7 @@ fn draw_sweep(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64
         .filter(|r| matches!(r.grid_res, Some(Level::Given(_))))
         .collect();
     given.sort_by(|a, b| side(a).total_cmp(&side(b)));
-    let series: [(&Panel, Rgb, fn(&Row) -> f64); 3] = [
+    let series: [Series; 3] = [
         (&per_ray, steps_c, Row::steps_per_ray),
         (&per_ray, prims_c, Row::primitives_per_ray),
         (&times, time_c, Row::trace_seconds),
