@@ -15,3 +15,4 @@ pub mod aov_render; // rendering one, through a recorder
 pub mod forward; // rays from the lights to the eye, counted
 pub mod frames; // a filmstrip's frames in turn, each with how much it changed
 pub mod sweep; // speed against accuracy, measured
+pub mod structure_sweep; // the efficiency slide's structures compared, measured

@@ -21,6 +21,7 @@ mod output;
 mod postscript;
 mod render;
 mod strip;
+mod structures;
 mod trace;
 
 use std::process::ExitCode;
@@ -48,6 +49,8 @@ enum Command {
     Inspect(inspect::Args),
     /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures), rendered at half the scene's width and height unless --width/--height are given.
     Chart(chart::Args),
+    /// Compare the efficiency slide's structures (none, bvh, grid, octree, bsp) on scenes: tests per ray and trace time on one thread, as a table, a chart (PNG) and CSV figures; or the grid at a sweep of resolutions.
+    Structures(structures::Args),
     /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
     Strip(strip::Args),
     /// Trace rays forward from the lights and count how few reach the eye, beside the backward render (PNG).
@@ -79,6 +82,7 @@ fn main() -> ExitCode {
         Command::Diagram(args) => diagram::run(&args),
         Command::Inspect(args) => inspect::run(&args),
         Command::Chart(args) => chart::run(&args),
+        Command::Structures(args) => structures::run(&args),
         Command::Strip(args) => strip::run(&args),
         Command::Forward(args) => forward::run(&args),
         Command::Lesson(args) => lesson::run(&args),

@@ -1,6 +1,6 @@
 //! Structure-aware mutation fuzzing of the readers of outside files: the
 //! scene loader, the OBJ reader, the trace reader (issue 12) and the NFF
-//! reader (issue 27). Each case
+//! reader (issue 27), and the `raytree structures` CSV reader (issue 28). Each case
 //! takes a valid seed (a shipped or generated scene, a small OBJ, a real trace)
 //! and applies a few mutations chosen from random bytes through `arbitrary`: a
 //! value swapped for an edge case (huge, tiny, negative, NaN-like text, a
@@ -28,16 +28,84 @@ use serde_json::{Value, json};
 /// Longest a case may take before it counts as a hang.
 const HANG: Duration = Duration::from_secs(5);
 
-/// The three readers.
+/// The readers.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Target {
     Scene,
     Obj,
     Trace,
     Nff,
+    StructuresCsv,
 }
 
-const TARGETS: [Target; 4] = [Target::Scene, Target::Obj, Target::Trace, Target::Nff];
+const TARGETS: [Target; 5] = [
+    Target::Scene,
+    Target::Obj,
+    Target::Trace,
+    Target::Nff,
+    Target::StructuresCsv,
+];
+
+/// `raytree structures` CSVs (issue 28): a comparison of two scenes, and a
+/// grid sweep, written by the command's own writer from figures made up here
+/// (the reader checks the ratios and medians against them, so a seed is
+/// made, not typed).
+fn structures_seeds() -> Vec<String> {
+    use raytree::methods::{Accel, Level};
+    use raytree::trace::structure_sweep::{Comparison, Mode, Row, STRUCTURES, csv};
+    let row = |scene: &str, structure: Accel, grid_res: Option<Level>, k: u64| Row {
+        scene: scene.to_owned(),
+        structure,
+        grid_res,
+        grid_cells: grid_res.map(|_| [8, 2, 8]),
+        objects: 2001,
+        rays: 6398 + k,
+        steps: 1000 * k,
+        primitives: 50_000 / (k + 1),
+        build_seconds: 0.001 * k as f64,
+        run_seconds: vec![0.01 * (k + 1) as f64, 0.02, 0.005],
+    };
+    let structures = Comparison {
+        mode: Mode::Structures,
+        about: "2026-11-25 21:09 UTC, 40×30, no protocol, 3 runs, threads = 1, load 0.5 0.4 0.3"
+            .to_owned(),
+        rows: ["a.json", "b, \"c\".nff"]
+            .iter()
+            .flat_map(|s| {
+                STRUCTURES.iter().enumerate().map(move |(k, &a)| {
+                    row(s, a, (a == Accel::Grid).then_some(Level::Auto), k as u64)
+                })
+            })
+            .collect(),
+    };
+    let sweep = Comparison {
+        mode: Mode::GridSweep,
+        about: "x".to_owned(),
+        rows: [Level::Given(2), Level::Given(160), Level::Auto]
+            .iter()
+            .enumerate()
+            .map(|(k, &l)| row("a.json", Accel::Grid, Some(l), k as u64))
+            .collect(),
+    };
+    vec![csv(&structures), csv(&sweep)]
+}
+
+/// The line-level edge cases for the structures CSV: fields and lines that
+/// are almost right.
+const CSV_EDITS: LineEdits = LineEdits {
+    empty: "# x",
+    words: &[
+        "", "nan", "-1", "1e999", "grid", "auto", "0", "161", "\"", "a,b",
+    ],
+    lines: &[
+        "",
+        "# comment",
+        "a.json,grid,auto,1x1x1,1,1,0,0,0,0,0,0,0",
+        "a.json,bvh,,,1,0,0,0,0,0,0,0,0",
+        "\"unclosed,bvh",
+    ],
+    tail: ",",
+};
 
 /// Small NFF scenes holding every entity: the view, background, lights with
 /// and without a color, materials opaque and transmitting, and each primitive.
@@ -416,6 +484,7 @@ fn mutate_lines(u: &mut Unstructured, text: &str, edits: &LineEdits) -> arbitrar
 struct Seeds {
     scenes: Vec<Value>,
     traces: Vec<Value>,
+    csvs: Vec<String>,
 }
 
 /// One case: `data` chooses a seed and its mutations, the reader runs on the result.
@@ -455,8 +524,26 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
                 Err(e) => one_line(&e)?,
             }
         }
+        Target::StructuresCsv => {
+            let text = mutated_csv(&mut u, &seeds.csvs);
+            match raytree::trace::structure_sweep::parse_csv(&text) {
+                Ok(c) => {
+                    // An accepted CSV draws and tabulates without a panic.
+                    let _ = raytree::views::structures_chart::draw(&c, 600, 400);
+                    let _ = raytree::views::structures_chart::table(&c);
+                }
+                Err(e) => one_line(&e)?,
+            }
+        }
     }
     Ok(())
+}
+
+/// A structures CSV seed with line and word mutations, as text.
+fn mutated_csv(u: &mut Unstructured, seeds: &[String]) -> String {
+    let seed = u.choose(seeds).map_or("", String::as_str);
+    let bytes = mutate_lines(u, seed, &CSV_EDITS).unwrap_or_default();
+    String::from_utf8_lossy(&bytes).into_owned()
 }
 
 /// A seed with 1 to 4 mutations, as text, maybe damaged.
@@ -598,6 +685,7 @@ fn seeds() -> Seeds {
     Seeds {
         scenes: scene_seeds(),
         traces: trace_seeds(),
+        csvs: structures_seeds(),
     }
 }
 
@@ -622,6 +710,23 @@ fn fuzz_the_nff_reader() {
 }
 
 #[test]
+fn fuzz_the_structures_csv_reader() {
+    assert_eq!(
+        campaign(Target::StructuresCsv, seeds(), 3000, 5, None),
+        3000
+    );
+}
+
+#[test]
+fn the_structures_csv_seeds_are_read_whole() {
+    for (k, seed) in structures_seeds().iter().enumerate() {
+        let c = raytree::trace::structure_sweep::parse_csv(seed)
+            .unwrap_or_else(|e| panic!("structures CSV seed {k}: {e}"));
+        assert!(c.rows.len() >= 3, "seed {k}");
+    }
+}
+
+#[test]
 fn the_nff_seeds_are_read_whole() {
     // The fuzzer's seeds must be valid, or every case would stop at the first error.
     for (k, seed) in NFF_SEEDS.iter().enumerate() {
@@ -631,7 +736,7 @@ fn the_nff_seeds_are_read_whole() {
     }
 }
 
-/// The long run: `RAYTREE_FUZZ_SECONDS` (default 600) split between the four
+/// The long run: `RAYTREE_FUZZ_SECONDS` (default 600) split between the
 /// readers, fresh seeds each run; prints the cases tried.
 #[test]
 #[ignore = "runs for minutes: RAYTREE_FUZZ_SECONDS=600 cargo test --release fuzz_for_a_while -- --ignored --nocapture"]
@@ -643,7 +748,7 @@ fn fuzz_for_a_while() {
     let start = fastrand::u64(..);
     let mut total = 0;
     for (k, target) in TARGETS.into_iter().enumerate() {
-        let until = Instant::now() + Duration::from_secs(seconds / 4);
+        let until = Instant::now() + Duration::from_secs(seconds / TARGETS.len() as u64);
         let tried = campaign(
             target,
             seeds(),
@@ -653,7 +758,7 @@ fn fuzz_for_a_while() {
         );
         println!(
             "{target:?}: {tried} cases in {} s, no panic, no hang, no file left (seed {})",
-            seconds / 4,
+            seconds / TARGETS.len() as u64,
             start.wrapping_add(k as u64)
         );
         total += tried;
@@ -687,6 +792,10 @@ fn mutations_reach_the_interesting_places() {
                 Target::Nff => {
                     let bytes = mutate_lines(&mut u, NFF_SEEDS[0], &NFF_EDITS).unwrap_or_default();
                     loader::parse_file(&String::from_utf8_lossy(&bytes), "f.nff").is_ok()
+                }
+                Target::StructuresCsv => {
+                    raytree::trace::structure_sweep::parse_csv(&mutated_csv(&mut u, &seeds.csvs))
+                        .is_ok()
                 }
             };
             if accepted { ok += 1 } else { err += 1 }

@@ -12,4 +12,5 @@ mod pipes;
 mod postscript;
 mod signals;
 mod strip;
+mod structures;
 mod trace_files;
