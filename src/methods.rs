@@ -50,6 +50,18 @@ pub enum Accel {
 }
 
 impl Accel {
+    /// The name `--accel` and a scene file's `accel` give it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Accel::Auto => "auto",
+            Accel::None => "none",
+            Accel::Bvh => "bvh",
+            Accel::Grid => "grid",
+            Accel::Octree => "octree",
+            Accel::Bsp => "bsp",
+        }
+    }
+
     /// What one traversal step of this structure is called (`plural` for any
     /// count but one): a box tested in a bounding volume hierarchy, a cell
     /// walked in a grid, a node walked in a tree. Meshes' own boxes count as
@@ -275,6 +287,22 @@ impl std::fmt::Display for Level {
         match self {
             Level::Auto => f.write_str("auto"),
             Level::Given(n) => write!(f, "{n}"),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `Accel::name` is the word the command line and a scene file take: a
+    /// CSV or a message that writes it can be read back by either.
+    #[test]
+    fn an_accel_s_name_is_its_flag_and_its_json() {
+        for a in <Accel as clap::ValueEnum>::value_variants() {
+            let flag = clap::ValueEnum::to_possible_value(a).unwrap();
+            assert_eq!(flag.get_name(), a.name());
+            assert_eq!(serde_json::to_value(a).unwrap(), a.name());
         }
     }
 }

@@ -102,7 +102,7 @@ impl Row {
     pub fn label(&self) -> String {
         match self.grid_res {
             Some(level) if self.structure == Accel::Grid => format!("grid {level}"),
-            _ => accel_name(self.structure).to_owned(),
+            _ => self.structure.name().to_owned(),
         }
     }
 }
@@ -230,18 +230,6 @@ fn measure_scene(
     rows
 }
 
-/// The name `--accel` gives a structure.
-pub fn accel_name(a: Accel) -> &'static str {
-    match a {
-        Accel::Auto => "auto",
-        Accel::None => "none",
-        Accel::Bvh => "bvh",
-        Accel::Grid => "grid",
-        Accel::Octree => "octree",
-        Accel::Bsp => "bsp",
-    }
-}
-
 /// The CSV's header, the line after the comment.
 pub const CSV_HEADER: &str = "scene,structure,grid_res,grid_cells,objects,rays,steps,primitives,steps_per_ray,primitives_per_ray,build_seconds,trace_seconds_median,run_seconds";
 
@@ -255,7 +243,7 @@ pub fn csv(c: &Comparison) -> String {
         out.push_str(&format!(
             "{},{},{},{},{},{},{},{},{},{},{},{},{}\n",
             quoted(&r.scene),
-            accel_name(r.structure),
+            r.structure.name(),
             r.grid_res.map_or(String::new(), |l| l.to_string()),
             r.grid_cells
                 .map_or(String::new(), |[x, y, z]| format!("{x}x{y}x{z}")),
@@ -373,17 +361,11 @@ fn parse_row(line: &str) -> Result<Row, String> {
     if scene.is_empty() || scene.chars().any(char::is_control) || scene.chars().count() > 100 {
         return Err("scene: must be a printable name of 1 to 100 characters".to_owned());
     }
-    let structure = match f[1].as_str() {
-        "none" => Accel::None,
-        "bvh" => Accel::Bvh,
-        "grid" => Accel::Grid,
-        "octree" => Accel::Octree,
-        "bsp" => Accel::Bsp,
-        s => {
-            return Err(format!(
-                "structure: '{s}' is not none, bvh, grid, octree or bsp"
-            ));
-        }
+    let Some(structure) = STRUCTURES.iter().copied().find(|a| a.name() == f[1]) else {
+        return Err(format!(
+            "structure: '{}' is not none, bvh, grid, octree or bsp",
+            f[1]
+        ));
     };
     let grid = structure == Accel::Grid;
     let grid_res = match (grid, f[2].as_str()) {
@@ -509,7 +491,7 @@ fn check_rows(rows: &[Row]) -> Result<Mode, String> {
             return Err(format!(
                 "line {}: structure: expected {} here (each scene's five in order)",
                 line(i),
-                accel_name(STRUCTURES[i % STRUCTURES.len()])
+                STRUCTURES[i % STRUCTURES.len()].name()
             ));
         }
         if r.scene != head.scene || r.objects != head.objects {

@@ -11,7 +11,7 @@ use glam::DVec2;
 use crate::figure::canvas::{Anchor, Figure};
 use crate::figure::pen::{Pen, Rgb, palette};
 use crate::methods::{Accel, Level};
-use crate::trace::structure_sweep::{Comparison, Mode, Row, STRUCTURES, accel_name};
+use crate::trace::structure_sweep::{Comparison, Mode, Row, STRUCTURES};
 use crate::views::numbers::num;
 
 /// One color per structure (Okabe–Ito, as every figure's palette).
@@ -46,7 +46,7 @@ fn structures_table(c: &Comparison) -> String {
     let mut out = String::from("| scene | objects |");
     let mut rule = String::from("|---|---:|");
     for a in STRUCTURES {
-        out.push_str(&format!(" {0} tests/ray | {0} time |", accel_name(a)));
+        out.push_str(&format!(" {0} tests/ray | {0} time |", a.name()));
         rule.push_str("---:|---:|");
     }
     out.push('\n');
@@ -296,7 +296,7 @@ fn mark(fig: &mut Figure, x: f64, y: f64) {
 fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64; 4]) {
     let mut entries: Vec<(Rgb, u8, &str)> = STRUCTURES
         .iter()
-        .map(|&a| (color(a), 255, accel_name(a)))
+        .map(|&a| (color(a), 255, a.name()))
         .collect();
     entries.push(([120, 120, 120], 90, "pale part: traversal steps"));
     entries.push(([120, 120, 120], 255, "solid part: primitive tests"));

@@ -67,12 +67,11 @@ pub fn run(args: &Args) -> Result<()> {
     );
     let s = &scene.settings;
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
-    let mut structure = Accel::None;
     let (image, rays) = if args.stats {
         let building = Instant::now();
         let tracer = pool.install(|| Tracer::new(&scene));
         let build_seconds = building.elapsed().as_secs_f64();
-        structure = tracer.accelerator().kind();
+        let structure = tracer.accelerator().kind();
         let tracing = Instant::now();
         let (image, rays) = pool
             .install(|| {
@@ -87,7 +86,7 @@ pub fn run(args: &Args) -> Result<()> {
             building: build_seconds,
             tracing: tracing.elapsed().as_secs_f64(),
         };
-        (image, Some((rays, times)))
+        (image, Some((rays, times, structure)))
     } else {
         let image = pool
             .install(|| render::render(&scene, &Progress::reporting(&output::on_bar(&progress))))
@@ -108,7 +107,7 @@ pub fn run(args: &Args) -> Result<()> {
             threads_word(threads)
         ))?;
     }
-    if let Some((r, times)) = rays {
+    if let Some((r, times, structure)) = rays {
         // The counts are what --stats asked for: standard output, as strip and
         // forward print their figures; notes stay on standard error.
         output::print(stats(&r, &times, structure))?;
