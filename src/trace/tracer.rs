@@ -77,7 +77,7 @@ impl Prepared {
         }
     }
 
-    /// For `scene`, which has the objects and accelerator setting this was
+    /// For `scene`, which has the objects and structure settings this was
     /// prepared for but perhaps other materials or settings: the accelerator
     /// kept, the media around the eye found again (a transparency may have
     /// changed).
@@ -107,12 +107,13 @@ impl<'s> Tracer<'s> {
         }
     }
 
-    /// A tracer for `scene`, which has this tracer's objects and accelerator
-    /// setting but other render settings, sharing this one's accelerator
+    /// A tracer for `scene`, which has this tracer's objects and structure
+    /// settings (`accel`, `grid_res`, `tree_depth`) but other render settings, sharing this one's accelerator
     /// instead of building it again (a sweep over settings builds it once).
     pub fn with_settings<'t>(&self, scene: &'t Scene) -> Tracer<'t> {
         debug_assert!(scene.objects.len() == self.scene.objects.len());
-        debug_assert!(scene.settings.accel == self.scene.settings.accel);
+        let structure = |s: &Scene| (s.settings.accel, s.settings.grid_res, s.settings.tree_depth);
+        debug_assert!(structure(scene) == structure(self.scene));
         Tracer {
             scene,
             eye_media: self.eye_media,
