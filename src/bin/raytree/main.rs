@@ -23,6 +23,7 @@ mod render;
 mod strip;
 mod structures;
 mod trace;
+mod vectors;
 
 use std::process::ExitCode;
 
@@ -65,6 +66,8 @@ enum Command {
     Generate(generate::Args),
     /// Write an NFF scene (Haines's Standard Procedural Databases) as raytree scene JSON, the scene render reads from it.
     Convert(convert::Args),
+    /// Write test vectors for your own tracer: lesson N's functions (3 to 11) with inputs and raytree's outputs, as JSON any language's tests can load.
+    Vectors(vectors::Args),
 }
 
 fn main() -> ExitCode {
@@ -95,6 +98,7 @@ fn main() -> ExitCode {
         Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
         Command::Convert(args) => convert::run(&args),
+        Command::Vectors(args) => vectors::run(&args),
     };
     finish(result)
 }

@@ -1,0 +1,62 @@
+//! `raytree vectors`: test vectors for a learner's tracer, from a lesson's
+//! pixels and rays (lessons 03–11) or a scene's.
+
+use std::path::PathBuf;
+
+use anyhow::{Result, anyhow};
+use raytree::course::vectors;
+
+use crate::output;
+
+#[derive(clap::Args)]
+pub struct Args {
+    /// A lesson's number (3 to 11: the cases of the functions it teaches, from its pixels and rays), or a scene file (the cases of every function, from five of its pixels).
+    #[arg(value_name = "LESSON_OR_SCENE")]
+    target: String,
+    /// The folder holding the lessons (run from the repository, it is ./lessons).
+    #[arg(long, value_name = "DIR", default_value = "lessons")]
+    lessons: PathBuf,
+    /// Write to this file (atomically) instead of standard output.
+    #[arg(short, long, value_name = "FILE")]
+    output: Option<PathBuf>,
+}
+
+pub fn run(args: &Args) -> Result<()> {
+    let text = match args.target.parse::<u32>() {
+        Ok(number) => {
+            let functions = vectors::LESSON_FUNCTIONS
+                .iter()
+                .find(|(n, _)| *n == number)
+                .map(|(_, f)| *f)
+                .ok_or_else(|| anyhow!("lesson {number}: vectors exist for lessons 3 to 11"))?;
+            if !args.lessons.is_dir() {
+                return Err(anyhow!(
+                    "{}: no such folder; run raytree vectors from the repository, or give --lessons DIR",
+                    args.lessons.display()
+                ));
+            }
+            let (name, targets) =
+                vectors::lesson_targets(&args.lessons, number).map_err(anyhow::Error::msg)?;
+            vectors::document(&name, functions, &targets)
+        }
+        Err(_) => {
+            let scene = PathBuf::from(&args.target);
+            let all: Vec<&str> = vectors::LESSON_FUNCTIONS
+                .iter()
+                .flat_map(|(_, f)| f.iter().copied())
+                .collect();
+            let targets = vectors::scene_targets(&scene).map_err(anyhow::Error::msg)?;
+            vectors::document(&args.target, &all, &targets)
+        }
+    }
+    .map_err(anyhow::Error::msg)?;
+    match &args.output {
+        Some(path) => {
+            let file = output::create(path, &[])?;
+            file.commit(text.as_bytes())?;
+            output::note(&format!("wrote {}", path.display()))?;
+        }
+        None => output::print(text)?,
+    }
+    Ok(())
+}
