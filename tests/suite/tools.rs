@@ -23,12 +23,15 @@ pub enum Need {
     /// `shared/spd/` beside the repository: the Standard Procedural
     /// Databases' NFF files, POV-Ray files and reference pictures.
     Spd,
+    /// `python3` on the PATH: the course's Python tracer (`lessons/python/`).
+    Python3,
 }
 
 impl Need {
     /// Whether this machine has it (looked up once per test run).
     pub fn present(self) -> bool {
-        static FOUND: [OnceLock<bool>; 4] = [
+        static FOUND: [OnceLock<bool>; 5] = [
+            OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
@@ -45,6 +48,7 @@ impl Need {
             Need::Tmux => runs("tmux", "-V"),
             Need::Lecture => lecture().is_some(),
             Need::Spd => spd().is_some(),
+            Need::Python3 => runs("python3", "--version"),
         })
     }
 
@@ -55,13 +59,15 @@ impl Need {
             Need::Tmux => "tmux is not installed",
             Need::Lecture => "there is no ../shared/lecture-raytracing.md beside the repository",
             Need::Spd => "there is no ../shared/spd/ beside the repository",
+            Need::Python3 => "python3 not found",
         }
     }
 
     /// How CI gets it; `alone`, the only thing missing.
     fn remedy(self, alone: bool) -> &'static str {
         match (self, alone) {
-            (Need::Ghostscript | Need::Tmux, true) => ".ci/run installs it",
+            (Need::Ghostscript | Need::Tmux | Need::Python3, true) => ".ci/run installs it",
+            (Need::Python3, false) => ".ci/run installs python3",
             (Need::Ghostscript, false) => ".ci/run installs Ghostscript",
             (Need::Tmux, false) => ".ci/run installs tmux",
             (Need::Lecture | Need::Spd, _) => "CI checks out ../shared beside the clone",

@@ -5,3 +5,4 @@ mod architecture;
 mod book;
 mod guide;
 mod readme;
+mod vectors;

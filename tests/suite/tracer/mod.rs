@@ -8,6 +8,7 @@ mod golden_traces;
 mod media;
 mod polygons;
 mod povray;
+mod python;
 mod ray_tree;
 mod recent;
 mod recursion;
