@@ -163,6 +163,14 @@ class Scene:
             raise InputError("%s: not JSON: %s" % (path, e))
         if not isinstance(raw, dict):
             raise InputError("%s: expected a JSON object" % path)
+        try:
+            self._read(raw)
+        except (KeyError, TypeError, ValueError, AttributeError, ZeroDivisionError) as e:
+            # What the checks below do not name: a missing field, a wrong type.
+            raise InputError("%s: malformed scene (%s: %s)" % (path, type(e).__name__, e))
+
+    def _read(self, raw):
+        path = self.path
         _only(raw, {"description", "camera", "render", "background", "ambient_light",
                     "materials", "lights", "objects"}, path, outside_subset=True)
         self.settings = Settings()
@@ -175,21 +183,26 @@ class Scene:
         for i, l in enumerate(raw.get("lights", [])):
             where = "%s: lights[%d]" % (path, i)
             _only(l, {"name", "position", "color"}, where)
+            if "position" not in l:
+                raise InputError("%s.position: missing" % where)
             self.lights.append(Light(l.get("name", "light%d" % i),
                                      _vec(l["position"], where + ".position"),
                                      _vec(l.get("color", [1, 1, 1]), where + ".color")))
         self.objects = [self._object(i, o) for i, o in enumerate(raw.get("objects", []))]
         self.camera_raw = raw.get("camera", {})
+        self.camera()  # its errors now, not at the first pixel
 
     def _render(self, r):
         where = self.path + ": render"
         _only(r, {"width", "height", "spp", "max_depth", "cutoff", "accel", "offset",
                   "sphere", "weights", "aa"}, where, outside_subset=True)
         s = self.settings
-        s.width = int(r.get("width", s.width))
-        s.height = int(r.get("height", s.height))
-        s.max_depth = int(r.get("max_depth", s.max_depth))
-        s.cutoff = float(r.get("cutoff", s.cutoff))
+        s.width = int(_num(r.get("width", s.width), where + ".width"))
+        s.height = int(_num(r.get("height", s.height), where + ".height"))
+        s.max_depth = int(_num(r.get("max_depth", s.max_depth), where + ".max_depth"))
+        s.cutoff = _num(r.get("cutoff", s.cutoff), where + ".cutoff")
+        if s.width < 2 or s.height < 2 or s.max_depth < 1:
+            raise InputError("%s: width and height must be at least 2, max_depth at least 1" % where)
         # The tracer does the lecture's defaults only: one sample per pixel,
         # constant weights; the structures (accel) change no number.
         for key, default in (("spp", 1), ("offset", "robust"), ("sphere", "stable"),
@@ -597,6 +610,9 @@ def _run(lessons, argv, prog):
     if scene_path is None:
         raise InputError("no scene given (see --help)")
     scene = Scene(scene_path)
+    for flag, value in (("--width", width), ("--height", height)):
+        if value is not None and value < 2:
+            raise InputError("%s: at least 2 pixels, got %d" % (flag, value))
     if width:
         scene.settings.width = width
     if height:

@@ -153,7 +153,8 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
 
         {"kind": kind, "origin": [...], "direction": [...],
          "hit": None or {"object": name, "t": t, "point": [...], "normal": [...], "entering": bool},
-         "shadows": [{"light": name, "blocked": bool, "by": name or None}, ...],
+         "shadows": [{"light": name, "blocked": bool, "by": name or None,
+                      "transmitted": share}, ...],
          "local": [...], "k_rfl": k, "k_rfa": k, "tir": bool,
          "reflected": node or None, "refracted": node or None, "color": [...]}
 

@@ -212,7 +212,8 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
     lit, shadows = [], []
     for k, light in enumerate(scene.lights):
         s = shadow_ray(tracer, point, n, k)
-        shadows.append({"light": light.name, "blocked": s["blocked"], "by": s["by"]})
+        shadows.append({"light": light.name, "blocked": s["blocked"], "by": s["by"],
+                        "transmitted": s["transmitted"]})
         if not s["blocked"]:
             lit.append((normalize(sub(light.position, point)), scale(light.color, s["transmitted"])))
     local = phong(material, color, scene.ambient_light, n, to_viewer, lit)
