@@ -202,11 +202,15 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
     obj = scene.objects[i]
     material = obj.material
     point, outward, pattern = tracer.surface(i, origin, direction, t)
+    # Which side: a ray leaving glass meets the outward normal from behind,
+    # so every formula below takes the normal turned toward it, and n1, n2
+    # are the media on either side (the glass's index, then the air's, or
+    # the glass's again leaving the cavity): lesson 10.
     entering, n1, n2, beyond = tracer.side(i, direction, outward, media)
     n = outward if entering else neg(outward)
     node["hit"] = {"object": obj.name, "t": t, "point": vec_json(point),
                    "normal": vec_json(n), "entering": entering}
-    # Local color: ambient, and each light its shadow ray reaches.
+    # Local color: ambient, and each light its shadow ray reaches (lessons 07, 08).
     color = material.color_at(pattern)
     to_viewer = neg(normalize(direction))
     lit, shadows = [], []
@@ -219,7 +223,8 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
     local = phong(material, color, scene.ambient_light, n, to_viewer, lit)
     node["shadows"] = shadows
     node["local"] = vec_json(local)
-    # The shares: total internal reflection hands k_rfa to the reflected ray.
+    # The shares (lesson 11): total internal reflection hands k_rfa to the
+    # reflected ray, as raytree does, so the light is neither lost nor doubled.
     c = normalize(direction)
     k_rfl, k_rfa = material.reflective, material.transparent
     refracted_dir = refract(c, n, n1, n2) if k_rfa > 0.0 else None

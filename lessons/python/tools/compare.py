@@ -5,12 +5,14 @@ oracle's numbers.
 
     python3 lessons/python/tools/compare.py scenes/whitted.json --width 64 --height 48 --all --image
     python3 lessons/python/tools/compare.py scenes/whitted.json --pixel 416,209 --pixel 386,242
+    python3 lessons/python/tools/compare.py scenes/whitted.json --width 64 --height 48 --all --check
 
 For each pixel it runs `raytree trace SCENE --pixel X,Y --json`, traces the
 same pixel with the solution in this process, walks both trees side by side
 (primary ray, then reflected and refracted children in order) and compares
 every quantity of the learner trace format; with --image it renders both
-images and compares their bytes. It prints, per quantity, the largest
+images and compares their bytes; with --check it also hands each pixel's
+learner trace to `raytree check` and counts those that check clean. It prints, per quantity, the largest
 difference seen and where, and exits 1 when any exceeds its tolerance or the
 trees differ in shape (a hit object, a side, a shadow's outcome, a branch).
 
@@ -198,6 +200,23 @@ def solution_trace(solution, scene_path, pixel, width, height):
     return json.loads(json.dumps(node))
 
 
+def raytree_check(scene, pixel, width, height, node, report):
+    """`raytree check` on the solution's learner trace of `pixel`: the
+    oracle's own verdict, beside this tool's. Its exit status says: 0 agree,
+    1 a divergence (its report is kept), 2 the file was refused."""
+    doc = learner_io.learner_trace(scene, pixel, node)
+    with tempfile.NamedTemporaryFile(suffix=".json") as f:
+        f.write(doc)
+        f.flush()
+        cmd = [raytree_bin(), "check", scene, "--pixel", "%d,%d" % pixel, f.name] + size_flags(width, height)
+        out = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    if out.returncode != 0:
+        said = (out.stdout + out.stderr).decode(errors="replace").strip().splitlines()
+        report.failures.append("pixel %d,%d: raytree check exits %d: %s"
+                               % (pixel + (out.returncode, " / ".join(said[:3]))))
+    return out.returncode == 0
+
+
 def compare_images(scene, width, height, report):
     """Both tracers' 8-bit images, byte by byte; returns (pixels, pixels off, largest step)."""
     with tempfile.TemporaryDirectory() as tmp:
@@ -233,6 +252,7 @@ def read_ppm(path):
 
 def main(argv):
     scene, width, height, pixels, every, image, stride = None, None, None, [], False, False, 1
+    check = False
     it = iter(argv)
     for a in it:
         if a == "--width":
@@ -248,10 +268,12 @@ def main(argv):
             every, stride = True, int(next(it))
         elif a == "--image":
             image = True
+        elif a == "--check":
+            check = True
         elif scene is None and not a.startswith("-"):
             scene = a
         else:
-            sys.stderr.write("usage: compare.py SCENE [--width W --height H] [--pixel X,Y ...] [--all | --stride N] [--image]\n")
+            sys.stderr.write("usage: compare.py SCENE [--width W --height H] [--pixel X,Y ...] [--all | --stride N] [--image] [--check]\n")
             return 2
     if scene is None:
         sys.stderr.write("compare.py: no scene given\n")
@@ -262,11 +284,16 @@ def main(argv):
         s = learner_io.Scene(scene)
         w, h = width or s.settings.width, height or s.settings.height
         pixels += [(x, y) for y in range(0, h, stride) for x in range(0, w, stride)]
+    clean = 0
     for p in pixels:
         theirs = reduce(raytree_trace(scene, p, width, height))
         ours = solution_trace(solution, scene, p, width, height)
         compare_ray(ours, theirs, "pixel %d,%d primary" % p, report)
+        if check:
+            clean += raytree_check(scene, p, width, height, ours, report)
     print("%s: %d pixels, %d rays compared" % (scene, len(pixels), report.rays))
+    if check:
+        print("  raytree check: %d of %d pixels check clean" % (clean, len(pixels)))
     for quantity, (diff, where) in report.worst.items():
         if where is not None:
             print("  %-9s max difference %.3g (tolerance %g) at %s" % (quantity, diff, TOLERANCE[quantity], where))

@@ -37,7 +37,7 @@ pub fn run(args: &Args) -> Result<()> {
             }
             let (name, targets) =
                 vectors::lesson_targets(&args.lessons, number).map_err(anyhow::Error::msg)?;
-            vectors::document(&name, functions, &targets)
+            vectors::document(&name, &format!("raytree vectors {number}"), functions, &targets)
         }
         Err(_) => {
             let scene = PathBuf::from(&args.target);
@@ -46,7 +46,8 @@ pub fn run(args: &Args) -> Result<()> {
                 .flat_map(|(_, f)| f.iter().copied())
                 .collect();
             let targets = vectors::scene_targets(&scene).map_err(anyhow::Error::msg)?;
-            vectors::document(&args.target, &all, &targets)
+            let made_by = format!("raytree vectors {}", args.target);
+            vectors::document(&args.target, &made_by, &all, &targets)
         }
     }
     .map_err(anyhow::Error::msg)?;

@@ -15,7 +15,8 @@ fn lesson_vectors_are_current() {
     let mut stale = Vec::new();
     for (number, functions) in vectors::LESSON_FUNCTIONS {
         let (name, targets) = vectors::lesson_targets(lessons, number).unwrap();
-        let fresh = vectors::document(&name, functions, &targets).unwrap();
+        let made_by = format!("raytree vectors {number}");
+        let fresh = vectors::document(&name, &made_by, functions, &targets).unwrap();
         let path = lessons.join(&name).join("vectors.json");
         let committed = std::fs::read_to_string(&path).unwrap_or_default();
         if committed != fresh {

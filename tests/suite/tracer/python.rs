@@ -36,6 +36,15 @@ fn here() -> bool {
     available("", &[Need::Python3], "runs the course's Python tracer")
 }
 
+/// Whether this raytree has `raytree check` (issue 25's oracle, built beside
+/// this tracer): the comparisons then hand every learner trace to it too.
+fn has_check() -> bool {
+    Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["check", "--help"])
+        .output()
+        .is_ok_and(|o| o.status.success())
+}
+
 const SOLUTION: &str = "lessons/python/teacher/solution.py";
 const STARTER: &str = "lessons/python/starter/tracer.py";
 const COMPARE: &str = "lessons/python/tools/compare.py";
@@ -146,7 +155,7 @@ fn the_python_solution_agrees_with_raytree_on_every_pixel_of_the_whitted_scene()
     if !here() {
         return;
     }
-    let out = python(&[
+    let mut args = vec![
         COMPARE,
         "scenes/whitted.json",
         "--width",
@@ -155,12 +164,22 @@ fn the_python_solution_agrees_with_raytree_on_every_pixel_of_the_whitted_scene()
         "48",
         "--all",
         "--image",
-    ]);
+    ];
+    if has_check() {
+        args.push("--check");
+    }
+    let out = python(&args);
     let (stdout, stderr) = text(&out);
     assert!(out.status.success(), "{stdout}{stderr}");
     // Every pixel traced on both sides, and the two images the same bytes.
     assert!(stdout.contains(": 3072 pixels,"), "{stdout}");
     assert!(stdout.contains("image: 3072 pixels, 0 differ"), "{stdout}");
+    if has_check() {
+        assert!(
+            stdout.contains("raytree check: 3072 of 3072 pixels check clean"),
+            "{stdout}"
+        );
+    }
 }
 
 #[test]
@@ -182,6 +201,9 @@ fn the_python_solution_agrees_with_raytree_on_the_lessons_featured_pixels() {
     assert!(by_scene.len() >= 3, "{by_scene:?}");
     for (scene, pixels) in &by_scene {
         let mut args = vec![COMPARE, scene.as_str()];
+        if has_check() {
+            args.push("--check");
+        }
         for p in pixels {
             args.extend(["--pixel", p.as_str()]);
         }
