@@ -673,6 +673,7 @@ def run_vectors(lessons, wanted):
         with open(path, encoding="utf-8") as f:
             doc = json.load(f)
         scenes = {}
+        before = (passed, failed)
         for case in doc["cases"]:
             try:
                 ok, why = check_case(lessons, case, doc, scenes)
@@ -685,6 +686,8 @@ def run_vectors(lessons, wanted):
             else:
                 failed += 1
                 sys.stdout.write("FAIL %s %s: %s\n" % (doc["lesson"], case["name"], why))
+        sys.stdout.write("%s: %d passed, %d failed\n"
+                         % (doc["lesson"], passed - before[0], failed - before[1]))
     sys.stdout.write("%d passed, %d failed\n" % (passed, failed))
     return 0 if failed == 0 else 1
 

@@ -168,15 +168,15 @@ pub fn lesson_targets(dir: &Path, number: u32) -> Result<(String, Vec<Target>), 
     Ok((loaded.entry.name.clone(), targets))
 }
 
-/// The targets of a scene given by itself: its center pixel and the centers
-/// of its four quarters.
+/// The targets of a scene given by itself: the centers of a 5 × 5 grid of
+/// equal cells over its image, so most of what it shows is met.
 pub fn scene_targets(scene_path: &Path) -> Result<Vec<Target>, String> {
     let (scene, _) = source::load(Some(scene_path)).map_err(|e| format!("{e:#}"))?;
     let (w, h) = (scene.settings.width, scene.settings.height);
-    Ok([(2, 2), (1, 1), (3, 1), (1, 3), (3, 3)]
-        .into_iter()
-        .map(|(i, j)| {
-            let (x, y) = (w * i / 4, h * j / 4);
+    let at = |i: u32, size: u32| (2 * i + 1) * size / 10;
+    Ok((0..25)
+        .map(|k| {
+            let (x, y) = (at(k % 5, w), at(k / 5, h));
             Target {
                 scene: scene_path.to_owned(),
                 pixel: Some((x, y)),

@@ -10,7 +10,7 @@ use crate::output;
 
 #[derive(clap::Args)]
 pub struct Args {
-    /// A lesson's number (3 to 11: the cases of the functions it teaches, from its pixels and rays), or a scene file (the cases of every function, from five of its pixels).
+    /// A lesson's number (3 to 11: the cases of the functions it teaches, from its pixels and rays), or a scene file (the cases of every function, from 25 of its pixels).
     #[arg(value_name = "LESSON_OR_SCENE")]
     target: String,
     /// The folder holding the lessons (run from the repository, it is ./lessons).

@@ -46,3 +46,58 @@ fn lesson_vectors_are_current() {
     }
     assert!(stale.is_empty(), "{}", stale.join("\n"));
 }
+
+#[test]
+fn vectors_of_a_scene_hold_every_function_and_bad_targets_are_one_line() {
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .unwrap()
+    };
+    let functions_of = |scene: &str| {
+        let out = run(&["vectors", scene]);
+        assert!(out.status.success(), "{scene}");
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        let mut found: Vec<String> = (doc["cases"].as_array().unwrap().iter())
+            .map(|c| c["function"].as_str().unwrap().to_owned())
+            .collect();
+        found.sort();
+        found.dedup();
+        found
+    };
+    // The Whitted scene has every function but the transforms' (it places
+    // no object by a transform), which the egg of lesson 06 has.
+    let whitted = functions_of("scenes/whitted.json");
+    let egg = functions_of("lessons/06-transforms/ellipsoid.json");
+    for (_, functions) in vectors::LESSON_FUNCTIONS {
+        for f in functions {
+            let transform = ["to_object_ray", "normal_to_world"].contains(f);
+            let found = if transform { &egg } else { &whitted };
+            assert!(found.iter().any(|g| g == f), "no case of {f}: {found:?}");
+        }
+    }
+    for (args, said) in [
+        (
+            &["vectors", "2"][..],
+            "lesson 2: vectors exist for lessons 3 to 11",
+        ),
+        (&["vectors", "12"][..], "lesson 12"),
+        (&["vectors", "nosuch.json"][..], "nosuch.json"),
+        (
+            &["vectors", "5", "--lessons", "nosuch"][..],
+            "nosuch: no such folder",
+        ),
+    ] {
+        let out = run(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(1), "{args:?}: {stderr}");
+        assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with("error: ") && stderr.contains(said),
+            "{args:?}: {stderr}"
+        );
+        assert!(out.stdout.is_empty());
+    }
+}
