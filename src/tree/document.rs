@@ -19,7 +19,7 @@ use crate::tree::steps::{Step, StepKind, steps};
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 9;
+pub const VERSION: u32 = 10;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
