@@ -224,7 +224,7 @@ impl Walk<'_, '_> {
                 && node.hit.is_some()
                 && !same_color(k, DVec3::splat(ours_k))
             {
-                let why = diagnose::coefficient(ctx, name, k, i);
+                let why = diagnose::coefficient(ctx, i);
                 self.push(path, name, vec_words(k), num(ours_k), step, why, true);
             }
             let child_name = if kind == StepKind::Reflect {

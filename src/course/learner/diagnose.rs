@@ -333,9 +333,12 @@ pub fn tir(ctx: &Context, i: usize) -> Diagnosis {
     .expect("a known mistake")
 }
 
-/// A coefficient off (none are diagnosed alone: the color says more).
-pub fn coefficient(_ctx: &Context, _name: &str, _k: DVec3, _i: usize) -> Option<Diagnosis> {
-    None
+/// A coefficient off: after total internal reflection raytree's reflected
+/// ray carries the whole share, which a tracer that refracts anyway does not.
+pub fn coefficient(ctx: &Context, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let b = node.refracted.as_ref()?;
+    (b.outcome == crate::trace::recorder::Branch::TotalInternalReflection).then(|| tir(ctx, i))
 }
 
 /// A color summed without its coefficients, or with them twice.

@@ -192,13 +192,10 @@ fn coefficient(v: &Value, path: &str) -> Result<DVec3, Failure> {
     Ok(k)
 }
 
-/// A color: `[r, g, b]`, linear, each at least 0.
+/// A color: `[r, g, b]`, linear. A negative channel is accepted: it is a
+/// mistake the check diagnoses (a term not clamped at 0), not bad input.
 fn color(v: &Value, path: &str) -> Result<DVec3, Failure> {
-    let c = vector(v, path)?;
-    if c.min_element() < 0.0 {
-        return fail(path, "a color's channels are at least 0 (linear RGB)");
-    }
-    Ok(c)
+    vector(v, path)
 }
 
 fn optional<T>(
