@@ -565,3 +565,65 @@ fn common_refused(name: &str, scene: &[u8], learner: &[u8]) -> String {
         &["check", "s.json", "--pixel", "416,209", "l.json"],
     )
 }
+
+#[test]
+fn the_schema_and_the_examples_agree_with_the_reader() {
+    use raytree::course::learner::format::{
+        HIT_KEYS, KINDS, Key, RAY_KEYS, SHADOW_KEYS, TRACE_KEYS,
+    };
+    let docs = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs");
+    let schema: serde_json::Value = serde_json::from_str(
+        &std::fs::read_to_string(docs.join("learner-trace.schema.json")).unwrap(),
+    )
+    .unwrap();
+    let agree = |at: &serde_json::Value, keys: &[Key], what: &str| {
+        let mut props: Vec<&str> = at["properties"]
+            .as_object()
+            .unwrap()
+            .keys()
+            .map(String::as_str)
+            .collect();
+        let mut ours: Vec<&str> = keys.iter().map(|(k, _)| *k).collect();
+        props.sort();
+        ours.sort();
+        assert_eq!(props, ours, "{what}: the schema's keys");
+        let mut required: Vec<&str> = at["required"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|v| v.as_str().unwrap())
+            .collect();
+        let mut ours: Vec<&str> = keys.iter().filter(|(_, r)| *r).map(|(k, _)| *k).collect();
+        required.sort();
+        ours.sort();
+        assert_eq!(required, ours, "{what}: the schema's required keys");
+        assert_eq!(
+            at["additionalProperties"], false,
+            "{what}: unknown keys are refused"
+        );
+    };
+    agree(&schema, TRACE_KEYS, "document");
+    agree(&schema["$defs"]["ray"], RAY_KEYS, "ray");
+    agree(&schema["$defs"]["hit"], HIT_KEYS, "hit");
+    agree(&schema["$defs"]["shadow"], SHADOW_KEYS, "shadow");
+    assert_eq!(
+        schema["$defs"]["ray"]["properties"]["kind"]["enum"],
+        serde_json::json!(KINDS)
+    );
+    assert_eq!(
+        schema["properties"]["format"]["const"],
+        raytree::course::learner::format::FORMAT
+    );
+    // Every example reads, and the full one checks clean against its pixel.
+    let mut n = 0;
+    for e in std::fs::read_dir(docs.join("learner-trace")).unwrap() {
+        let path = e.unwrap().path();
+        let trace = read::read(&path).unwrap_or_else(|e| panic!("{e}"));
+        n += 1;
+        let (scene, src) = load("whitted.json");
+        let [x, y] = trace.pixel.unwrap();
+        let r = report::check(&scene, src, (x, y), &trace).unwrap();
+        assert!(r.agrees(), "{}:\n{}", path.display(), r.text());
+    }
+    assert!(n >= 2);
+}
