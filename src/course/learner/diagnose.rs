@@ -9,8 +9,8 @@
 
 use glam::DVec3;
 
-use crate::course::learner::compare::{Context, same_color, same_direction, tolerance};
 use crate::course::learner::format::{Kind, LearnerRay, LearnerShadow};
+use crate::course::learner::measure::{Context, same_color, same_direction, tolerance};
 use crate::geometry::object::Shape;
 use crate::math::ray::Ray;
 use crate::shading::optics::{reflect, refract};

@@ -7,6 +7,7 @@
 pub mod format; // the fields, their keys (shared with the schema's test) and the writer
 pub mod read; // the strict reader: bounded, every error one line with its JSON path
 pub mod reduce; // raytree's own trace reduced to the learner's fields
+pub mod measure; // the tolerances and why, and what a comparison works with
 pub mod compare; // pairing the learner's rays with ours, each quantity within its tolerance
 pub mod diagnose; // the classic mistakes, each recognised from its numbers
 pub mod report; // the check: the first divergence in the lecture's words, text or JSON

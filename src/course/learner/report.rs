@@ -10,8 +10,9 @@ use std::fmt::Write as _;
 
 use serde_json::{Value, json};
 
-use crate::course::learner::compare::{Context, Difference, compare};
+use crate::course::learner::compare::{Difference, compare};
 use crate::course::learner::format::LearnerTrace;
+use crate::course::learner::measure::Context;
 use crate::methods::Antialiasing;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
