@@ -28,6 +28,7 @@ use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
 use crate::tree::record::TraceError;
 use crate::tree::steps::{StepKind, visit_tests};
 use crate::views::numbers::{color, degrees, num, vec3};
+use crate::views::walk;
 
 /// A guided step-through, read and checked.
 #[derive(Clone, Debug, PartialEq)]
@@ -369,6 +370,18 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
             put("visit_max", vec3(visit.max));
             put("tests_before", visit.after_tests.to_string());
             put("visit_tests", visit_tests(node, k).to_string());
+            if trace.structure == crate::methods::Accel::Grid {
+                if let Some(exit) = walk::cell_exit(node, k) {
+                    put("exit_axis", walk::axis_name(exit.axis).to_owned());
+                    put("exit_t", num(exit.t));
+                    for (a, wall) in exit.walls.iter().enumerate() {
+                        if let Some((at, t)) = wall {
+                            put(&format!("wall.{}", walk::axis_name(a)), num(*at));
+                            put(&format!("wall_t.{}", walk::axis_name(a)), num(*t));
+                        }
+                    }
+                }
+            }
         }
         StepKind::Test(k) => {
             let test = &node.tests[k];

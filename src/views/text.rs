@@ -13,9 +13,10 @@ use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{
     Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, SumRecord,
 };
-use crate::tree::steps::{Step, StepKind, visit_tests};
+use crate::tree::steps::{Step, StepKind};
 use crate::views::explain::{self, Lines};
 use crate::views::numbers::{color, num, vec3};
+use crate::views::walk;
 
 /// The trace as an indented text tree; `numbered` prefixes each step with its
 /// number in execution order.
@@ -101,7 +102,7 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
             vec3(node.direction),
             explain::t_unit(node)
         )),
-        StepKind::Visit(k) => one(visited(node, k, trace.structure)),
+        StepKind::Visit(k) => walk::visited(node, k, trace.structure),
         StepKind::Test(k) => {
             let test = &node.tests[k];
             let kind = trace
@@ -209,44 +210,6 @@ fn returned_to(tree: &RayTree, node: &RayNode) -> String {
     node.parent.map_or("the pixel".to_owned(), |p| {
         format!("its parent, the {} ray", kind_name(tree.nodes[p].kind))
     })
-}
-
-/// One visit of the search through `structure`: which box or cell, and what
-/// came of it (the objects tested next, or the part of the scene skipped).
-fn visited(node: &RayNode, k: usize, structure: Accel) -> String {
-    let b = &node.boxes[k];
-    let n = node.boxes.len();
-    let tests = visit_tests(node, k);
-    let s = if tests == 1 { "" } else { "s" };
-    let place = format!("{} to {}", vec3(b.min), vec3(b.max));
-    match structure {
-        Accel::Grid | Accel::Octree | Accel::Bsp => {
-            let verb = match structure {
-                Accel::Grid => "walk grid cell",
-                Accel::Octree => "enter octree cell",
-                _ => "enter k-d tree cell",
-            };
-            let then = if tests > 0 {
-                format!("{tests} new object{s} to test")
-            } else {
-                "no new object to test".to_owned()
-            };
-            format!("{verb} {} of {n}, {place}: {then}", k + 1)
-        }
-        _ => {
-            let fate = if b.met {
-                "met"
-            } else {
-                "missed, all inside it skipped"
-            };
-            let then = if tests > 0 {
-                format!("; then {tests} object test{s}")
-            } else {
-                String::new()
-            };
-            format!("test box {} of {n}, {place}: {fate}{then}", k + 1)
-        }
-    }
 }
 
 /// How much searching a ray's closest hit took, through `structure`.
