@@ -26,8 +26,9 @@ use crate::scene::settings::RenderSettings;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
 use crate::tree::record::TraceError;
-use crate::tree::steps::StepKind;
+use crate::tree::steps::{StepKind, visit_tests};
 use crate::views::numbers::{color, degrees, num, vec3};
+use crate::views::walk;
 
 /// A guided step-through, read and checked.
 #[derive(Clone, Debug, PartialEq)]
@@ -281,7 +282,11 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
     // answer away before the step that computes it.
     let hit_known = !matches!(
         s.kind,
-        StepKind::Camera | StepKind::Spawn | StepKind::Test(_) | StepKind::Miss
+        StepKind::Camera
+            | StepKind::Spawn
+            | StepKind::Visit(_)
+            | StepKind::Test(_)
+            | StepKind::Miss
     );
     let local_known = matches!(
         s.kind,
@@ -358,6 +363,26 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
         }
     }
     match s.kind {
+        StepKind::Visit(k) => {
+            let visit = node.boxes[k];
+            put("visit", (k + 1).to_string());
+            put("visit_min", vec3(visit.min));
+            put("visit_max", vec3(visit.max));
+            put("tests_before", visit.after_tests.to_string());
+            put("visit_tests", visit_tests(node, k).to_string());
+            if trace.structure == crate::methods::Accel::Grid {
+                if let Some(exit) = walk::cell_exit(node, k) {
+                    put("exit_axis", walk::axis_name(exit.axis).to_owned());
+                    put("exit_t", num(exit.t));
+                    for (a, wall) in exit.walls.iter().enumerate() {
+                        if let Some((at, t)) = wall {
+                            put(&format!("wall.{}", walk::axis_name(a)), num(*at));
+                            put(&format!("wall_t.{}", walk::axis_name(a)), num(*t));
+                        }
+                    }
+                }
+            }
+        }
         StepKind::Test(k) => {
             let test = &node.tests[k];
             put("tested", test.name.clone());

@@ -9,4 +9,5 @@ pub(crate) mod spec_file; // a spec file's TOML as serde reads it
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
 pub mod lesson_command; // a spec's command lines, and the images and figures each one reads
 pub mod lesson; // the lessons: finding, loading and narrating one
+pub mod learner; // the learner trace format, and the check of a learner's tracer against ours
 pub mod vectors; // test vectors of the lecture's functions for a learner's own tracer

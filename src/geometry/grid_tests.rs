@@ -2,6 +2,7 @@
 //! primitive the ray meets, visits each once, and stops early.
 
 use super::*;
+use crate::geometry::walk_tests::{cube, everything_visited};
 
 /// Whether the ray meets the box at some `t ≥ t_min`: the slab test in f64,
 /// the leaving distances widened by `2γ(3)` for their rounding (pbrt-v4
@@ -26,31 +27,11 @@ fn meets(b: &Bounds, ray: &Ray, t_min: f64) -> bool {
     enter <= leave
 }
 
-fn cube(at: DVec3, half: f64) -> Bounds {
-    Bounds {
-        min: at - half,
-        max: at + half,
-    }
-}
-
-/// Every primitive the ray meets (or visits, from `t_min` on), with a walk
-/// that never shrinks `t_max`, and the steps it took.
+/// Every primitive the walk hands out from `t_min` on, and its steps.
 fn walk(grid: &Grid, ray: &Ray, t_min: f64) -> (Vec<usize>, u32) {
-    let mut visited = Vec::new();
-    let mut tested = TestCounts::default();
-    let flow = grid.traverse_seeing(
-        ray,
-        t_min,
-        &mut { f64::INFINITY },
-        &mut tested,
-        |_, _| {},
-        |p, _| {
-            visited.push(p);
-            ControlFlow::Continue(())
-        },
-    );
-    assert_eq!(flow, ControlFlow::Continue(()));
-    (visited, tested.boxes)
+    everything_visited(|t_max, tested, visit| {
+        grid.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    })
 }
 
 /// A few thousand boxes of mixed kinds in [-10, 10]³: many small, a few

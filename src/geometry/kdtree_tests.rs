@@ -2,33 +2,15 @@
 //! primitive the ray meets, visits each once, and stops early.
 
 use super::*;
+pub(super) use crate::geometry::walk_tests::cube;
+use crate::geometry::walk_tests::everything_visited;
 use glam::DVec3;
 
-/// Every primitive `traverse_seeing` reports, in order, with an interval
-/// that never shrinks.
+/// Every primitive the walk hands out from `t_min` on, in order, and its steps.
 pub(super) fn visited(tree: &KdTree, ray: &Ray, t_min: f64) -> (Vec<usize>, u32) {
-    let mut out = Vec::new();
-    let mut tested = TestCounts::default();
-    let flow = tree.traverse_seeing(
-        ray,
-        t_min,
-        &mut { f64::INFINITY },
-        &mut tested,
-        |_, _| {},
-        |p, _| {
-            out.push(p);
-            ControlFlow::Continue(())
-        },
-    );
-    assert_eq!(flow, ControlFlow::Continue(()));
-    (out, tested.boxes)
-}
-
-pub(super) fn cube(at: DVec3, half: f64) -> Bounds {
-    Bounds {
-        min: at - half,
-        max: at + half,
-    }
+    everything_visited(|t_max, tested, visit| {
+        tree.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    })
 }
 
 /// A box on an integer grid ("ticks"): its coordinates times a power of two

@@ -3,22 +3,8 @@
 
 use super::tests::{cube, visited};
 use super::*;
+use crate::geometry::walk_tests::sphere_hit;
 use glam::DVec3;
-
-/// The nearest root of a sphere's quadratic above `t_min`.
-fn sphere_hit(c: DVec3, r: f64, ray: &Ray, t_min: f64) -> Option<f64> {
-    let oc = ray.origin - c;
-    let a = ray.dir.length_squared();
-    let b = oc.dot(ray.dir);
-    let disc = b * b - a * (oc.length_squared() - r * r);
-    if disc < 0.0 {
-        return None;
-    }
-    let s = disc.sqrt();
-    [(-b - s) / a, (-b + s) / a]
-        .into_iter()
-        .find(|&t| t > t_min)
-}
 
 /// A closest-hit search through the tree finds what the lecture's loop over
 /// every sphere finds. It fails if the walk stops too early once `t_max`

@@ -18,3 +18,5 @@ pub mod mailbox; // a primitive listed in several cells is handed to a ray once
 pub mod grid; // avoiding intersection tests another way: a uniform grid of cells, walked by the 3D-DDA
 pub mod octree; // the lecture's octree: a cube split in eight, cells walked nearest first
 pub mod kdtree; // the axis-aligned BSP tree: a k-d tree built by the surface area heuristic, walked front to back
+#[cfg(test)]
+mod walk_tests; // what the structures' tests share: cubes, a whole walk, a reference sphere hit

@@ -2,32 +2,13 @@
 //! primitive the ray meets, visits each once, and stops early.
 
 use super::*;
+use crate::geometry::walk_tests::{cube, everything_visited, sphere_hit};
 
-fn cube(at: DVec3, half: f64) -> Bounds {
-    Bounds {
-        min: at - half,
-        max: at + half,
-    }
-}
-
-/// Every primitive visited with an infinite, never-shrunk `t_max`, in order;
-/// and the traversal steps.
+/// Every primitive the walk hands out from `t_min` on, in order, and its steps.
 fn walk(tree: &Octree, ray: &Ray, t_min: f64) -> (Vec<usize>, u32) {
-    let mut visited = Vec::new();
-    let mut tested = TestCounts::default();
-    let flow = tree.traverse_seeing(
-        ray,
-        t_min,
-        &mut { f64::INFINITY },
-        &mut tested,
-        |_, _| {},
-        |p, _| {
-            visited.push(p);
-            ControlFlow::Continue(())
-        },
-    );
-    assert_eq!(flow, ControlFlow::Continue(()));
-    (visited, tested.boxes)
+    everything_visited(|t_max, tested, visit| {
+        tree.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+    })
 }
 
 fn point(rng: &mut fastrand::Rng, lo: f64, hi: f64) -> DVec3 {
@@ -246,22 +227,6 @@ fn visits_every_primitive_the_ray_meets_exactly_once() {
         "{visited_total} of {}",
         8000 * boxes.len()
     );
-}
-
-/// The nearest root of a sphere beyond `t_min`.
-fn sphere_hit(center: DVec3, radius: f64, ray: &Ray, t_min: f64) -> Option<f64> {
-    let oc = ray.origin - center;
-    let a = ray.dir.dot(ray.dir);
-    let b = oc.dot(ray.dir);
-    let c = oc.dot(oc) - radius * radius;
-    let disc = b * b - a * c;
-    if disc < 0.0 {
-        return None;
-    }
-    let s = disc.sqrt();
-    [(-b - s) / a, (-b + s) / a]
-        .into_iter()
-        .find(|&t| t > t_min)
 }
 
 /// Can fail if a closer sphere sits in a cell the walk skipped because a

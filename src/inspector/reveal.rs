@@ -21,6 +21,8 @@ pub struct Revealed {
 pub struct Progress {
     /// Spawned.
     pub spawned: bool,
+    /// Boxes or cells of the scene's structure visited so far.
+    pub visits: usize,
     /// Object tests run so far.
     pub tests: usize,
     /// The closest hit (or the miss) is known.
@@ -41,6 +43,7 @@ impl Progress {
     /// A computation that is over: every stage done (counts saturated).
     pub const DONE: Progress = Progress {
         spawned: true,
+        visits: usize::MAX,
         tests: usize::MAX,
         hit: true,
         shadows: usize::MAX,
@@ -73,6 +76,7 @@ impl Revealed {
             match step.kind {
                 StepKind::Camera => r.camera = true,
                 StepKind::Spawn => p.spawned = true,
+                StepKind::Visit(k) => p.visits = k + 1,
                 StepKind::Test(k) => p.tests = k + 1,
                 StepKind::Hit | StepKind::Miss => p.hit = true,
                 StepKind::Shadow(k) => p.shadows = k + 1,

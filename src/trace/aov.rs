@@ -320,7 +320,7 @@ impl Aov {
             }
             Aov::T => "t·|c| along the primary ray S + t·c (t = 1 on the image plane)",
             Aov::Tests => {
-                "what the efficiency slide counts: with a structure (--accel), its steps replace most object tests"
+                "what the efficiency slide counts: the object tests, plus the steps of the structure (--accel) when one is built"
             }
             _ => "",
         }

@@ -57,10 +57,15 @@ pub fn render_aov(
         name: aov.name(scene),
         title: match aov {
             // What the counts count depends on the structure built.
-            Aov::Tests => format!(
-                "intersection tests per pixel ({} + objects)",
-                tracer.accelerator().kind().step_word(true)
-            ),
+            Aov::Tests => match tracer.accelerator().kind() {
+                crate::methods::Accel::None => {
+                    "intersection tests per pixel (objects: no structure)".to_owned()
+                }
+                kind => format!(
+                    "intersection tests per pixel ({} + objects)",
+                    kind.step_word(true)
+                ),
+            },
             _ => aov.title(scene),
         },
         key: aov.key(scene),

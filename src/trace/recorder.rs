@@ -202,6 +202,10 @@ pub struct BoxVisit {
     pub bounds: crate::math::bounds::Bounds,
     /// The ray met it within its interval, so its children were visited.
     pub met: bool,
+    /// How many objects the search had tested before this visit: places the
+    /// visit among the tests, so a step-through walks cells and tests in the
+    /// order the search ran them.
+    pub after_tests: usize,
 }
 
 /// Receives the tracer's events. Every method defaults to doing nothing.

@@ -228,9 +228,15 @@ impl<'s> Tracer<'s> {
         let (mut outer, mut inner) = (TestCounts::default(), TestCounts::default());
         // The hierarchy's boxes, kept only when recording (a diagram draws them).
         let mut boxes = Vec::new();
+        // Tests made so far, shared by the two closures below.
+        let tests_made = std::cell::Cell::new(0usize);
         let seen = |bounds, met| {
             if R::ENABLED {
-                boxes.push(BoxVisit { bounds, met });
+                boxes.push(BoxVisit {
+                    bounds,
+                    met,
+                    after_tests: tests_made.get(),
+                });
             }
         };
         let _ = self.accel.visit_seeing(
@@ -249,6 +255,7 @@ impl<'s> Tracer<'s> {
                 );
                 if R::ENABLED {
                     crate::record!(rec.object_tested(i, &roots));
+                    tests_made.set(tests_made.get() + 1);
                 }
                 if let Some(t) = roots.first_in(t_min, *t_closest) {
                     closest = Some((i, roots.face()));

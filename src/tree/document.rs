@@ -19,7 +19,7 @@ use crate::tree::steps::{Step, StepKind, steps};
 /// The value of the `format` field.
 pub const FORMAT: &str = "raytree-trace";
 /// The value of the `version` field: raised whenever a field changes meaning or goes.
-pub const VERSION: u32 = 9;
+pub const VERSION: u32 = 10;
 
 /// A trace document.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -195,39 +195,7 @@ impl TraceDocument {
     /// roots) kept on one line so a tree reads top to bottom.
     pub fn to_json(&self) -> String {
         let pretty = serde_json::to_string_pretty(self).expect("a trace always serializes");
-        let mut out = String::with_capacity(pretty.len());
-        let mut lines = pretty.lines().peekable();
-        while let Some(line) = lines.next() {
-            if line.ends_with('[') {
-                // Gather the items up to the closing bracket if they are all numbers.
-                let mut items = Vec::new();
-                let mut look = lines.clone();
-                let mut close = None;
-                for next in look.by_ref() {
-                    let t = next.trim();
-                    if t.starts_with(']') {
-                        close = Some(t);
-                        break;
-                    }
-                    let item = t.trim_end_matches(',');
-                    if item.parse::<f64>().is_err() {
-                        break;
-                    }
-                    items.push(item);
-                }
-                if let Some(close) = close {
-                    out.push_str(line);
-                    out.push_str(&items.join(", "));
-                    out.push_str(close);
-                    out.push('\n');
-                    lines = look;
-                    continue;
-                }
-            }
-            out.push_str(line);
-            out.push('\n');
-        }
-        out
+        numbers_on_one_line(&pretty)
     }
 
     /// The steps of sample `k` in execution order: for a pixel, the camera
@@ -240,4 +208,43 @@ impl TraceDocument {
         });
         camera.into_iter().chain(steps(&sample.tree)).collect()
     }
+}
+
+/// Pretty JSON with every array of numbers (vectors, colors, roots) put on
+/// one line, so a tree reads top to bottom: the trace document's layout, and
+/// the learner trace's.
+pub fn numbers_on_one_line(pretty: &str) -> String {
+    let mut out = String::with_capacity(pretty.len());
+    let mut lines = pretty.lines().peekable();
+    while let Some(line) = lines.next() {
+        if line.ends_with('[') {
+            // Gather the items up to the closing bracket if they are all numbers.
+            let mut items = Vec::new();
+            let mut look = lines.clone();
+            let mut close = None;
+            for next in look.by_ref() {
+                let t = next.trim();
+                if t.starts_with(']') {
+                    close = Some(t);
+                    break;
+                }
+                let item = t.trim_end_matches(',');
+                if item.parse::<f64>().is_err() {
+                    break;
+                }
+                items.push(item);
+            }
+            if let Some(close) = close {
+                out.push_str(line);
+                out.push_str(&items.join(", "));
+                out.push_str(close);
+                out.push('\n');
+                lines = look;
+                continue;
+            }
+        }
+        out.push_str(line);
+        out.push('\n');
+    }
+    out
 }

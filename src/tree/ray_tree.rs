@@ -80,6 +80,8 @@ pub struct BoxRecord {
     pub max: DVec3,
     /// The ray met the box within its interval, so the box's children were visited.
     pub met: bool,
+    /// How many of the ray's `tests` ran before this box was visited.
+    pub after_tests: usize,
 }
 
 /// The test of one object.

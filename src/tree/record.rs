@@ -375,6 +375,7 @@ impl Recorder for TreeRecorder<'_> {
                 min: b.bounds.min,
                 max: b.bounds.max,
                 met: b.met,
+                after_tests: b.after_tests,
             })
             .collect();
     }

@@ -1,11 +1,12 @@
 //! The ray tree read as the algorithm ran (after the camera stage that made a
-//! pixel's primary ray, which the trace document adds): spawn a ray, test each object, take
+//! pixel's primary ray, which the trace document adds): spawn a ray, search
+//! for its closest hit (visiting the structure's boxes or cells, testing objects), take
 //! the closest hit (or miss), cast each shadow ray, sum the local color, spawn
 //! the reflected ray (and everything under it), spawn the refracted ray,
 //! combine, return. Derived from the tree alone, so every view steps through the
 //! same list; [`crate::views::text`] writes each step out with its numbers.
 
-use crate::tree::ray_tree::RayTree;
+use crate::tree::ray_tree::{RayNode, RayTree};
 
 /// What kind of step.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -14,6 +15,10 @@ pub enum StepKind {
     Camera,
     /// A ray is spawned.
     Spawn,
+    /// The search visits one box or cell of the scene's structure (a BVH box
+    /// tested, a grid cell walked, an octree or k-d tree node entered): the
+    /// index into the node's `boxes`.
+    Visit(usize),
     /// One object is tested: the index into the node's `tests`.
     Test(usize),
     /// The closest hit is chosen.
@@ -43,6 +48,17 @@ pub struct Step {
     pub kind: StepKind,
 }
 
+/// How many objects the search tested right after visit `k` of `node` (before
+/// its next visit): a grid cell's new objects, a BVH leaf's, none for an
+/// inner box or an empty cell.
+pub fn visit_tests(node: &RayNode, k: usize) -> usize {
+    let next = node
+        .boxes
+        .get(k + 1)
+        .map_or(node.tests.len(), |b| b.after_tests);
+    next.saturating_sub(node.boxes[k].after_tests)
+}
+
 /// The steps of `tree` in execution order.
 pub fn steps(tree: &RayTree) -> Vec<Step> {
     let mut out = Vec::new();
@@ -56,7 +72,15 @@ fn walk(tree: &RayTree, i: usize, out: &mut Vec<Step>) {
     let node = &tree.nodes[i];
     let step = |kind| Step { node: i, kind };
     out.push(step(StepKind::Spawn));
-    out.extend((0..node.tests.len()).map(|k| step(StepKind::Test(k))));
+    // The structure's visits interleave with the tests, as the search ran them.
+    let mut visits = node.boxes.iter().enumerate().peekable();
+    for k in 0..node.tests.len() {
+        while let Some((v, _)) = visits.next_if(|(_, b)| b.after_tests <= k) {
+            out.push(step(StepKind::Visit(v)));
+        }
+        out.push(step(StepKind::Test(k)));
+    }
+    out.extend(visits.map(|(v, _)| step(StepKind::Visit(v))));
     if node.hit.is_none() {
         out.extend([step(StepKind::Miss), step(StepKind::Return)]);
         return;

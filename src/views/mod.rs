@@ -6,6 +6,7 @@
 pub mod numbers; // numbers written for reading
 pub mod text; // the trace in words
 pub mod explain; // the lecture's arithmetic of each step, written out
+pub mod walk; // a structure's walk step by step: the box or cell, and the wall a grid cell is left through
 mod explain_shapes; // the polygon's and the cone's tests, written out
 pub mod diagram; // a pixel's rays drawn over the scene, in 2D
 pub mod aov_figure; // a per-pixel quantity with its color bar or key

@@ -16,6 +16,7 @@ use crate::tree::ray_tree::{
 use crate::tree::steps::{Step, StepKind};
 use crate::views::explain::{self, Lines};
 use crate::views::numbers::{color, num, vec3};
+use crate::views::walk;
 
 /// The trace as an indented text tree; `numbered` prefixes each step with its
 /// number in execution order.
@@ -101,6 +102,7 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
             vec3(node.direction),
             explain::t_unit(node)
         )),
+        StepKind::Visit(k) => walk::visited(node, k, trace.structure),
         StepKind::Test(k) => {
             let test = &node.tests[k];
             let kind = trace

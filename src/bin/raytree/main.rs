@@ -9,6 +9,7 @@
 mod aov;
 mod args;
 mod chart;
+mod check;
 mod convert;
 mod diagram;
 mod diff;
@@ -62,6 +63,8 @@ enum Command {
     Diff(diff::Args),
     /// Draw the lecture's PostScript ray tracer with Ghostscript (PNG), its transcription slips repaired.
     Postscript(postscript::Args),
+    /// Check a learner's own ray tracer against raytree, ray by ray: `raytree check SCENE --pixel X,Y LEARNER.json` names the first number that differs, where, and the classic mistake behind it. Exit status 0 all agree, 1 a divergence, 2 bad input.
+    Check(check::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(generate::Args),
     /// Write an NFF scene (Haines's Standard Procedural Databases) as raytree scene JSON, the scene render reads from it.
@@ -93,6 +96,11 @@ fn main() -> ExitCode {
         // errors are 2, as cmp's and diff's are.
         Command::Diff(args) => {
             return diff::run(&args)
+                .unwrap_or_else(|e| finish_or(Err(e), ExitCode::from(diff::TROUBLE)));
+        }
+        // Its exit status is its answer (1: a divergence), so bad input is 2.
+        Command::Check(args) => {
+            return check::run(&args)
                 .unwrap_or_else(|e| finish_or(Err(e), ExitCode::from(diff::TROUBLE)));
         }
         Command::Postscript(args) => postscript::run(&args),

@@ -6,6 +6,7 @@ mod bounds;
 mod chart;
 mod fuzz;
 mod inputs;
+mod learner;
 mod nff;
 mod outputs;
 mod pipes;

@@ -63,7 +63,7 @@ fn every_box_counted_is_recorded_and_its_fate_is_what_the_slabs_say() {
                     let wider = BoxRecord {
                         min: b.min - grow,
                         max: b.max + grow,
-                        met: true,
+                        ..*b
                     };
                     assert!(
                         slabs(node.origin, node.direction, &wider).is_some(),
@@ -167,5 +167,106 @@ fn scenes_without_a_hierarchy_record_no_boxes() {
     assert!(
         !json.contains("\"boxes\":["),
         "empty boxes are left out of the JSON"
+    );
+}
+
+/// A grid walk's cells sit among the ray's tests where the search made them:
+/// the objects tested after a cell and before the next are ones the cell
+/// lists (their boxes overlap it), the unbounded floor comes before the walk,
+/// and the steps (`raytree trace --steps`, the step-through) put each cell
+/// just before the tests it led to. A stamp taken at the wrong moment would
+/// put an object under a cell it does not touch.
+#[test]
+fn a_grid_walks_cells_sit_among_its_tests_where_the_search_made_them() {
+    use raytree::methods::Accel;
+    use raytree::tree::steps::{StepKind, steps};
+    let file = "lessons/12-efficiency/scatter.json";
+    let mut scene =
+        raytree::scene::loader::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(file))
+            .unwrap();
+    scene.settings.accel = Accel::Grid;
+    let mut placed = 0;
+    for (x, y) in [(497, 160), (320, 240), (100, 300), (560, 400), (200, 120)] {
+        let trace =
+            raytree::tree::record::pixel(&scene, SceneSource::new(file, ""), x, y, None).unwrap();
+        let tree = &trace.samples[0].tree;
+        let order = steps(tree);
+        for (i, node) in tree.nodes.iter().enumerate() {
+            let first = node
+                .boxes
+                .first()
+                .map_or(node.tests.len(), |b| b.after_tests);
+            for test in &node.tests[..first] {
+                assert!(
+                    scene.objects[test.object].bounds().is_none(),
+                    "({x}, {y}) ray {i}: '{}' tested before the walk, but a cell could hold it",
+                    test.name
+                );
+            }
+            for (k, cell) in node.boxes.iter().enumerate() {
+                let end = node
+                    .boxes
+                    .get(k + 1)
+                    .map_or(node.tests.len(), |b| b.after_tests);
+                assert!(
+                    cell.after_tests <= end,
+                    "({x}, {y}) ray {i}: stamps go backwards"
+                );
+                for test in &node.tests[cell.after_tests..end] {
+                    let b = scene.objects[test.object].bounds().unwrap_or_else(|| {
+                        panic!(
+                            "({x}, {y}) ray {i}: unbounded '{}' tested in a cell",
+                            test.name
+                        )
+                    });
+                    // The grid lists an object in every cell its box overlaps,
+                    // widened by a few roundings: a relative 1e-9 covers them
+                    // and is far below any cell's size here (about 1).
+                    let slack = 1e-9 * (1.0 + b.max.abs().max(b.min.abs()).max_element());
+                    let apart = (0..3)
+                        .any(|a| b.max[a] < cell.min[a] - slack || b.min[a] > cell.max[a] + slack);
+                    assert!(
+                        !apart,
+                        "({x}, {y}) ray {i}: '{}' tested after cell {} it does not touch",
+                        test.name,
+                        k + 1
+                    );
+                    placed += 1;
+                }
+            }
+            // In the steps, each test comes after exactly the cells stamped
+            // at or before it, and the cells come in the order walked.
+            let mine: Vec<StepKind> = order
+                .iter()
+                .filter(|s| s.node == i)
+                .map(|s| s.kind)
+                .collect();
+            let mut walked = 0;
+            for kind in mine {
+                match kind {
+                    StepKind::Visit(k) => {
+                        assert_eq!(k, walked, "({x}, {y}) ray {i}: cells out of order");
+                        walked += 1;
+                    }
+                    StepKind::Test(t) => {
+                        let due = node.boxes.iter().filter(|b| b.after_tests <= t).count();
+                        assert_eq!(
+                            walked, due,
+                            "({x}, {y}) ray {i}: test {t} after {walked} cells"
+                        );
+                    }
+                    _ => {}
+                }
+            }
+            assert_eq!(
+                walked,
+                node.boxes.len(),
+                "({x}, {y}) ray {i}: every cell is a step"
+            );
+        }
+    }
+    assert!(
+        placed >= 10,
+        "only {placed} tests placed: pick pixels that walk the grid"
     );
 }

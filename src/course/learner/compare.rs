@@ -1,0 +1,494 @@
+//! The learner's rays paired with raytree's, by kind and order (the primary
+//! ray, then each hit's reflected and refracted child), and every quantity
+//! the learner gave compared within its tolerance. The differences come out
+//! in the order raytree's algorithm ran, each with the step number `raytree
+//! trace --steps` prints, so the first one is the first divergence.
+//!
+//! The tolerances are in [`crate::course::learner::measure`].
+
+use glam::DVec3;
+
+use crate::course::learner::diagnose::{self, Diagnosis};
+use crate::course::learner::format::{LearnerRay, LearnerTrace};
+use crate::course::learner::measure::{
+    COLOR, Context, PER_LEVEL, same_color, same_direction, same_point, tolerance,
+};
+use crate::trace::recorder::Branch;
+use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
+use crate::tree::steps::StepKind;
+use crate::views::numbers::{color as color_words, num, vec3 as vec_words};
+
+/// One difference between the learner's trace and raytree's.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Difference {
+    /// The ray, as its path from the primary ray: `primary → refracted d2`.
+    pub ray: String,
+    /// What differs: `direction`, `hit.t`, `shadows[1].blocked`, ….
+    pub quantity: String,
+    /// The learner's value, in words.
+    pub learner: String,
+    /// raytree's value, in words.
+    pub ours: String,
+    /// The step of raytree's trace where it arises (as `raytree trace --steps` numbers them).
+    pub step: usize,
+    /// The classic mistake its numbers show, if any.
+    pub diagnosis: Option<Diagnosis>,
+    /// `false`: a difference tolerated and only said (a branch raytree cut off).
+    pub divergence: bool,
+}
+
+/// Every difference, in the order raytree's algorithm met them.
+pub fn compare(ctx: &Context, learner: &LearnerTrace) -> Vec<Difference> {
+    let mut out = Vec::new();
+    let mut walk = Walk { ctx, out: &mut out };
+    walk.ray(&learner.ray, 0, "primary");
+    out.sort_by_key(|d| d.step);
+    out
+}
+
+struct Walk<'c, 'a> {
+    ctx: &'c Context<'a>,
+    out: &'c mut Vec<Difference>,
+}
+
+impl Walk<'_, '_> {
+    #[allow(clippy::too_many_arguments)]
+    fn push(
+        &mut self,
+        ray: &str,
+        quantity: impl Into<String>,
+        learner: String,
+        ours: String,
+        step: usize,
+        diagnosis: Option<Diagnosis>,
+        divergence: bool,
+    ) {
+        self.out.push(Difference {
+            ray: ray.to_owned(),
+            quantity: quantity.into(),
+            learner,
+            ours,
+            step,
+            diagnosis,
+            divergence,
+        });
+    }
+
+    /// Compares the learner's `l` with node `i`; returns what the learner's
+    /// branches that raytree cut off add to `l`'s color, so that its color is
+    /// compared with ours plus that.
+    fn ray(&mut self, l: &LearnerRay, i: usize, path: &str) -> DVec3 {
+        let ctx = self.ctx;
+        let tree = ctx.tree();
+        let node = &tree.nodes[i];
+        let tol = tolerance(node.depth);
+        let spawn = if i == 0 {
+            ctx.step(0, StepKind::Camera)
+        } else {
+            ctx.step(i, StepKind::Spawn)
+        };
+        if !same_point(l.origin, node.origin, node.origin, tol) {
+            self.push(
+                path,
+                "origin",
+                vec_words(l.origin),
+                vec_words(node.origin),
+                spawn,
+                None,
+                true,
+            );
+        }
+        if !same_direction(l.direction, node.direction, tol) {
+            let why = diagnose::direction(ctx, l, i);
+            self.push(
+                path,
+                "direction (as a unit vector)",
+                vec_words(l.direction.normalize()),
+                vec_words(node.direction.normalize()),
+                spawn,
+                why,
+                true,
+            );
+        }
+        self.hit(l, i, path, tol);
+        self.shadows(l, node, i, path, tol);
+        let local_step = ctx.step(i, StepKind::Local);
+        if let (Some(lc), Some(ours)) = (l.local, &node.local)
+            && !same_color(lc, ours.total)
+        {
+            let why = diagnose::local(ctx, l, i);
+            self.push(
+                path,
+                "local color",
+                color_words(lc),
+                color_words(ours.total),
+                local_step,
+                why,
+                true,
+            );
+        }
+        let mut extra = DVec3::ZERO;
+        for (name, k, ours_k, child, branch, kind) in [
+            (
+                "k_rfl",
+                l.k_rfl,
+                node.sum.k_rfl,
+                &l.reflected,
+                &node.reflected,
+                StepKind::Reflect,
+            ),
+            (
+                "k_rfa",
+                l.k_rfa,
+                node.sum.k_rfa,
+                &l.refracted,
+                &node.refracted,
+                StepKind::Refract,
+            ),
+        ] {
+            let step = ctx.step(i, kind);
+            if let Some(k) = k
+                && node.hit.is_some()
+                && !same_color(k, DVec3::splat(ours_k))
+            {
+                let why = diagnose::coefficient(ctx, i);
+                self.push(path, name, vec_words(k), num(ours_k), step, why, true);
+            }
+            let child_name = if kind == StepKind::Reflect {
+                "reflected"
+            } else {
+                "refracted"
+            };
+            let traced = branch.as_ref().and_then(|b| b.node);
+            match (child, traced) {
+                (None | Some(None), None) => {}
+                (Some(Some(c)), Some(j)) => {
+                    let depth = tree.nodes[j].depth;
+                    let sub = self.ray(c, j, &format!("{path} → {child_name} d{depth}"));
+                    extra += branch.as_ref().map_or(0.0, |b| b.coefficient) * sub;
+                }
+                (Some(None), Some(j)) => self.push(
+                    path,
+                    child_name,
+                    "not spawned".to_owned(),
+                    format!("spawned (depth {})", tree.nodes[j].depth),
+                    step,
+                    None,
+                    true,
+                ),
+                (None, Some(_)) => {}
+                (Some(Some(c)), None) => {
+                    extra += self.extra_branch(c, node, i, path, child_name, step)
+                }
+            }
+        }
+        if let Some(tir) = l.tir
+            && node.hit.is_some()
+        {
+            let ours = node
+                .refracted
+                .as_ref()
+                .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
+            if tir != ours {
+                let why = (!tir).then(|| diagnose::tir(ctx, i));
+                let step = ctx.step(i, StepKind::Refract);
+                self.push(
+                    path,
+                    "tir (total internal reflection)",
+                    tir.to_string(),
+                    ours.to_string(),
+                    step,
+                    why,
+                    true,
+                );
+            }
+        }
+        if let Some(c) = l.color {
+            let expected = node.color() + extra;
+            if !same_color(c, expected) {
+                let why = diagnose::color(ctx, l, i);
+                let step = ctx.step(i, StepKind::Combine);
+                self.push(
+                    path,
+                    "color",
+                    color_words(c),
+                    color_words(expected),
+                    step,
+                    why,
+                    true,
+                );
+            }
+        }
+        extra
+    }
+
+    /// A child the learner traced where raytree did not: tolerated (and said)
+    /// when raytree stopped for its depth, its weight or a zero coefficient,
+    /// a divergence after total internal reflection. Returns what it adds to
+    /// the parent's color.
+    fn extra_branch(
+        &mut self,
+        c: &LearnerRay,
+        node: &RayNode,
+        i: usize,
+        path: &str,
+        child_name: &str,
+        step: usize,
+    ) -> DVec3 {
+        let branch = if child_name == "reflected" {
+            &node.reflected
+        } else {
+            &node.refracted
+        };
+        let at = format!("{path} → {child_name} d{}", node.depth + 1);
+        let outcome = branch.as_ref().map(|b| b.outcome);
+        let (why, divergence) = match outcome {
+            Some(Branch::MaxDepth) => ("raytree stopped at the scene's max_depth", false),
+            Some(Branch::WeightCutoff) => {
+                ("raytree skipped it: its weight is below the cutoff", false)
+            }
+            Some(Branch::NoCoefficient) => ("raytree spawns none: its coefficient is 0", false),
+            Some(Branch::TotalInternalReflection) => {
+                ("total internal reflection: there is no refracted ray", true)
+            }
+            Some(Branch::Traced) | None => ("raytree's ray missed: it has no children", true),
+        };
+        let diagnosis =
+            (outcome == Some(Branch::TotalInternalReflection)).then(|| diagnose::tir(self.ctx, i));
+        self.push(
+            &at,
+            "ray",
+            "spawned".to_owned(),
+            format!("not spawned ({why})"),
+            step,
+            diagnosis,
+            divergence,
+        );
+        let k = branch.as_ref().map_or(0.0, |b| b.coefficient);
+        if divergence {
+            DVec3::ZERO
+        } else {
+            k * c.color.unwrap_or(DVec3::ZERO)
+        }
+    }
+
+    fn hit(&mut self, l: &LearnerRay, i: usize, path: &str, tol: f64) {
+        let ctx = self.ctx;
+        let node = &ctx.tree().nodes[i];
+        let Some(given) = &l.hit else { return };
+        let step = ctx.step(
+            i,
+            if node.hit.is_some() {
+                StepKind::Hit
+            } else {
+                StepKind::Miss
+            },
+        );
+        let (h, ours) = match (given, &node.hit) {
+            (None, None) => return,
+            (Some(h), Some(ours)) => (h, ours),
+            (None, Some(ours)) => {
+                let why = diagnose::hit(ctx, l, i);
+                let ours = format!(
+                    "'{}' at distance {}",
+                    ours.name,
+                    num(ours.t * node.direction.length())
+                );
+                self.push(path, "hit", "missed".to_owned(), ours, step, why, true);
+                return;
+            }
+            (Some(h), None) => {
+                let why = diagnose::hit(ctx, l, i);
+                let what = h
+                    .object
+                    .as_deref()
+                    .map_or("something".to_owned(), |o| format!("'{o}'"));
+                self.push(path, "hit", what, "missed".to_owned(), step, why, true);
+                return;
+            }
+        };
+        if let Some(o) = &h.object
+            && *o != ours.name
+        {
+            let why = diagnose::hit(ctx, l, i);
+            self.push(
+                path,
+                "hit.object",
+                format!("'{o}'"),
+                format!("'{}'", ours.name),
+                step,
+                why,
+                true,
+            );
+            return;
+        }
+        if let Some(t) = h.t {
+            let (dl, d) = (t * l.direction.length(), ours.t * node.direction.length());
+            if (dl - d).abs() > tol * 1f64.max(d).max(node.origin.length()) {
+                let why = diagnose::hit(ctx, l, i);
+                self.push(
+                    path,
+                    "hit.t (as a distance, t·|direction|)",
+                    num(dl),
+                    num(d),
+                    step,
+                    why,
+                    true,
+                );
+            }
+        }
+        if let Some(p) = h.point
+            && !same_point(p, ours.point, node.origin, tol)
+        {
+            self.push(
+                path,
+                "hit.point",
+                vec_words(p),
+                vec_words(ours.point),
+                step,
+                None,
+                true,
+            );
+        }
+        if let Some(n) = h.normal
+            && !same_direction(n, ours.shading_normal, tol)
+        {
+            let why = diagnose::normal(ctx, n, i);
+            self.push(
+                path,
+                "hit.normal (as a unit vector)",
+                vec_words(n.normalize()),
+                vec_words(ours.shading_normal),
+                step,
+                why,
+                true,
+            );
+        }
+        if let Some(e) = h.entering
+            && e != ours.entering
+        {
+            let words = |e: bool| if e { "entering" } else { "leaving" }.to_owned();
+            self.push(
+                path,
+                "hit.entering",
+                words(e),
+                words(ours.entering),
+                step,
+                None,
+                true,
+            );
+        }
+    }
+
+    fn shadows(&mut self, l: &LearnerRay, node: &RayNode, i: usize, path: &str, tol: f64) {
+        let ctx = self.ctx;
+        let (Some(list), Some(_)) = (&l.shadows, &node.hit) else {
+            return;
+        };
+        if list.len() != node.shadow_rays.len() {
+            let step = ctx.step(i, StepKind::Shadow(0));
+            self.push(
+                path,
+                "shadows (one per light)",
+                list.len().to_string(),
+                node.shadow_rays.len().to_string(),
+                step,
+                None,
+                true,
+            );
+            return;
+        }
+        for (k, (s, ours)) in list.iter().zip(&node.shadow_rays).enumerate() {
+            let step = ctx.step(i, StepKind::Shadow(k));
+            let q = |f: &str| format!("shadows[{k}].{f}");
+            if s.light != ours.name {
+                self.push(
+                    path,
+                    q("light"),
+                    s.light.clone(),
+                    ours.name.clone(),
+                    step,
+                    None,
+                    true,
+                );
+                continue;
+            }
+            let ours_by = match &ours.outcome {
+                // The light is behind the surface: it adds nothing, whatever a shadow ray finds.
+                ShadowOutcomeRecord::FacesAway => continue,
+                ShadowOutcomeRecord::Blocked { name, .. } => Some(name.as_str()),
+                ShadowOutcomeRecord::Reaches { .. } => None,
+            };
+            if s.blocked != ours_by.is_some() {
+                let why = diagnose::shadow(ctx, s, i, k);
+                let words = |b: Option<&str>| {
+                    b.map_or("reaches the light".to_owned(), |o| {
+                        format!("blocked by '{o}'")
+                    })
+                };
+                let learner = if s.blocked {
+                    words(Some(
+                        s.by.clone().flatten().as_deref().unwrap_or("something"),
+                    ))
+                } else {
+                    words(None)
+                };
+                self.push(path, q("blocked"), learner, words(ours_by), step, why, true);
+                continue;
+            }
+            if let (Some(Some(by)), Some(o)) = (&s.by, ours_by)
+                && by != o
+            {
+                self.push(
+                    path,
+                    q("by"),
+                    format!("'{by}'"),
+                    format!("'{o}'"),
+                    step,
+                    None,
+                    true,
+                );
+            }
+            if let (Some(t), ShadowOutcomeRecord::Reaches { transmitted }) =
+                (s.transmitted, &ours.outcome)
+                && (t - transmitted).abs() > COLOR
+            {
+                self.push(
+                    path,
+                    q("transmitted"),
+                    num(t),
+                    num(*transmitted),
+                    step,
+                    None,
+                    true,
+                );
+            }
+            if let Some(o) = s.origin
+                && !same_point(o, ours.origin, ours.origin, tol + PER_LEVEL)
+            {
+                self.push(
+                    path,
+                    q("origin"),
+                    vec_words(o),
+                    vec_words(ours.origin),
+                    step,
+                    None,
+                    true,
+                );
+            }
+            if let Some(d) = s.direction
+                && !same_direction(d, ours.direction, tol + PER_LEVEL)
+            {
+                self.push(
+                    path,
+                    q("direction (as a unit vector)"),
+                    vec_words(d.normalize()),
+                    vec_words(ours.direction.normalize()),
+                    step,
+                    None,
+                    true,
+                );
+            }
+        }
+    }
+}

@@ -1,0 +1,384 @@
+//! The classic mistakes of a learner's tracer, each recognised from its
+//! signature: the learner's number is recomputed with that one mistake from
+//! raytree's own inputs (the camera, the recorded roots, the hit's normal and
+//! indices, the light's terms) and must match within the comparison's
+//! tolerance. Never guessed: no match, no diagnosis. Each names the lesson
+//! that teaches the formula; the formulas are the lecture's
+//! (`lecture-raytracing.md`: the ray through a pixel, the sphere's quadratic,
+//! the shadow ray, `v = c − 2(n·c)n`, Snell's law, the recursive sum).
+
+use glam::DVec3;
+
+use crate::course::learner::format::{Kind, LearnerRay, LearnerShadow};
+use crate::course::learner::measure::{Context, same_color, same_direction, tolerance};
+use crate::geometry::object::Shape;
+use crate::math::ray::Ray;
+use crate::shading::optics::{reflect, refract};
+use crate::tree::ray_tree::{HitRecord, RayNode};
+
+/// A classic mistake recognised in the numbers.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Diagnosis {
+    /// A stable name for autograders: `rows-flipped`, `far-root`, ….
+    pub id: &'static str,
+    /// What the numbers show, in the lecture's words.
+    pub words: String,
+    /// The lesson that teaches the formula: `lessons/03-camera`.
+    pub lesson: &'static str,
+}
+
+/// Every diagnosis's id and lesson, in the order the algorithm meets them.
+pub const MISTAKES: &[(&str, &str)] = &[
+    ("rows-flipped", "lessons/03-camera"),
+    ("pixel-corner", "lessons/03-camera"),
+    ("far-root", "lessons/05-sphere"),
+    ("negative-root", "lessons/05-sphere"),
+    ("no-offset", "lessons/08-shadows"),
+    ("normal-not-turned", "lessons/10-refraction"),
+    ("shadow-beyond-light", "lessons/08-shadows"),
+    ("not-clamped", "lessons/07-phong"),
+    ("reflection-sign", "lessons/09-reflection"),
+    ("not-normalized", "lessons/09-reflection"),
+    ("eta-swapped", "lessons/10-refraction"),
+    ("wrong-medium", "lessons/10-refraction"),
+    ("tir-not-handled", "lessons/10-refraction"),
+    ("coefficients", "lessons/11-recursion"),
+];
+
+fn found(id: &'static str, words: String) -> Option<Diagnosis> {
+    let lesson = MISTAKES
+        .iter()
+        .find(|(i, _)| *i == id)
+        .map_or("", |(_, l)| l);
+    Some(Diagnosis { id, words, lesson })
+}
+
+/// The node's parent and the parent's hit, for a secondary ray.
+fn parent_hit<'t>(ctx: &'t Context, i: usize) -> Option<(&'t RayNode, &'t HitRecord)> {
+    let p = &ctx.tree().nodes[ctx.tree().nodes[i].parent?];
+    Some((p, p.hit.as_ref()?))
+}
+
+/// A wrong primary or secondary direction.
+pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let tol = tolerance(node.depth);
+    let same =
+        |d: Option<DVec3>| d.is_some_and(|d| d.is_finite() && same_direction(l.direction, d, tol));
+    if i == 0 {
+        let camera = ctx.scene.camera();
+        let (x, y) = (f64::from(ctx.pixel.0), f64::from(ctx.pixel.1));
+        let flipped = f64::from(ctx.scene.settings.height) - 1.0 - y;
+        if same(Some(camera.pixel_ray(x, flipped).dir)) {
+            return found(
+                "rows-flipped",
+                format!(
+                    "your primary ray is raytree's for pixel ({x}, {flipped}): rows counted from the top where the lecture counts row r up from the bottom (r = N_r − 1 − y)"
+                ),
+            );
+        }
+        for (dx, dy, corner) in [
+            (-0.5, 0.5, "lower left"),
+            (0.5, 0.5, "lower right"),
+            (-0.5, -0.5, "upper left"),
+            (0.5, -0.5, "upper right"),
+        ] {
+            if same(Some(camera.pixel_ray(x + dx, y + dy).dir)) {
+                return found(
+                    "pixel-corner",
+                    format!(
+                        "your primary ray goes through the pixel's {corner} corner; raytree's goes through its center (half a pixel over: P(r, c) at c + ½, r + ½)"
+                    ),
+                );
+            }
+        }
+        return None;
+    }
+    let (_, h) = parent_hit(ctx, i)?;
+    let (c, n) = (h.incoming, h.shading_normal);
+    let radius = match &ctx.scene.objects[h.object] {
+        o if o.transform.is_none() => match &o.shape {
+            Shape::Sphere(s) if (s.radius - 1.0).abs() > 1e-3 => Some(s.radius),
+            _ => None,
+        },
+        _ => None,
+    };
+    match l.kind {
+        Kind::Reflected => {
+            if same(Some(c + 2.0 * n.dot(c) * n)) {
+                return found("reflection-sign", "your reflected direction is c + 2(n·c)n: the lecture's is v = c − 2(n·c)n (n·c < 0, so −2(n·c)n pushes away from the surface)".to_owned());
+            }
+            if let Some(r) = radius
+                && same(Some(reflect(c, n * r)))
+            {
+                return found(
+                    "not-normalized",
+                    format!(
+                        "your reflected direction is c − 2(n·c)n with n = P − center, of length r = {r}: the formula assumes a unit normal"
+                    ),
+                );
+            }
+        }
+        Kind::Refracted => {
+            let (n1, n2) = (h.n1, h.n2);
+            if same(refract(c, n, n2 / n1)) {
+                return found(
+                    "eta-swapped",
+                    format!(
+                        "your refracted direction is Snell's with η = n₂/n₁ = {n2}/{n1}: the lecture's η is n₁/n₂ = {n1}/{n2} (from the side the ray comes from to the side it goes to)"
+                    ),
+                );
+            }
+            let raw = ctx.tree().nodes[ctx.tree().nodes[i].parent?].direction;
+            if (raw.length() - 1.0).abs() > 1e-3 && same(refract(raw, n, n1 / n2)) {
+                return found(
+                    "not-normalized",
+                    format!(
+                        "your refracted direction is Snell's formula applied to the incoming direction as it was, of length {:.4}: the formula assumes a unit c (cos θ₁ = −n·c)",
+                        raw.length()
+                    ),
+                );
+            }
+            if !h.entering && same(refract(c, -n, n1 / n2)) {
+                return found("normal-not-turned", "your refracted direction uses the outward normal where the ray leaves the object: turn n to face the incoming ray (n·c < 0) before Snell's law".to_owned());
+            }
+            if let Some(r) = radius
+                && same(refract(c, n * r, n1 / n2))
+            {
+                return found(
+                    "not-normalized",
+                    format!(
+                        "your refracted direction uses n = P − center, of length r = {r}: Snell's formula assumes a unit normal"
+                    ),
+                );
+            }
+            let mut indices: Vec<f64> = ctx
+                .scene
+                .materials
+                .iter()
+                .map(|m| m.ior)
+                .chain([1.0])
+                .collect();
+            indices.sort_by(f64::total_cmp);
+            indices.dedup();
+            for &a in &indices {
+                for &b in &indices {
+                    let usual = (a == n1 && b == n2) || (a == n2 && b == n1) || a == b && n1 == n2;
+                    if !usual && same(refract(c, n, a / b)) {
+                        return found(
+                            "wrong-medium",
+                            format!(
+                                "your refracted direction is Snell's with n₁ = {a} → n₂ = {b}; here the ray goes from n₁ = {n1} to n₂ = {n2}: after leaving an object the ray is in the medium around it, not in air or the object's glass"
+                            ),
+                        );
+                    }
+                }
+            }
+        }
+        Kind::Primary => {}
+    }
+    None
+}
+
+/// A wrong hit: another root of the same quadratic, or the surface the ray starts on.
+pub fn hit(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let h = l.hit.as_ref()?.as_ref()?;
+    let t = h.t?;
+    let name = h
+        .object
+        .as_deref()
+        .or(node.hit.as_ref().map(|o| o.name.as_str()))?;
+    let distance = t * l.direction.length();
+    let scale = 1f64.max(node.origin.length());
+    if let Some((_, ph)) = parent_hit(ctx, i)
+        && ph.name == name
+        && distance.abs() <= tolerance(node.depth) * scale
+    {
+        return found(
+            "no-offset",
+            format!(
+                "your {} ray hits '{name}', the surface it starts on, at distance {distance:.3e}: start secondary rays a little off the surface (or ignore t ≈ 0), or they meet their own surface (acne)",
+                l.kind.name()
+            ),
+        );
+    }
+    let test = node.tests.iter().find(|r| r.name == name)?;
+    let ours = node.hit.as_ref().filter(|o| o.name == name).map(|o| o.t);
+    // The learner's t in the units of raytree's direction.
+    let tl = distance / node.direction.length();
+    let tol = tolerance(node.depth) * scale / node.direction.length();
+    let root = test
+        .roots
+        .iter()
+        .map(|r| r.t)
+        .find(|&r| (r - tl).abs() <= tol && ours.is_none_or(|o| (o - r).abs() > tol))?;
+    if root < 0.0 {
+        found(
+            "negative-root",
+            format!(
+                "your t = {root:.4} for '{name}' is its negative root, behind the ray's origin: only roots with t > 0 are hits (lecture: the smallest positive t)"
+            ),
+        )
+    } else {
+        found(
+            "far-root",
+            format!(
+                "your t = {root:.4} for '{name}' is its far root; the closest hit is the smallest positive root{}",
+                ours.map_or(String::new(), |o| format!(", t = {o:.4}"))
+            ),
+        )
+    }
+}
+
+/// A normal not turned to face the ray where it leaves an object.
+pub fn normal(ctx: &Context, n: DVec3, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let h = node.hit.as_ref()?;
+    if !h.entering && same_direction(n, -h.shading_normal, tolerance(node.depth)) {
+        return found(
+            "normal-not-turned",
+            format!(
+                "your normal is the outward one, but the ray leaves '{}' from inside: the formulas need n turned to face the ray (n = −N, so that n·c < 0)",
+                h.name
+            ),
+        );
+    }
+    None
+}
+
+/// A shadow ray blocked where raytree's reaches the light.
+pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let h = node.hit.as_ref()?;
+    let by = s.by.clone().flatten()?;
+    if !s.blocked {
+        return None;
+    }
+    if by == h.name {
+        return found(
+            "no-offset",
+            format!(
+                "your shadow ray toward '{}' is blocked by '{by}', the surface it starts from: start it a little off the surface, or ignore t ≈ 0 (acne)",
+                s.light
+            ),
+        );
+    }
+    let ours = &node.shadow_rays[k];
+    let object = ctx.scene.objects.iter().find(|o| o.name == by)?;
+    let ray = Ray::new(ours.origin, ours.direction);
+    let roots = object.roots(&ray, ctx.scene.settings.sphere);
+    let before_light = roots.as_slice().iter().any(|&t| t > 1e-9 && t < 1.0);
+    let beyond = roots.as_slice().iter().any(|&t| t >= 1.0);
+    if beyond && !before_light {
+        return found(
+            "shadow-beyond-light",
+            format!(
+                "'{by}' meets your shadow ray toward '{}' only beyond the light (t > 1 with t = 1 at the light): only objects between the point and the light cast a shadow",
+                s.light
+            ),
+        );
+    }
+    None
+}
+
+/// A local color off by the negative terms a clamp at 0 removes.
+pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let (h, rec, got) = (node.hit.as_ref()?, node.local.as_ref()?, l.local?);
+    let (n, v) = (h.shading_normal, -h.incoming);
+    let (mut diffuse, mut specular) = (DVec3::ZERO, DVec3::ZERO);
+    for light in &ctx.scene.lights {
+        let lv = (light.position - h.point).normalize();
+        let nl = n.dot(lv);
+        let r = 2.0 * nl * n - lv;
+        let rv = r.dot(v);
+        if nl < 0.0 {
+            diffuse += rec.k_d * nl * rec.color * light.color;
+        } else if rv < 0.0 {
+            specular += rec.k_s * rv.powf(rec.shininess) * light.color;
+        }
+    }
+    for (extra, what) in [
+        (diffuse, "N·L"),
+        (specular, "R·V"),
+        (diffuse + specular, "N·L and R·V"),
+    ] {
+        if extra.abs().max_element() > 0.0
+            && !same_color(rec.total + extra, rec.total)
+            && same_color(got, rec.total + extra)
+        {
+            return found(
+                "not-clamped",
+                format!(
+                    "your local color adds the terms of negative {what}: clamp them at 0 (max(0, N·L), max(0, R·V)); a light behind the surface, or a highlight pointing away, adds nothing"
+                ),
+            );
+        }
+    }
+    None
+}
+
+/// Total internal reflection not handled at node `i`'s hit.
+pub fn tir(ctx: &Context, i: usize) -> Diagnosis {
+    let node = &ctx.tree().nodes[i];
+    let sin = node
+        .hit
+        .as_ref()
+        .and_then(|h| h.refraction.as_ref())
+        .map(|r| r.sin_theta2);
+    found("tir-not-handled", format!(
+        "raytree finds total internal reflection here{}: there is no refracted ray, and its share goes to the reflected one",
+        sin.map_or(String::new(), |s| format!(" (sin θ₂ = (n₁/n₂)·sin θ₁ = {s:.4} > 1)"))))
+    .expect("a known mistake")
+}
+
+/// A coefficient off: after total internal reflection raytree's reflected
+/// ray carries the whole share, which a tracer that refracts anyway does not.
+pub fn coefficient(ctx: &Context, i: usize) -> Option<Diagnosis> {
+    let node = &ctx.tree().nodes[i];
+    let b = node.refracted.as_ref()?;
+    (b.outcome == crate::trace::recorder::Branch::TotalInternalReflection).then(|| tir(ctx, i))
+}
+
+/// A color summed without its coefficients, or with them twice.
+pub fn color(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
+    let tree = ctx.tree();
+    let node = &tree.nodes[i];
+    let got = l.color?;
+    node.hit.as_ref()?;
+    let child = |mine: &Option<Option<Box<LearnerRay>>>,
+                 b: &Option<crate::tree::ray_tree::BranchRecord>| {
+        mine.as_ref()
+            .and_then(|c| c.as_ref())
+            .and_then(|c| c.color)
+            .or_else(|| b.as_ref()?.node.map(|j| tree.nodes[j].color()))
+            .unwrap_or(DVec3::ZERO)
+    };
+    let local = l.local.unwrap_or(node.sum.local);
+    let (rfl, rfa) = (
+        child(&l.reflected, &node.reflected),
+        child(&l.refracted, &node.refracted),
+    );
+    let (k1, k2) = (node.sum.k_rfl, node.sum.k_rfa);
+    for (sum, what) in [
+        (
+            local + rfl + rfa,
+            "without k_rfl and k_rfa: local + reflected + refracted",
+        ),
+        (
+            local + k1 * k1 * rfl + k2 * k2 * rfa,
+            "with k_rfl and k_rfa applied twice (once to the child's color, once in the sum)",
+        ),
+    ] {
+        if !same_color(sum, node.color()) && same_color(got, sum) {
+            return found(
+                "coefficients",
+                format!(
+                    "your color is summed {what}; the lecture's is color = local + k_rfl·reflected + k_rfa·refracted, each child's color weighted once"
+                ),
+            );
+        }
+    }
+    None
+}

@@ -1,0 +1,13 @@
+//! The learner trace: one pixel's rays as a learner's own tracer writes them
+//! (any language, any JSON library), read strictly, made from raytree's own
+//! tree, and checked against it ray by ray with the first divergence named
+//! and, where its numbers show one, the classic mistake behind it. The format
+//! is documented in `docs/learner-trace.md`, with a JSON Schema beside it.
+
+pub mod format; // the fields, their keys (shared with the schema's test) and the writer
+pub mod read; // the strict reader: bounded, every error one line with its JSON path
+pub mod reduce; // raytree's own trace reduced to the learner's fields
+pub mod measure; // the tolerances and why, and what a comparison works with
+pub mod compare; // pairing the learner's rays with ours, each quantity within its tolerance
+pub mod diagnose; // the classic mistakes, each recognised from its numbers
+pub mod report; // the check: the first divergence in the lecture's words, text or JSON
