@@ -370,15 +370,15 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
             put("visit_max", vec3(visit.max));
             put("tests_before", visit.after_tests.to_string());
             put("visit_tests", visit_tests(node, k).to_string());
-            if trace.structure == crate::methods::Accel::Grid {
-                if let Some(exit) = walk::cell_exit(node, k) {
-                    put("exit_axis", walk::axis_name(exit.axis).to_owned());
-                    put("exit_t", num(exit.t));
-                    for (a, wall) in exit.walls.iter().enumerate() {
-                        if let Some((at, t)) = wall {
-                            put(&format!("wall.{}", walk::axis_name(a)), num(*at));
-                            put(&format!("wall_t.{}", walk::axis_name(a)), num(*t));
-                        }
+            if trace.structure == crate::methods::Accel::Grid
+                && let Some(exit) = walk::cell_exit(node, k)
+            {
+                put("exit_axis", walk::axis_name(exit.axis).to_owned());
+                put("exit_t", num(exit.t));
+                for (a, wall) in exit.walls.iter().enumerate() {
+                    if let Some((at, t)) = wall {
+                        put(&format!("wall.{}", walk::axis_name(a)), num(*at));
+                        put(&format!("wall_t.{}", walk::axis_name(a)), num(*t));
                     }
                 }
             }
