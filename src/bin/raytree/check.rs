@@ -1,14 +1,20 @@
 //! `raytree check`: a learner's own tracer checked against raytree, ray by
-//! ray, for one pixel. Its exit status is its answer, as `raytree diff`'s:
-//! 0 every field agrees, 1 a divergence, 2 bad input (the learner's file,
-//! the scene, the command line).
+//! ray for one pixel (`--pixel X,Y TRACE.json`), or pixel by pixel for a
+//! whole image (`--image YOURS.png`). Its exit status is its answer, as
+//! `raytree diff`'s: 0 all agree, 1 a divergence, 2 bad input (the learner's
+//! file, the scene, the command line).
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::Result;
-use raytree::course::learner::{read, report};
+use raytree::course::learner::{image, read, report};
+use raytree::io::image::to_rgb8;
+use raytree::io::{image_diff, image_file};
 use raytree::scene::overrides::Overrides;
+use raytree::trace::progress::Progress;
+use raytree::trace::render;
+use raytree::views::difference::{self, Side};
 
 use crate::args::{SceneArgs, parse_pixel};
 use crate::output;
@@ -18,11 +24,23 @@ pub struct Args {
     /// The scene the learner's tracer rendered (JSON, see scenes/README.md, or NFF).
     scene: PathBuf,
     /// The pixel the learner traced, in image coordinates: x to the right, y down from the top-left.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
-    pixel: (u32, u32),
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, requires = "learner", required_unless_present = "image")]
+    pixel: Option<(u32, u32)>,
     /// The learner's trace of that pixel (docs/learner-trace.md): JSON, at most 8 MiB.
-    learner: PathBuf,
-    /// Print a machine-readable report (format raytree-check-report, version 1; docs/learner-trace.md) instead of the text.
+    learner: Option<PathBuf>,
+    /// Instead of one pixel's rays: the learner's whole image (PNG or PPM), compared with raytree's render at its size, one ray through each pixel's center.
+    #[arg(long, value_name = "YOURS.png", conflicts_with_all = ["pixel", "learner"])]
+    image: Option<PathBuf>,
+    /// With --image: also draw yours, raytree's and where they differ side by side (.png).
+    #[arg(short, long, value_name = "WHERE.png", requires = "image")]
+    output: Option<PathBuf>,
+    /// With --image: a pixel is off when a channel differs by more than this many 8-bit levels (1 forgives a color that agrees to many digits but rounds the other way).
+    #[arg(long, value_name = "LEVELS", default_value_t = 1, requires = "image")]
+    tolerance: u8,
+    /// With --image: how many of the worst pixels to list.
+    #[arg(long, value_name = "N", default_value_t = 10, requires = "image")]
+    worst: usize,
+    /// Print a machine-readable report (format raytree-check-report, or raytree-image-check with --image; docs/learner-trace.md) instead of the text.
     #[arg(long)]
     json: bool,
     #[command(flatten)]
@@ -41,8 +59,14 @@ pub fn run(args: &Args) -> Result<ExitCode> {
         overrides: args.overrides,
     };
     let (scene, source) = scene_args.load()?;
-    let learner = read::read(&args.learner).map_err(anyhow::Error::msg)?;
-    let report = report::check(&scene, source, args.pixel, &learner).map_err(anyhow::Error::msg)?;
+    if let Some(yours) = &args.image {
+        return run_image(args, &scene, yours);
+    }
+    let (Some(pixel), Some(learner)) = (args.pixel, &args.learner) else {
+        anyhow::bail!("give --pixel X,Y and the learner's trace, or --image YOURS.png");
+    };
+    let learner = read::read(learner).map_err(anyhow::Error::msg)?;
+    let report = report::check(&scene, source, pixel, &learner).map_err(anyhow::Error::msg)?;
     let text = if args.json {
         report.json()
     } else {
@@ -50,4 +74,63 @@ pub fn run(args: &Args) -> Result<ExitCode> {
     };
     output::print(text)?;
     Ok(ExitCode::from(if report.agrees() { 0 } else { DIVERGES }))
+}
+
+/// `--image`: the whole image, its pixels off and the worst of them, and with
+/// `-o` the figure of where.
+fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result<ExitCode> {
+    let pending = match &args.output {
+        Some(path) => {
+            output::require_png(path, "a difference figure")?;
+            Some(output::create(
+                path,
+                &[args.scene.clone(), yours.to_owned()],
+            )?)
+        }
+        None => None,
+    };
+    let theirs = image_file::read_rgb8(yours)?;
+    let names = (
+        args.scene.display().to_string(),
+        yours.display().to_string(),
+    );
+    let mut at_size = scene.clone();
+    at_size.settings = image::settings_for(&scene.settings, &names.1, theirs.dimensions())
+        .map_err(anyhow::Error::msg)?;
+    let ours = render::render(&at_size, &Progress::QUIET)
+        .map_err(|_| anyhow::anyhow!("not enough memory to render {}", names.1))?;
+    let check = image::check_image(
+        (&names.0, &names.1),
+        &theirs,
+        to_rgb8(&ours),
+        args.tolerance,
+        args.worst,
+    );
+    if let (Some(pending), Some(path)) = (pending, &args.output) {
+        let ours = ::image::RgbImage::from_raw(check.width, check.height, check.ours.clone())
+            .expect("a render of the image's size");
+        let d = image_diff::difference(&theirs, &ours)?;
+        let figure = difference::draw(
+            &Side {
+                rgb: theirs.as_raw(),
+                name: "yours",
+            },
+            &Side {
+                rgb: &check.ours,
+                name: "raytree's",
+            },
+            check.width,
+            check.height,
+            &d,
+        )
+        .ok_or_else(|| anyhow::anyhow!("the images are too large for a figure"))?;
+        pending.commit(&figure.png())?;
+        output::note(&format!("wrote {}", path.display()))?;
+    }
+    output::print(if args.json {
+        check.json()
+    } else {
+        check.text()
+    })?;
+    Ok(ExitCode::from(if check.agrees() { 0 } else { DIVERGES }))
 }

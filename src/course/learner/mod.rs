@@ -11,3 +11,4 @@ pub mod measure; // the tolerances and why, and what a comparison works with
 pub mod compare; // pairing the learner's rays with ours, each quantity within its tolerance
 pub mod diagnose; // the classic mistakes, each recognised from its numbers
 pub mod report; // the check: the first divergence in the lecture's words, text or JSON
+pub mod image; // a learner's whole image beside raytree's render: pixels off, the worst, their commands

@@ -7,6 +7,7 @@ mod chart;
 mod fuzz;
 mod inputs;
 mod learner;
+mod learner_image;
 mod nff;
 mod outputs;
 mod pipes;
