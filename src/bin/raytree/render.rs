@@ -6,6 +6,7 @@ use std::time::Instant;
 use anyhow::{Context, Result, bail};
 use raytree::io::image_file;
 use raytree::methods::Accel;
+use raytree::trace::accelerator::Structure;
 use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
@@ -72,6 +73,14 @@ pub fn run(args: &Args) -> Result<()> {
         let tracer = pool.install(|| Tracer::new(&scene));
         let build_seconds = building.elapsed().as_secs_f64();
         let structure = tracer.accelerator().kind();
+        // What was built, in the structure's own numbers (a grid's cells per
+        // side, a tree's nodes and leaves); the BVH's are in `raytree memory`.
+        let built = tracer.accelerator().structure().and_then(|s| match s {
+            Structure::Grid(g) => Some(g.describe()),
+            Structure::Octree(o) => Some(o.describe()),
+            Structure::Bsp(k) => Some(k.describe()),
+            Structure::Bvh(_) => None,
+        });
         let tracing = Instant::now();
         let (image, rays) = pool
             .install(|| {
@@ -86,7 +95,7 @@ pub fn run(args: &Args) -> Result<()> {
             building: build_seconds,
             tracing: tracing.elapsed().as_secs_f64(),
         };
-        (image, Some((rays, times, structure)))
+        (image, Some((rays, times, structure, built)))
     } else {
         let image = pool
             .install(|| render::render(&scene, &Progress::reporting(&output::on_bar(&progress))))
@@ -107,10 +116,14 @@ pub fn run(args: &Args) -> Result<()> {
             threads_word(threads)
         ))?;
     }
-    if let Some((r, times, structure)) = rays {
+    if let Some((r, times, structure, built)) = rays {
         // The counts are what --stats asked for: standard output, as strip and
         // forward print their figures; notes stay on standard error.
-        output::print(stats(&r, &times, structure))?;
+        let mut text = stats(&r, &times, structure);
+        if let Some(built) = built {
+            text.push_str(&format!("built: {built}\n"));
+        }
+        output::print(text)?;
     }
     Ok(())
 }
