@@ -454,6 +454,17 @@ fn draw_legend(fig: &mut Figure, lay: &Layout, scale: &Scale) -> (PxRect, Vec<St
         .iter()
         .flat_map(|s| (0..=20).map(move |k| s.from + (s.to - s.from) * (f64::from(k) / 20.0)))
         .chain(lay.hits.iter().map(|h| h.at))
+        // The objects too: a legend over a cluster hides what the figure shows.
+        .chain(lay.objects.iter().flat_map(|o| match o.silhouette {
+            Outline::Ellipse { center, axes } => vec![
+                center,
+                center + axes[0],
+                center - axes[0],
+                center + axes[1],
+                center - axes[1],
+            ],
+            _ => Vec::new(),
+        }))
         .map(|p| fig.to_px(p))
         .collect();
     let covered = |(o, wh): (DVec2, DVec2)| {
