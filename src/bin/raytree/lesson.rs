@@ -33,7 +33,7 @@ pub fn run(args: &Args) -> Result<()> {
         None => {
             let entries = lesson::list(&args.lessons).map_err(anyhow::Error::msg)?;
             format!(
-                "{}\n`raytree lesson N` steps through lesson N; the book (book/) has their text.\n",
+                "{}\n`raytree lesson N` steps through lesson N; the book (book/) has their text; lessons 3 to 11 end with Build it yourself:\nwrite their functions in the Python tracer of lessons/python/ and check it with `raytree check`.\n",
                 lesson::list_text(&entries).trim_end()
             )
         }
