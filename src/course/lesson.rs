@@ -260,27 +260,7 @@ pub fn step_through_text(lesson: &Lesson, walk: &StepThrough) -> String {
             stop.step, stop.headline, stop.say
         );
     }
-    if let Some(build) = build_it_yourself(lesson.entry.number) {
-        let _ = write!(out, "\n{build}\n");
-    }
     out
-}
-
-/// Lessons 03–11's "Build it yourself" part in brief: the functions of the
-/// Python starter tracer to write, how to run their test vectors, and the
-/// check of a whole pixel (the chapter shows a real report).
-pub fn build_it_yourself(number: u32) -> Option<String> {
-    let (_, functions) = crate::course::vectors::LESSON_FUNCTIONS
-        .iter()
-        .find(|(n, _)| *n == number)?;
-    let mut names: Vec<&str> = functions.to_vec();
-    if number == 11 {
-        names.push("raytrace");
-    }
-    let names = names.join(", ");
-    Some(format!(
-        "Build it yourself: write {names} in lessons/python/starter/tracer.py, run its test vectors with\n    python3 lessons/python/starter/tracer.py test {number:02}\nand, once it traces pixels, check one ray by ray with `raytree check SCENE --pixel X,Y mine.json`;\nthe chapter's \"Build it yourself\" shows a real report (lessons/python/README.md tells the rest)."
-    ))
 }
 
 #[cfg(test)]

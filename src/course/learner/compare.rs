@@ -500,7 +500,8 @@ fn refracted_direction(l: &LearnerRay) -> Option<DVec3> {
 }
 
 /// Whether object `by` is opaque and meets raytree's shadow ray `ours`
-/// between the point and the light (0 < t < 1, as raytree's own shadow test):
+/// between the point and the light (0 < t < its `t_max`, just short of the
+/// light, as raytree's own shadow test):
 /// where two opaque objects stand in the way, a tracer may name either.
 fn blocks(ctx: &Context, by: &str, ours: &crate::tree::ray_tree::ShadowRecord) -> bool {
     let Some(i) = ctx.scene.objects.iter().position(|o| o.name == by) else {
@@ -510,6 +511,6 @@ fn blocks(ctx: &Context, by: &str, ours: &crate::tree::ray_tree::ShadowRecord) -
     ctx.scene.material_of(i).transparent == 0.0
         && ctx.scene.objects[i]
             .roots(&ray, ctx.scene.settings.intersection_methods())
-            .first_in(0.0, 1.0 - crate::trace::tracer::SHADOW_EPSILON)
+            .first_in(0.0, ours.t_max)
             .is_some()
 }

@@ -306,10 +306,21 @@ fn the_reflection_formula_sign_and_an_unnormalized_normal() {
 
 #[test]
 fn tir_not_handled() {
-    let (scene, src, _, mut m) = whitted(416, 209);
+    let (scene, src, trace, mut m) = whitted(416, 209);
+    // The refracted ray inside the glass meets the cavity past the critical
+    // angle; a tracer that clamps sin θ₂ at 1 refracts along the surface
+    // (cos θ₂ = 0). (Straight on, η = 1, would be the wrong medium's index.)
+    let node = trace.samples[0].tree.nodes[0]
+        .refracted
+        .as_ref()
+        .unwrap()
+        .node
+        .unwrap();
+    let (c, n, n1, n2) = incoming(&trace, node);
+    let eta = n1 / n2;
+    let d = eta * c + eta * (-n.dot(c)) * n;
     let inside = child(&mut m.ray, false);
     assert_eq!(inside.tir, Some(true));
-    let d = inside.direction;
     let at = hit(inside).point.unwrap();
     inside.k_rfl = Some(DVec3::ZERO);
     inside.k_rfa = Some(DVec3::ONE);
