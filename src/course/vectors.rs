@@ -56,6 +56,21 @@ pub const LESSON_FUNCTIONS: [(u32, &[&str]); 9] = [
     (11, &["combine"]),
 ];
 
+/// Lessons 03–11's "Build it yourself" part in brief: the functions of the
+/// Python starter tracer to write, how to run their test vectors, and the
+/// check of a whole pixel (the chapter shows a real report).
+pub fn build_it_yourself(number: u32) -> Option<String> {
+    let (_, functions) = LESSON_FUNCTIONS.iter().find(|(n, _)| *n == number)?;
+    let mut names: Vec<&str> = functions.to_vec();
+    if number == 11 {
+        names.push("raytrace");
+    }
+    let names = names.join(", ");
+    Some(format!(
+        "Build it yourself: write {names} in lessons/python/starter/tracer.py, run its test vectors with\n    python3 lessons/python/starter/tracer.py test {number:02}\nand, once it traces pixels, check one ray by ray with `raytree check SCENE --pixel X,Y mine.json`;\nthe chapter's \"Build it yourself\" shows a real report (lessons/python/README.md tells the rest)."
+    ))
+}
+
 /// What a function takes and gives, as the file describes it.
 fn signature(function: &str) -> &'static str {
     match function {

@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Result, anyhow};
-use raytree::course::lesson;
+use raytree::course::{lesson, vectors};
 use raytree::inspector::{self, App};
 
 use crate::output;
@@ -33,7 +33,7 @@ pub fn run(args: &Args) -> Result<()> {
         None => {
             let entries = lesson::list(&args.lessons).map_err(anyhow::Error::msg)?;
             format!(
-                "{}\n`raytree lesson N` steps through lesson N; the book (book/) has their text.\n",
+                "{}\n`raytree lesson N` steps through lesson N; the book (book/) has their text; lessons 3 to 11 end with Build it yourself:\nwrite their functions in the Python tracer of lessons/python/ and check it with `raytree check`.\n",
                 lesson::list_text(&entries).trim_end()
             )
         }
@@ -43,7 +43,11 @@ pub fn run(args: &Args) -> Result<()> {
             if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
             }
-            lesson::step_through_text(&loaded, &walk)
+            let mut text = lesson::step_through_text(&loaded, &walk);
+            if let Some(build) = vectors::build_it_yourself(n) {
+                text = format!("{text}\n{build}\n");
+            }
+            text
         }
     };
     output::print(text)?;

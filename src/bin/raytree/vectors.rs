@@ -1,5 +1,6 @@
 //! `raytree vectors`: test vectors for a learner's tracer, from a lesson's
-//! pixels and rays (lessons 03–11) or a scene's.
+//! pixels and rays (lessons 03–11) or a scene's. Every error is bad input
+//! (a lesson without vectors, a scene, a folder): one line, exit status 2.
 
 use std::path::PathBuf;
 

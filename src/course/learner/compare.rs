@@ -151,7 +151,7 @@ impl Walk<'_, '_> {
                 && node.hit.is_some()
                 && !same_color(k, DVec3::splat(ours_k))
             {
-                let why = diagnose::coefficient(ctx, i);
+                let why = diagnose::coefficient(ctx, i, refracted_direction(l));
                 self.push(path, name, vec_words(k), num(ours_k), step, why, true);
             }
             let child_name = if kind == StepKind::Reflect {
@@ -190,7 +190,7 @@ impl Walk<'_, '_> {
                 .as_ref()
                 .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
             if tir != ours {
-                let why = (!tir).then(|| diagnose::tir(ctx, i));
+                let why = (!tir).then(|| diagnose::tir(ctx, i, refracted_direction(l)));
                 let step = ctx.step(i, StepKind::Refract);
                 self.push(
                     path,
@@ -253,8 +253,8 @@ impl Walk<'_, '_> {
             }
             Some(Branch::Traced) | None => ("raytree's ray missed: it has no children", true),
         };
-        let diagnosis =
-            (outcome == Some(Branch::TotalInternalReflection)).then(|| diagnose::tir(self.ctx, i));
+        let diagnosis = (outcome == Some(Branch::TotalInternalReflection))
+            .then(|| diagnose::tir(self.ctx, i, Some(c.direction)));
         self.push(
             &at,
             "ray",
@@ -438,6 +438,7 @@ impl Walk<'_, '_> {
             }
             if let (Some(Some(by)), Some(o)) = (&s.by, ours_by)
                 && by != o
+                && !blocks(ctx, by, ours)
             {
                 self.push(
                     path,
@@ -491,4 +492,25 @@ impl Walk<'_, '_> {
             }
         }
     }
+}
+
+/// The direction of the learner's refracted child, when it has one.
+fn refracted_direction(l: &LearnerRay) -> Option<DVec3> {
+    l.refracted.as_ref()?.as_ref().map(|c| c.direction)
+}
+
+/// Whether object `by` is opaque and meets raytree's shadow ray `ours`
+/// between the point and the light (0 < t < its `t_max`, just short of the
+/// light, as raytree's own shadow test):
+/// where two opaque objects stand in the way, a tracer may name either.
+fn blocks(ctx: &Context, by: &str, ours: &crate::tree::ray_tree::ShadowRecord) -> bool {
+    let Some(i) = ctx.scene.objects.iter().position(|o| o.name == by) else {
+        return false;
+    };
+    let ray = crate::math::ray::Ray::new(ours.origin, ours.direction);
+    ctx.scene.material_of(i).transparent == 0.0
+        && ctx.scene.objects[i]
+            .roots(&ray, ctx.scene.settings.intersection_methods())
+            .first_in(0.0, ours.t_max)
+            .is_some()
 }

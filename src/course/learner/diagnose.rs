@@ -152,32 +152,47 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
                     ),
                 );
             }
-            let mut indices: Vec<f64> = ctx
-                .scene
-                .materials
-                .iter()
-                .map(|m| m.ior)
-                .chain([1.0])
-                .collect();
-            indices.sort_by(f64::total_cmp);
-            indices.dedup();
-            for &a in &indices {
-                for &b in &indices {
-                    let usual = (a == n1 && b == n2) || (a == n2 && b == n1) || a == b && n1 == n2;
-                    if !usual && same(refract(c, n, a / b)) {
-                        return found(
-                            "wrong-medium",
-                            format!(
-                                "your refracted direction is Snell's with n₁ = {a} → n₂ = {b}; here the ray goes from n₁ = {n1} to n₂ = {n2}: after leaving an object the ray is in the medium around it, not in air or the object's glass"
-                            ),
-                        );
-                    }
-                }
+            if let Some((a, b)) = other_indices(ctx, h, &same) {
+                return found("wrong-medium", medium_words(a, b, n1, n2));
             }
         }
         Kind::Primary => {}
     }
     None
+}
+
+/// A pair of the scene's indices, other than the hit's n₁ → n₂, whose
+/// Snell's law gives the direction `same` accepts.
+fn other_indices(
+    ctx: &Context,
+    h: &HitRecord,
+    same: &dyn Fn(Option<DVec3>) -> bool,
+) -> Option<(f64, f64)> {
+    let (c, n, n1, n2) = (h.incoming, h.shading_normal, h.n1, h.n2);
+    let mut indices: Vec<f64> = ctx
+        .scene
+        .materials
+        .iter()
+        .map(|m| m.ior)
+        .chain([1.0])
+        .collect();
+    indices.sort_by(f64::total_cmp);
+    indices.dedup();
+    for &a in &indices {
+        for &b in &indices {
+            let usual = (a == n1 && b == n2) || (a == n2 && b == n1) || a == b && n1 == n2;
+            if !usual && same(refract(c, n, a / b)) {
+                return Some((a, b));
+            }
+        }
+    }
+    None
+}
+
+fn medium_words(a: f64, b: f64, n1: f64, n2: f64) -> String {
+    format!(
+        "your refracted direction is Snell's with n₁ = {a} → n₂ = {b}; here the ray goes from n₁ = {n1} to n₂ = {n2}: after leaving an object the ray is in the medium around it, not in air or the object's glass"
+    )
 }
 
 /// A wrong hit: another root of the same quadratic, or the surface the ray starts on.
@@ -319,9 +334,18 @@ pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
     None
 }
 
-/// Total internal reflection not handled at node `i`'s hit.
-pub fn tir(ctx: &Context, i: usize) -> Diagnosis {
+/// Total internal reflection not handled at node `i`'s hit, where the
+/// learner refracted along `refracted`: unless that direction is Snell's
+/// with the wrong medium's index, which has no total internal reflection here.
+pub fn tir(ctx: &Context, i: usize, refracted: Option<DVec3>) -> Diagnosis {
     let node = &ctx.tree().nodes[i];
+    if let (Some(d), Some(h)) = (refracted, node.hit.as_ref()) {
+        let tol = tolerance(node.depth + 1);
+        let same = |r: Option<DVec3>| r.is_some_and(|r| d.is_finite() && same_direction(d, r, tol));
+        if let Some((a, b)) = other_indices(ctx, h, &same) {
+            return found("wrong-medium", medium_words(a, b, h.n1, h.n2)).expect("a known mistake");
+        }
+    }
     let sin = node
         .hit
         .as_ref()
@@ -335,10 +359,11 @@ pub fn tir(ctx: &Context, i: usize) -> Diagnosis {
 
 /// A coefficient off: after total internal reflection raytree's reflected
 /// ray carries the whole share, which a tracer that refracts anyway does not.
-pub fn coefficient(ctx: &Context, i: usize) -> Option<Diagnosis> {
+pub fn coefficient(ctx: &Context, i: usize, refracted: Option<DVec3>) -> Option<Diagnosis> {
     let node = &ctx.tree().nodes[i];
     let b = node.refracted.as_ref()?;
-    (b.outcome == crate::trace::recorder::Branch::TotalInternalReflection).then(|| tir(ctx, i))
+    (b.outcome == crate::trace::recorder::Branch::TotalInternalReflection)
+        .then(|| tir(ctx, i, refracted))
 }
 
 /// A color summed without its coefficients, or with them twice.

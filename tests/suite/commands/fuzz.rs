@@ -1,6 +1,7 @@
 //! Structure-aware mutation fuzzing of the readers of outside files: the
 //! scene loader, the OBJ reader, the trace reader (issue 12) and the NFF
-//! reader (issue 27), and the `raytree structures` CSV reader (issue 28). Each case
+//! reader (issue 27), the `raytree structures` CSV reader (issue 28) and the
+//! learner trace reader of `raytree check` (issue 25). Each case
 //! takes a valid seed (a shipped or generated scene, a small OBJ, a real trace)
 //! and applies a few mutations chosen from random bytes through `arbitrary`: a
 //! value swapped for an edge case (huge, tiny, negative, NaN-like text, a
@@ -36,14 +37,16 @@ enum Target {
     Trace,
     Nff,
     StructuresCsv,
+    Learner,
 }
 
-const TARGETS: [Target; 5] = [
+const TARGETS: [Target; 6] = [
     Target::Scene,
     Target::Obj,
     Target::Trace,
     Target::Nff,
     Target::StructuresCsv,
+    Target::Learner,
 ];
 
 /// `raytree structures` CSVs (issue 28): a comparison of two scenes, and a
@@ -175,6 +178,43 @@ fn trace_seeds() -> Vec<Value> {
         .iter()
         .map(|t| serde_json::to_value(t).unwrap())
         .collect()
+}
+
+/// The learner trace examples of `docs/learner-trace/`, every one of them.
+fn learner_seeds() -> Vec<Value> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/learner-trace");
+    let mut seeds: Vec<Value> = std::fs::read_dir(&dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .filter(|p| p.extension().is_some_and(|x| x == "json"))
+        .map(|p| serde_json::from_str(&std::fs::read_to_string(p).unwrap()).unwrap())
+        .collect();
+    seeds.sort_by_key(Value::to_string);
+    assert!(seeds.len() >= 2, "{}: the examples", dir.display());
+    seeds
+}
+
+/// The scene the learner trace examples are of.
+const LEARNER_SCENE: &str = "scenes/whitted.json";
+
+/// An accepted learner trace checks against raytree's own: a report, or one
+/// line of bad input (a trace of another pixel), never a panic.
+fn learner_works(learner: &raytree::course::learner::format::LearnerTrace) -> Result<(), String> {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(LEARNER_SCENE);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let scene = loader::parse(&text, LEARNER_SCENE).unwrap();
+    let pixel = learner.pixel.map_or((416, 209), |[x, y]| (x, y));
+    if pixel.0 >= scene.settings.width || pixel.1 >= scene.settings.height {
+        return Ok(());
+    }
+    let source = SceneSource::new(LEARNER_SCENE, &text);
+    match raytree::course::learner::report::check(&scene, source, pixel, learner) {
+        Ok(report) => {
+            let _ = (report.text(), report.json());
+            Ok(())
+        }
+        Err(e) => one_line(&e),
+    }
 }
 
 /// Values that test the edges of every range.
@@ -485,6 +525,7 @@ struct Seeds {
     scenes: Vec<Value>,
     traces: Vec<Value>,
     csvs: Vec<String>,
+    learners: Vec<Value>,
 }
 
 /// One case: `data` chooses a seed and its mutations, the reader runs on the result.
@@ -532,6 +573,13 @@ fn run_case(target: Target, seeds: &Seeds, dir: &Path, data: &[u8]) -> Result<()
                     let _ = raytree::views::structures_chart::draw(&c, 600, 400);
                     let _ = raytree::views::structures_chart::table(&c);
                 }
+                Err(e) => one_line(&e)?,
+            }
+        }
+        Target::Learner => {
+            let text = mutated(&mut u, &seeds.learners);
+            match raytree::course::learner::read::parse(&text) {
+                Ok(learner) => learner_works(&learner)?,
                 Err(e) => one_line(&e)?,
             }
         }
@@ -686,6 +734,7 @@ fn seeds() -> Seeds {
         scenes: scene_seeds(),
         traces: trace_seeds(),
         csvs: structures_seeds(),
+        learners: learner_seeds(),
     }
 }
 
@@ -715,6 +764,19 @@ fn fuzz_the_structures_csv_reader() {
         campaign(Target::StructuresCsv, seeds(), 3000, 5, None),
         3000
     );
+}
+
+#[test]
+fn fuzz_the_learner_trace_reader() {
+    assert_eq!(campaign(Target::Learner, seeds(), 1500, 6, None), 1500);
+}
+
+#[test]
+fn the_learner_trace_seeds_are_read_whole() {
+    for (k, seed) in learner_seeds().iter().enumerate() {
+        raytree::course::learner::read::parse(&seed.to_string())
+            .unwrap_or_else(|e| panic!("learner trace seed {k}: {e}"));
+    }
 }
 
 #[test]
@@ -796,6 +858,9 @@ fn mutations_reach_the_interesting_places() {
                 Target::StructuresCsv => {
                     raytree::trace::structure_sweep::parse_csv(&mutated_csv(&mut u, &seeds.csvs))
                         .is_ok()
+                }
+                Target::Learner => {
+                    raytree::course::learner::read::parse(&mutated(&mut u, &seeds.learners)).is_ok()
                 }
             };
             if accepted { ok += 1 } else { err += 1 }

@@ -6,6 +6,7 @@ mod arithmetic;
 mod forward;
 mod golden_traces;
 mod media;
+mod mutants;
 mod polygons;
 mod povray;
 mod python;

@@ -117,6 +117,10 @@ fn raytree(args: &[&str]) -> (bool, String, String) {
 fn raytree_lesson_lists_the_lessons_and_steps_through_one() {
     let (ok, list, _) = raytree(&["lesson"]);
     assert!(ok);
+    assert!(
+        list.contains("lessons 3 to 11 end with Build it yourself"),
+        "{list}"
+    );
     let entries = lesson::list(&run::root().join("lessons")).unwrap();
     for e in &entries {
         let line = list
@@ -135,6 +139,18 @@ fn raytree_lesson_lists_the_lessons_and_steps_through_one() {
         "{text}"
     );
     assert!(text.contains("\nstep 1 · camera: pixel "), "{text}");
+    // Lessons 03–11 end with their Build-it-yourself part; 12 has none.
+    assert!(
+        text.contains(
+            "\nBuild it yourself: write image_plane_point in lessons/python/starter/tracer.py"
+        ) && text.contains("python3 lessons/python/starter/tracer.py test 03")
+            && text.contains("raytree check SCENE --pixel X,Y mine.json"),
+        "{text}"
+    );
+    let (ok, text, _) = raytree(&["lesson", "11", "--text"]);
+    assert!(ok && text.contains("write combine, raytrace in"), "{text}");
+    let (ok, text, _) = raytree(&["lesson", "12", "--text"]);
+    assert!(ok && !text.contains("Build it yourself"), "{text}");
 
     let (ok, _, err) = raytree(&["lesson", "99"]);
     assert!(!ok);

@@ -30,8 +30,10 @@ pub fn raytree(args: &[String]) -> Result<Vec<u8>, String> {
         .env_remove("NO_COLOR")
         .output()
         .map_err(|e| format!("cannot run raytree: {e}"))?;
-    // `raytree diff` answers 1 when the images differ: what a lesson shows.
-    let answered = args.first().is_some_and(|a| a == "diff") && out.status.code() == Some(1);
+    // `raytree diff` answers 1 when the images differ, `raytree check` when a
+    // learner's trace diverges: what a lesson shows.
+    let answered =
+        args.first().is_some_and(|a| a == "diff" || a == "check") && out.status.code() == Some(1);
     if !out.status.success() && !answered {
         return Err(format!(
             "`raytree {}` failed: {}",
