@@ -131,7 +131,11 @@ fn traced(g: &Golden) -> String {
 fn bless_into(dir: &Path) {
     for g in GOLDEN {
         let path = dir.join(format!("{}.json", g.name));
-        std::fs::write(&path, traced(g)).unwrap();
+        // Written beside and renamed into place, so that a test reading the
+        // committed goldens while a bless runs never sees half a file.
+        let part = path.with_extension("json.part");
+        std::fs::write(&part, traced(g)).unwrap();
+        std::fs::rename(&part, &path).unwrap();
         println!("blessed {}", path.display());
     }
 }
