@@ -31,6 +31,9 @@ pub struct Report {
     pub scene: String,
     /// The pixel.
     pub pixel: (u32, u32),
+    /// The image's size it was traced at: the step numbers are those of a
+    /// trace at this size, which the report's command says.
+    pub size: (u32, u32),
     /// How many rays the learner's trace holds, and raytree's.
     pub rays: (usize, usize),
     /// Every difference, in raytree's step order (divergences and notes).
@@ -65,6 +68,7 @@ pub fn check(
     Ok(Report {
         scene: trace.scene.file.clone(),
         pixel,
+        size: (trace.settings.width, trace.settings.height),
         rays: (learner.ray.count(), trace.samples[0].tree.nodes.len()),
         differences: compare(&ctx, learner),
     })
@@ -100,8 +104,11 @@ impl Report {
         let mut out = String::new();
         let _ = writeln!(
             out,
-            "raytree check: pixel {x},{y} of {}: your trace holds {} rays, raytree's {}",
-            self.scene, self.rays.0, self.rays.1
+            "raytree check: pixel {x},{y} of {}: your trace holds {} ray{}, raytree's {}",
+            self.scene,
+            self.rays.0,
+            if self.rays.0 == 1 { "" } else { "s" },
+            self.rays.1
         );
         let notes: Vec<&Difference> = self.differences.iter().filter(|d| !d.divergence).collect();
         let mut rest = self.divergences();
@@ -115,8 +122,8 @@ impl Report {
             Some(first) => {
                 let _ = writeln!(
                     out,
-                    "first divergence, at step {} of `raytree trace {} --pixel {x},{y} --steps`:",
-                    first.step, self.scene
+                    "first divergence, at step {} of `raytree trace {} --pixel {x},{y} --width {} --height {} --steps`:",
+                    first.step, self.scene, self.size.0, self.size.1
                 );
                 let _ = writeln!(out, "  ray:        {}", first.ray);
                 let _ = writeln!(out, "  quantity:   {}", first.quantity);
