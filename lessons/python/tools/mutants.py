@@ -52,7 +52,7 @@ MUTANTS = [
     ("normal-as-point", "06-transforms",
      "return normalize(apply_transpose(inverse, normal))",
      "return normalize(apply_vector(inverse, normal))",
-     "lessons/06-transforms/ellipsoid.json", (200, 70), None, "primary"),
+     "lessons/06-transforms/ellipsoid.json", (200, 70), "normal-transform", "primary"),
     ("rv-not-clamped", "07-phong",
      "r_dot_v = max(dot(mirrored, to_viewer), 0.0)\n"
      "        if material.specular > 0.0 and r_dot_v > 0.0:",

@@ -35,6 +35,7 @@ pub const MISTAKES: &[(&str, &str)] = &[
     ("negative-root", "lessons/05-sphere"),
     ("no-offset", "lessons/08-shadows"),
     ("normal-not-turned", "lessons/10-refraction"),
+    ("normal-transform", "lessons/06-transforms"),
     ("shadow-beyond-light", "lessons/08-shadows"),
     ("not-clamped", "lessons/07-phong"),
     ("reflection-sign", "lessons/09-reflection"),
@@ -246,10 +247,40 @@ pub fn hit(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
     }
 }
 
-/// A normal not turned to face the ray where it leaves an object.
+/// A normal not turned to face the ray where it leaves an object, or a
+/// transformed object's normal carried to the world like a point (by `M`) or
+/// by `M⁻¹` itself, where the lecture's rule is the inverse transpose
+/// `(M⁻¹)ᵀ`: for a rotation and a scale together the three differ.
 pub fn normal(ctx: &Context, n: DVec3, i: usize) -> Option<Diagnosis> {
     let node = &ctx.tree().nodes[i];
     let h = node.hit.as_ref()?;
+    let tol = tolerance(node.depth);
+    if let (Some(object_normal), Some(t)) = (
+        h.object_normal,
+        ctx.scene
+            .objects
+            .get(h.object)
+            .and_then(|o| o.transform.as_deref()),
+    ) {
+        let by_point = t.to_world.matrix3 * object_normal;
+        let by_inverse = t.to_object.matrix3 * object_normal;
+        let correct = h.shading_normal;
+        for (wrong, how) in [(by_point, "M, like a point"), (by_inverse, "M⁻¹")] {
+            let wrong = wrong.normalize_or_zero();
+            if !same_direction(wrong, correct, tol)
+                && !same_direction(wrong, -correct, tol)
+                && (same_direction(n, wrong, tol) || same_direction(n, -wrong, tol))
+            {
+                return found(
+                    "normal-transform",
+                    format!(
+                        "your normal at '{}' is its object-space normal carried by {how}: a normal goes to the world by the inverse transpose (M⁻¹)ᵀ, so that it stays perpendicular to the stretched surface",
+                        h.name
+                    ),
+                );
+            }
+        }
+    }
     if !h.entering && same_direction(n, -h.shading_normal, tolerance(node.depth)) {
         return found(
             "normal-not-turned",
