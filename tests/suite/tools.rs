@@ -25,12 +25,15 @@ pub enum Need {
     Spd,
     /// `python3` on the PATH: the course's Python tracer (`lessons/python/`).
     Python3,
+    /// `rsvg-convert` (librsvg) on the PATH: draws a diagram's SVG as pixels.
+    Rsvg,
 }
 
 impl Need {
     /// Whether this machine has it (looked up once per test run).
     pub fn present(self) -> bool {
-        static FOUND: [OnceLock<bool>; 5] = [
+        static FOUND: [OnceLock<bool>; 6] = [
+            OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
@@ -49,6 +52,7 @@ impl Need {
             Need::Lecture => lecture().is_some(),
             Need::Spd => spd().is_some(),
             Need::Python3 => runs("python3", "--version"),
+            Need::Rsvg => runs("rsvg-convert", "--version"),
         })
     }
 
@@ -60,13 +64,17 @@ impl Need {
             Need::Lecture => "there is no ../shared/lecture-raytracing.md beside the repository",
             Need::Spd => "there is no ../shared/spd/ beside the repository",
             Need::Python3 => "python3 not found",
+            Need::Rsvg => "rsvg-convert (librsvg2-bin) is not installed",
         }
     }
 
     /// How CI gets it; `alone`, the only thing missing.
     fn remedy(self, alone: bool) -> &'static str {
         match (self, alone) {
-            (Need::Ghostscript | Need::Tmux | Need::Python3, true) => ".ci/run installs it",
+            (Need::Ghostscript | Need::Tmux | Need::Python3 | Need::Rsvg, true) => {
+                ".ci/run installs it"
+            }
+            (Need::Rsvg, false) => ".ci/run installs librsvg2-bin",
             (Need::Python3, false) => ".ci/run installs python3",
             (Need::Ghostscript, false) => ".ci/run installs Ghostscript",
             (Need::Tmux, false) => ".ci/run installs tmux",

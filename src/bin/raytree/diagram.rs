@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use anyhow::Result;
+use anyhow::{Result, bail};
 use glam::DVec2;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
@@ -17,8 +17,8 @@ pub struct Args {
     scene: SceneArgs,
     #[command(flatten)]
     target: TargetArgs,
-    /// Output PNG [default: the scene's name, "diagram" and the pixel, e.g. whitted-diagram-320-240.png].
-    #[arg(short, long, value_name = "FIG.png")]
+    /// Output PNG, or SVG with a .svg name (the same figure as vectors, text as text) [default: the scene's name, "diagram" and the pixel, e.g. whitted-diagram-320-240.png].
+    #[arg(short, long, value_name = "FIG.png|FIG.svg")]
     output: Option<PathBuf>,
     /// The plane drawn: the plane of incidence at the first hit (auto), the scene's axes, or the image plane face-on (camera).
     #[arg(long, value_enum, default_value = "auto")]
@@ -99,7 +99,20 @@ pub fn run(args: &Args) -> Result<()> {
         Some((x, y)) => output::stem_and(args.scene.stem(), &format!("-diagram-{x}-{y}.png")),
         None => output::stem_and(args.scene.stem(), "-diagram-ray.png"),
     });
-    output::require_png(&path, "a diagram")?;
+    let extension = path.extension().map(|e| e.to_ascii_lowercase());
+    let svg = extension.as_ref().is_some_and(|e| e == "svg");
+    if !svg && extension.as_ref().is_none_or(|e| e != "png") {
+        bail!(
+            "cannot write {}: a diagram is a .png or an .svg",
+            path.display()
+        );
+    }
+    if svg && matches!(args.view, ViewArg::Camera) {
+        bail!(
+            "cannot write {}: the camera view is drawn as PNG only",
+            path.display()
+        );
+    }
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let trace = args.target.record(&scene, source)?;
     let view = match args.view {
@@ -123,6 +136,7 @@ pub fn run(args: &Args) -> Result<()> {
         steps: args.steps,
         until_step: None,
         boxes: args.boxes,
+        svg,
     };
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
@@ -130,7 +144,10 @@ pub fn run(args: &Args) -> Result<()> {
         (_, Space::World) => diagram::draw::draw(&trace, &scene, &options),
     }
     .map_err(anyhow::Error::msg)?;
-    pending.commit(&figure.png())?;
+    match figure.svg().filter(|_| svg) {
+        Some(text) => pending.commit(text.as_bytes())?,
+        None => pending.commit(&figure.png())?,
+    }
     let (w, h) = figure.size();
     output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
     Ok(())

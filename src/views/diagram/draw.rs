@@ -78,6 +78,9 @@ pub fn draw_with_labels(
     }
     let mut fig = Figure::new(options.width, options.height, top, margin)
         .ok_or("the figure cannot be allocated")?;
+    if options.svg {
+        fig = fig.with_svg();
+    }
     fig.fit(lay.window.0, lay.window.1, 0.0);
     draw_objects(&mut fig, scene, &lay, &scale);
     draw_boxes(&mut fig, &lay, &scale);

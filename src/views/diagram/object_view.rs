@@ -62,8 +62,12 @@ pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<F
         options.width - half,
         height,
         &scale,
+        options.svg,
     )?;
     let mut page = Figure::page(options.width, options.height).ok_or("the figure is too small")?;
+    if options.svg {
+        page = page.with_svg();
+    }
     page.paste(&left, 0, top);
     page.paste(&right, half as i32, top);
     page.caption_at(&lines, size, 12.0, f64::from(top) - f64::from(size) * 0.6);
@@ -81,10 +85,14 @@ fn own_space(
     width: u32,
     height: u32,
     scale: &Scale,
+    svg: bool,
 ) -> Result<Figure, String> {
     let m = (12.0 * scale.text / 15.0).max(6.0);
     let mut fig =
         Figure::new(width, height, m + scale.text * 1.6, m).ok_or("the figure is too small")?;
+    if svg {
+        fig = fig.with_svg();
+    }
     // The plane through the center holding the ray: e1 along c', e2 toward S'.
     let e1 = c.normalize();
     let rel = s - center;

@@ -59,6 +59,9 @@ pub struct Options {
     pub until_step: Option<usize>,
     /// Draw the hierarchy's boxes the drawn rays were tested against.
     pub boxes: bool,
+    /// Also record the figure as SVG ([`crate::figure::canvas::Figure::svg`]),
+    /// shape for shape with its PNG.
+    pub svg: bool,
 }
 
 impl Default for Options {
@@ -77,6 +80,7 @@ impl Default for Options {
             steps: false,
             until_step: None,
             boxes: false,
+            svg: false,
         }
     }
 }

@@ -689,7 +689,7 @@ fn diagram_refuses_bad_requests() {
             None,
             &["--pixel", "1,1", "-o", "fig.jpg"]
         ),
-        "error: cannot write fig.jpg: the output must end in .png or .ppm"
+        "error: cannot write fig.jpg: a diagram is a .png or an .svg"
     );
     assert_eq!(
         fails_in(
@@ -698,7 +698,7 @@ fn diagram_refuses_bad_requests() {
             None,
             &["--pixel", "1,1", "-o", "fig.ppm"]
         ),
-        "error: cannot write fig.ppm: a diagram is a .png"
+        "error: cannot write fig.ppm: a diagram is a .png or an .svg"
     );
     assert_eq!(
         fails_in(

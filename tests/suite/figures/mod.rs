@@ -4,3 +4,4 @@
 mod aov;
 mod boxes;
 mod diagram;
+mod svg;

@@ -1,0 +1,155 @@
+//! `raytree diagram -o FIG.svg`: the same figure as vectors. Recording the
+//! SVG leaves the PNG as it was; every label drawn is text in the SVG; and,
+//! drawn as pixels by librsvg, the SVG is the PNG up to anti-aliasing and the
+//! fonts' hinting.
+
+use std::path::Path;
+use std::process::Command;
+
+use raytree::scene::source::SceneSource;
+use raytree::views::diagram::draw::draw_with_labels;
+use raytree::views::diagram::options::Options;
+
+use crate::commands::cli::{raytree, workdir};
+use crate::tools::{Need, available};
+
+fn glass() -> (
+    raytree::scene::Scene,
+    raytree::tree::document::TraceDocument,
+) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json");
+    let scene = raytree::scene::loader::load(&path).unwrap();
+    let trace = raytree::tree::record::pixel(
+        &scene,
+        SceneSource::new("scenes/whitted.json", ""),
+        416,
+        209,
+        None,
+    )
+    .unwrap();
+    (scene, trace)
+}
+
+/// The figure's layout does not depend on recording it: the same PNG bytes,
+/// and every label placed is a text element of the SVG. Fails if the SVG
+/// recording moved, dropped or renamed anything a reader sees.
+#[test]
+fn the_svg_holds_every_label_of_the_png_and_changes_nothing() {
+    let (scene, trace) = glass();
+    let options = Options {
+        depth: Some(3),
+        ..Options::default()
+    };
+    let plain = draw_with_labels(&trace, &scene, &options).unwrap();
+    let recorded = draw_with_labels(
+        &trace,
+        &scene,
+        &Options {
+            svg: true,
+            ..options
+        },
+    )
+    .unwrap();
+    assert!(
+        plain.figure.png() == recorded.figure.png(),
+        "recording changed the PNG"
+    );
+    let svg = recorded.figure.svg().expect("recording was on");
+    let (w, h) = recorded.figure.size();
+    assert!(
+        svg.starts_with(&format!(
+            "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\""
+        )),
+        "{}",
+        &svg[..200]
+    );
+    assert!(!recorded.labels.is_empty());
+    for placed in &recorded.labels {
+        let text = placed
+            .label
+            .text
+            .replace('&', "&amp;")
+            .replace('<', "&lt;")
+            .replace('>', "&gt;");
+        assert!(
+            svg.contains(&format!(">{text}</text>")),
+            "label '{}' is not text in the SVG",
+            placed.label.text
+        );
+    }
+    for entry in &recorded.legend_entries {
+        assert!(
+            svg.contains(&format!(">{entry}</text>")),
+            "legend entry '{entry}' missing"
+        );
+    }
+}
+
+/// The command writes an SVG for a .svg name, refuses the camera view as SVG
+/// in one line, and the SVG drawn by librsvg matches the PNG: at most 2 % of
+/// the pixels differ by more than a quarter of the range (edges and glyphs
+/// are anti-aliased and hinted differently; a shape out of place would move
+/// far more).
+#[test]
+fn diagram_writes_svg_that_draws_as_its_png() {
+    let dir = workdir("diagram-svg");
+    let w = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json");
+    let w = w.to_str().unwrap();
+    for out_name in ["glass.svg", "glass.png"] {
+        let out = raytree(
+            &[
+                "diagram", w, "--pixel", "416,209", "--depth", "3", "-o", out_name,
+            ],
+            &dir,
+        );
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    let svg = std::fs::read_to_string(dir.join("glass.svg")).unwrap();
+    assert!(svg.starts_with("<svg ") && svg.trim_end().ends_with("</svg>"));
+    let out = raytree(
+        &[
+            "diagram", w, "--pixel", "416,209", "--view", "camera", "-o", "cam.svg",
+        ],
+        &dir,
+    );
+    assert_eq!(
+        out.status.code(),
+        Some(1),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(!dir.join("cam.svg").exists());
+    if !available(
+        "(the SVG drawn as pixels)",
+        &[Need::Rsvg],
+        "draws the SVG to compare with the PNG",
+    ) {
+        return;
+    }
+    let drawn = dir.join("from-svg.png");
+    let status = Command::new("rsvg-convert")
+        .arg(dir.join("glass.svg"))
+        .arg("-o")
+        .arg(&drawn)
+        .status()
+        .expect("rsvg-convert runs");
+    assert!(status.success());
+    let a = image::open(dir.join("glass.png")).unwrap().to_rgb8();
+    let b = image::open(&drawn).unwrap().to_rgb8();
+    assert_eq!(a.dimensions(), b.dimensions());
+    let off = a
+        .pixels()
+        .zip(b.pixels())
+        .filter(|(p, q)| (0..3).any(|c| p[c].abs_diff(q[c]) > 64))
+        .count();
+    let share = off as f64 / f64::from(a.width() * a.height());
+    assert!(
+        share < 0.02,
+        "{:.2} % of the pixels differ by more than 64 levels",
+        100.0 * share
+    );
+}
