@@ -124,7 +124,7 @@ fn diagram_writes_svg_that_draws_as_its_png() {
     );
     assert!(!dir.join("cam.svg").exists());
     if !available(
-        "(the SVG drawn as pixels)",
+        "the SVG drawn as pixels",
         &[Need::Rsvg],
         "draws the SVG to compare with the PNG",
     ) {
