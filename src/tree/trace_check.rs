@@ -189,6 +189,18 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
     for (k, test) in node.tests.iter().enumerate() {
         object(test.object, &test.name, format!("{here}.tests[{k}].object"))?;
     }
+    // The visits sit among the tests in the order the search made them.
+    let mut before = 0;
+    for (k, visit) in node.boxes.iter().enumerate() {
+        if visit.after_tests < before || visit.after_tests > node.tests.len() {
+            return Err(format!(
+                "{here}.boxes[{k}].after_tests: {} is not between {before} (the visit before) and {} (the ray's tests)",
+                visit.after_tests,
+                node.tests.len()
+            ));
+        }
+        before = visit.after_tests;
+    }
     if let Some(hit) = &node.hit {
         let o = object(hit.object, &hit.name, format!("{here}.hit.object"))?;
         if o.material != hit.material {

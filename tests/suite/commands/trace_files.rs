@@ -55,6 +55,13 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             "samples[0].tree.nodes[0].reflected.node: 999 is not a node (the tree has 11)",
         ),
         (
+            "visit-after-too-many-tests",
+            broken(
+                |v| node(v, 0)["boxes"] = json!([{"min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0], "met": true, "after_tests": 9}]),
+            ),
+            "samples[0].tree.nodes[0].boxes[0].after_tests: 9 is not between 0 (the visit before) and 4 (the ray's tests)",
+        ),
+        (
             "object-index",
             broken(|v| node(v, 0)["hit"]["object"] = json!(99)),
             "samples[0].tree.nodes[0].hit.object: object 99 does not exist (the trace lists 4)",
