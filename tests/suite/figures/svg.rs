@@ -17,16 +17,9 @@ fn glass() -> (
     raytree::scene::Scene,
     raytree::tree::document::TraceDocument,
 ) {
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json");
-    let scene = raytree::scene::loader::load(&path).unwrap();
-    let trace = raytree::tree::record::pixel(
-        &scene,
-        SceneSource::new("scenes/whitted.json", ""),
-        416,
-        209,
-        None,
-    )
-    .unwrap();
+    let scene = raytree::scene::loader::whitted();
+    let source = SceneSource::new("scenes/whitted.json", "");
+    let trace = raytree::tree::record::pixel(&scene, source, 416, 209, None).unwrap();
     (scene, trace)
 }
 
