@@ -75,6 +75,14 @@ impl Figure {
         self
     }
 
+    /// Tags what is drawn next in the SVG (see [`Svg::tag`]); the PNG is
+    /// the same either way.
+    pub fn tag(&mut self, attributes: &str) {
+        if let Some(svg) = &mut self.svg {
+            svg.tag(attributes);
+        }
+    }
+
     /// The figure as an SVG document, if it was made [`Figure::with_svg`].
     pub fn svg(&self) -> Option<String> {
         self.svg.as_ref().map(Svg::document)

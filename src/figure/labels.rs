@@ -86,6 +86,8 @@ pub struct Label {
     pub boxed: bool,
     /// Left out when there is no room (ticks, step numbers), rather than moved out.
     pub optional: bool,
+    /// Attributes for its SVG elements ([`Figure::tag`]), empty for none.
+    pub tag: String,
 }
 
 /// A placed label.
@@ -110,6 +112,7 @@ impl Placed {
     /// Draws the label where it was placed: its leader line, its box when
     /// boxed, its text; line widths times `k` (a figure's size).
     pub fn draw(&self, fig: &mut Figure, k: f32) {
+        fig.tag(&self.label.tag);
         if let Some([a, b]) = self.leader {
             fig.line_px(a, b, Pen::solid(LEADER, 0.9).scaled(k));
         }
@@ -129,6 +132,7 @@ impl Placed {
             Anchor::Left,
             false,
         );
+        fig.tag("");
     }
 }
 
@@ -322,6 +326,7 @@ mod tests {
             target: Target::Point { at, clearance: 4.0 },
             boxed: false,
             optional: false,
+            tag: String::new(),
         }
     }
 

@@ -5,14 +5,10 @@
 //! Text is written as text in the same font family, not as glyph outlines.
 
 use std::fmt::Write;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use glam::DVec2;
 
 use crate::figure::pen::{Pen, Rgb};
-
-/// Clip paths need ids unique on a page that panels are pasted into.
-static NEXT_ID: AtomicUsize = AtomicUsize::new(0);
 
 /// The elements drawn so far, and the frame's clip path.
 #[derive(Clone, Debug)]
@@ -22,6 +18,8 @@ pub struct Svg {
     clip_id: String,
     defs: String,
     body: String,
+    /// Attributes every element gets while set ([`Svg::tag`]).
+    tag: String,
 }
 
 /// How a shape is painted: its fill and its outline.
@@ -39,8 +37,18 @@ impl Svg {
     /// An empty page of `width × height` pixels in `paper`, clipping to `frame`
     /// (left, top, width, height).
     pub fn new(width: u32, height: u32, paper: Rgb, frame: [f32; 4]) -> Self {
-        let clip_id = format!("frame{}", NEXT_ID.fetch_add(1, Ordering::Relaxed));
         let [x, y, w, h] = frame;
+        // Named by its rectangle, so the same figure is the same file every
+        // time (the book compares them), and panels pasted onto one page
+        // share a clip path exactly when they clip alike.
+        let clip_id = format!(
+            "frame-{}-{}-{}-{}",
+            num(x.into()),
+            num(y.into()),
+            num(w.into()),
+            num(h.into())
+        )
+        .replace('.', "_");
         let defs = format!(
             "<clipPath id=\"{clip_id}\"><rect x=\"{x}\" y=\"{y}\" width=\"{w}\" height=\"{h}\"/></clipPath>"
         );
@@ -54,7 +62,20 @@ impl Svg {
             clip_id,
             defs,
             body,
+            tag: String::new(),
         }
+    }
+
+    /// Marks what is written next with `attributes` (`data-ray="2"
+    /// data-step="7"`), until set again: a player reveals a diagram part by
+    /// part, so each part says which ray it belongs to and from which step
+    /// of the algorithm it is drawn. Empty for parts that are always there.
+    pub fn tag(&mut self, attributes: &str) {
+        self.tag = if attributes.is_empty() {
+            String::new()
+        } else {
+            format!(" {attributes}")
+        };
     }
 
     /// A polyline or polygon through `points` (pixels).
@@ -62,21 +83,30 @@ impl Svg {
         if points.len() < 2 {
             return;
         }
+        // A path's points to a tenth of a pixel, each after the last kept
+        // one by at least that much: an object's outline has hundreds of
+        // points, and a player's page carries the whole diagram.
         let mut d = String::new();
-        for (i, p) in points.iter().enumerate() {
+        let mut last: Option<(String, String)> = None;
+        for p in points {
+            let at = (coordinate(p.x), coordinate(p.y));
+            if last.as_ref() == Some(&at) {
+                continue;
+            }
             let _ = write!(
                 d,
                 "{}{} {}",
-                if i == 0 { "M" } else { " L" },
-                num(p.x),
-                num(p.y)
+                if last.is_none() { "M" } else { " " },
+                at.0,
+                at.1
             );
+            last = Some(at);
         }
         if close {
             d.push_str(" Z");
         }
         let attributes = self.paint(paint);
-        let _ = writeln!(self.body, "<path d=\"{d}\"{attributes}/>");
+        let _ = writeln!(self.body, "<path d=\"{d}\"{attributes}{}/>", self.tag);
     }
 
     /// A circle of `radius` pixels around `center`.
@@ -84,9 +114,10 @@ impl Svg {
         let attributes = self.paint(paint);
         let _ = writeln!(
             self.body,
-            "<circle cx=\"{}\" cy=\"{}\" r=\"{radius}\"{attributes}/>",
+            "<circle cx=\"{}\" cy=\"{}\" r=\"{radius}\"{attributes}{}/>",
             num(center.x),
-            num(center.y)
+            num(center.y),
+            self.tag
         );
     }
 
@@ -100,10 +131,11 @@ impl Svg {
         };
         let _ = writeln!(
             self.body,
-            "<text x=\"{}\" y=\"{}\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{size}\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\"{clip}>{}</text>",
+            "<text x=\"{}\" y=\"{}\" font-family=\"DejaVu Sans, sans-serif\" font-size=\"{size}\" fill=\"{}\" stroke=\"#ffffff\" stroke-width=\"2\" paint-order=\"stroke\"{clip}{}>{}</text>",
             num(at.x),
             num(at.y),
             hex(color),
+            self.tag,
             escape(text)
         );
     }
@@ -130,7 +162,9 @@ impl Svg {
 
     /// Another page's elements, its top-left corner at `(x, y)`.
     pub fn paste(&mut self, panel: &Svg, x: i32, y: i32) {
-        self.defs.push_str(&panel.defs);
+        if !self.defs.contains(&panel.defs) {
+            self.defs.push_str(&panel.defs);
+        }
         let _ = writeln!(
             self.body,
             "<g transform=\"translate({x} {y})\">\n{}</g>",
@@ -187,6 +221,18 @@ impl Svg {
             out.push_str(&self.clip_attribute());
         }
         out
+    }
+}
+
+/// A path's pixel coordinate to one decimal (a tenth of a pixel is invisible
+/// at the size a page shows a figure).
+fn coordinate(x: f64) -> String {
+    let s = format!("{x:.1}");
+    let s = s.trim_end_matches('0').trim_end_matches('.');
+    if s == "-0" {
+        "0".to_owned()
+    } else {
+        s.to_owned()
     }
 }
 
@@ -303,7 +349,13 @@ mod tests {
         );
         // The line from (0, 0) to (4, 2) in diagram units lands where to_px puts it.
         let (a, b) = (fig.to_px(DVec2::ZERO), fig.to_px(DVec2::new(4.0, 2.0)));
-        let d = format!("M{} {} L{} {}", num(a.x), num(a.y), num(b.x), num(b.y));
+        let d = format!(
+            "M{} {} {} {}",
+            coordinate(a.x),
+            coordinate(a.y),
+            coordinate(b.x),
+            coordinate(b.y)
+        );
         assert!(svg.contains(&d), "no {d} in\n{svg}");
         assert!(
             svg.contains("stroke=\"#009e73\"") && svg.contains("stroke-dasharray"),
@@ -344,5 +396,7 @@ mod tests {
             2,
             "the page's and the panel's"
         );
+        // The same figure twice is the same file.
+        assert_eq!(drawn(true).svg(), drawn(true).svg());
     }
 }

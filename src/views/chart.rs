@@ -222,6 +222,7 @@ fn draw_points(
         },
         boxed: false,
         optional: false,
+        tag: String::new(),
     });
     let f = fig.frame();
     let frame = PxRect {

@@ -84,7 +84,7 @@ pub fn layout_of(
         if options.shadows {
             for (k, s) in node.shadow_rays.iter().enumerate() {
                 if shown.shadow(i, k) {
-                    segments.extend(shadow_segments(&among, &proj, i, s));
+                    segments.extend(shadow_segments(&among, &proj, (i, k), s));
                 }
             }
         }
@@ -269,7 +269,7 @@ fn ray_segment(scene: &Among, proj: &Projection, i: usize, node: &RayNode, far: 
     segment(
         scene,
         proj,
-        i,
+        (i, None),
         Stroke::Ray(node.kind),
         (node.origin, end),
         node.hit.is_none(),
@@ -281,7 +281,7 @@ fn ray_segment(scene: &Among, proj: &Projection, i: usize, node: &RayNode, far: 
 fn shadow_segments(
     scene: &Among,
     proj: &Projection,
-    i: usize,
+    (i, k): (usize, usize),
     s: &crate::tree::ray_tree::ShadowRecord,
 ) -> Vec<Segment> {
     let light = s.origin + s.direction;
@@ -291,7 +291,7 @@ fn shadow_segments(
             vec![segment(
                 scene,
                 proj,
-                i,
+                (i, Some(k)),
                 Stroke::ShadowReaches,
                 (s.origin, light),
                 false,
@@ -303,7 +303,7 @@ fn shadow_segments(
                 segment(
                     scene,
                     proj,
-                    i,
+                    (i, Some(k)),
                     Stroke::ShadowBlocked,
                     (s.origin, blocker),
                     false,
@@ -311,7 +311,7 @@ fn shadow_segments(
                 segment(
                     scene,
                     proj,
-                    i,
+                    (i, Some(k)),
                     Stroke::ShadowPastBlocker,
                     (blocker, light),
                     false,
@@ -324,7 +324,7 @@ fn shadow_segments(
 fn segment(
     scene: &Among,
     proj: &Projection,
-    node: usize,
+    (node, shadow): (usize, Option<usize>),
     stroke: Stroke,
     (a, b): (DVec3, DVec3),
     leaves: bool,
@@ -340,6 +340,7 @@ fn segment(
         leaves,
         stroke,
         node,
+        shadow,
         passing: merge(pieces),
         ends: (a, b),
     }

@@ -85,6 +85,7 @@ fn label(fig: &Figure, text: String, at: DVec2, size: f32, clearance: f64) -> La
         },
         boxed: false,
         optional: false,
+        tag: String::new(),
     }
 }
 

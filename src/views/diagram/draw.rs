@@ -23,6 +23,7 @@ use crate::views::diagram::labels::{blocked, draw_label, label_requests, lines_p
 use crate::views::diagram::layout::{Layout, ObjectShape};
 use crate::views::diagram::options::Options;
 use crate::views::diagram::projection::Outline;
+use crate::views::diagram::reveal::Reveal;
 use crate::views::diagram::style::{NORMAL, Stroke, ray_pen};
 use crate::views::diagram::style::{Scale, pale};
 use crate::views::numbers::num;
@@ -82,6 +83,7 @@ pub fn draw_with_labels(
         fig = fig.with_svg();
     }
     fig.fit(lay.window.0, lay.window.1, 0.0);
+    let reveal = Reveal::of(trace, options.sample);
     draw_objects(&mut fig, scene, &lay, &scale);
     draw_boxes(&mut fig, &lay, &scale);
     draw_eye_and_image_plane(&mut fig, &lay, &scale);
@@ -90,13 +92,13 @@ pub fn draw_with_labels(
             fig.light(p);
         }
     }
-    draw_rays(&mut fig, &lay, &scale);
-    draw_marks(&mut fig, &lay, &scale);
-    draw_hits(&mut fig, &lay, &scale);
+    draw_rays(&mut fig, &lay, &scale, &reveal);
+    draw_marks(&mut fig, &lay, &scale, &reveal);
+    draw_hits(&mut fig, &lay, &scale, &reveal);
     let offscreen = draw_off_frame(&mut fig, scene, &lay, &scale);
     fig.frame_border();
     let (legend, legend_entries) = draw_legend(&mut fig, &lay, &scale);
-    let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen);
+    let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen, &reveal);
     let frame = frame_px(&fig);
     let placed = labels::place_weighted(
         requests,
@@ -261,9 +263,13 @@ fn draw_eye_and_image_plane(fig: &mut Figure, lay: &Layout, scale: &Scale) {
 
 /// Each line in pieces: solid where it is what it seems, faint and dotted where
 /// it only passes in front of or behind an object; arrowheads at rays' ends.
-fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     let (vlo, vhi) = fig.visible();
     for s in &lay.segments {
+        fig.tag(&match s.shadow {
+            Some(k) => reveal.shadow(s.node, k),
+            None => reveal.ray(s.node),
+        });
         let pen = scale.pen(s.stroke.pen());
         for (from, to, passing, last) in s.pieces() {
             let Some((a, b)) = clip_segment(from, to, vlo, vhi) else {
@@ -277,10 +283,11 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale) {
             }
         }
     }
+    fig.tag("");
 }
 
 /// Blockers, lights behind surfaces, angle arcs and ticks.
-fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     for &(_, _, on_ray, on_object) in &lay.near_misses {
         let pen = scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.2, &[3.0, 3.0]));
         fig.line(on_ray, on_object, pen);
@@ -293,6 +300,7 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     }
     let m = &lay.marks;
     for b in &m.blocked {
+        fig.tag(&reveal.shadow(b.node, b.shadow));
         fig.cross(
             b.at,
             scale.px(6.0),
@@ -300,6 +308,7 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
         );
     }
     for b in &m.behind {
+        fig.tag(&reveal.hit(b.node));
         let stub = b.at + b.toward * scale.px(26.0) / fig.scale();
         fig.line(
             b.at,
@@ -313,6 +322,7 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
         );
     }
     for a in &m.angles {
+        fig.tag(&reveal.hit(a.node));
         if let Some(g) = a.guide {
             let end = a.at + g * scale.px(45.0) / fig.scale();
             fig.line(
@@ -330,6 +340,7 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
         );
     }
     for t in &m.ticks {
+        fig.tag(&reveal.label(t.node, false));
         let half = t.across * scale.px(5.0) / fig.scale();
         fig.line(
             t.at - half,
@@ -337,12 +348,14 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
             scale.pen(Pen::solid(palette::INK, 1.2)),
         );
     }
+    fig.tag("");
 }
 
 /// Hit points on top, with the normal the formulas use.
-fn draw_hits(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+fn draw_hits(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     let normal_length = scale.px(45.0) / fig.scale();
     for hit in &lay.hits {
+        fig.tag(&reveal.hit(hit.node));
         let tip = hit.at + hit.normal * normal_length;
         fig.arrow(hit.at, tip, scale.pen(NORMAL));
         fig.dot(
@@ -352,6 +365,7 @@ fn draw_hits(fig: &mut Figure, lay: &Layout, scale: &Scale) {
             Some(palette::INK),
         );
     }
+    fig.tag("");
 }
 
 /// A small arrow at the frame's edge toward each light (and the eye) outside

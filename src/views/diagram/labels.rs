@@ -13,6 +13,7 @@ use crate::scene::Scene;
 use crate::views::diagram::layout::Layout;
 use crate::views::diagram::options::{Labels, Options};
 use crate::views::diagram::projection::Outline;
+use crate::views::diagram::reveal::Reveal;
 use crate::views::diagram::style::Scale;
 use crate::views::diagram::style::Stroke;
 use crate::views::numbers::num;
@@ -25,6 +26,7 @@ pub(super) fn label_requests(
     options: &Options,
     scale: &Scale,
     offscreen: Vec<(DVec2, String)>,
+    reveal: &Reveal,
 ) -> Vec<Label> {
     let size = scale.text;
     let text = |t: String, color: Rgb, target: Target| Label {
@@ -34,6 +36,7 @@ pub(super) fn label_requests(
         target,
         boxed: false,
         optional: false,
+        tag: String::new(),
     };
     let point = |p: DVec2, r: f64| Target::Point {
         at: fig.to_px(p),
@@ -47,13 +50,17 @@ pub(super) fn label_requests(
         out.push(Label {
             boxed: true,
             size: size - 1.0,
+            tag: reveal.label(t.node, true),
             ..text(t.text.clone(), palette::REFRACTED, point(t.at, 8.0))
         });
     }
     if options.labels == Labels::All {
         for (k, h) in lay.hits.iter().enumerate() {
             if fig.shows(h.at) {
-                out.push(text(format!("P{}", k + 1), palette::INK, point(h.at, 5.0)));
+                out.push(Label {
+                    tag: reveal.label(h.node, true),
+                    ..text(format!("P{}", k + 1), palette::INK, point(h.at, 5.0))
+                });
             }
         }
         for b in &lay.marks.boundaries {
@@ -66,6 +73,7 @@ pub(super) fn label_requests(
                 out.push(Label {
                     size: size - 2.0,
                     optional: true,
+                    tag: reveal.label(b.node, true),
                     ..text(
                         label.clone(),
                         palette::OBJECT,
@@ -82,6 +90,7 @@ pub(super) fn label_requests(
             let at = fig.to_px(a.at) + DVec2::new(mid.x, -mid.y) * scale.px(30.0);
             out.push(Label {
                 size: size - 2.0,
+                tag: reveal.label(a.node, true),
                 ..text(
                     a.label.clone(),
                     palette::INK,
@@ -125,6 +134,7 @@ pub(super) fn label_requests(
         out.push(Label {
             size: size - 4.0,
             optional: true,
+            tag: reveal.label(t.node, false),
             ..text(t.label.clone(), palette::INK, point(t.at, 5.0))
         });
     }
@@ -204,6 +214,7 @@ pub(super) fn object_labels(fig: &Figure, scene: &Scene, lay: &Layout, size: f32
             },
             boxed: false,
             optional: false,
+            tag: String::new(),
         });
     }
     out

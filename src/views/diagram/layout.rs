@@ -25,6 +25,8 @@ pub struct Segment {
     pub stroke: Stroke,
     /// The tree node it belongs to.
     pub node: usize,
+    /// Which of the node's shadow rays it draws, for a shadow ray.
+    pub shadow: Option<usize>,
     /// Parameter intervals of `from → to` where it only passes in front of or
     /// behind an object's silhouette: drawn faded and dotted.
     pub passing: Vec<[f64; 2]>,

@@ -46,6 +46,8 @@ pub struct Blocked {
     pub depth: u32,
     /// The blocking object.
     pub object: usize,
+    /// Which of the node's shadow rays it blocked.
+    pub shadow: usize,
 }
 
 /// A light behind the surface at a hit.
@@ -55,6 +57,8 @@ pub struct Behind {
     pub at: DVec2,
     /// Toward the light, in the drawing (unit).
     pub toward: DVec2,
+    /// The hit's node.
+    pub node: usize,
 }
 
 /// An angle between two directions at a point.
@@ -71,6 +75,8 @@ pub struct Angle {
     /// A side of the angle the figure does not otherwise draw (the normal's
     /// continuation into the second medium, for θ₂): drawn dotted.
     pub guide: Option<DVec2>,
+    /// The node whose hit it is at.
+    pub node: usize,
 }
 
 /// The indices on either side of a refracting boundary.
@@ -84,6 +90,8 @@ pub struct Boundary {
     pub n1: String,
     /// The far side's label.
     pub n2: String,
+    /// The node whose hit it is.
+    pub node: usize,
 }
 
 /// Where total internal reflection happened.
@@ -93,6 +101,8 @@ pub struct Tir {
     pub at: DVec2,
     /// The badge's text.
     pub text: String,
+    /// The node whose hit it is.
+    pub node: usize,
 }
 
 /// A tick across a ray at a whole step of `t`.
@@ -104,6 +114,8 @@ pub struct Tick {
     pub across: DVec2,
     /// `t = 2`.
     pub label: String,
+    /// The ray it is on.
+    pub node: usize,
 }
 
 /// A step number of `raytree trace --steps`.
@@ -180,6 +192,7 @@ pub fn marks(
                 to: n,
                 label: format!("{name} = {}", degrees(theta)),
                 guide: None,
+                node: i,
             });
         }
         if let Some(v) = reflected {
@@ -189,6 +202,7 @@ pub fn marks(
                 to: unit(v),
                 label: format!("θᵣ = {}", degrees(theta)),
                 guide: None,
+                node: i,
             });
         }
         if let Some((t, theta2)) = refracted {
@@ -198,6 +212,7 @@ pub fn marks(
                 to: unit(t),
                 label: format!("θ₂ = {}", degrees(theta2)),
                 guide: Some(-n),
+                node: i,
             });
         }
         let Some(r) = &h.refraction else { continue };
@@ -215,7 +230,7 @@ pub fn marks(
             } else {
                 "total internal reflection".to_owned()
             };
-            m.tir.push(Tir { at, text });
+            m.tir.push(Tir { at, text, node: i });
         }
         if labelled {
             m.boundaries.push(Boundary {
@@ -223,6 +238,7 @@ pub fn marks(
                 normal: n,
                 n1: format!("n₁ = {}", num(h.n1)),
                 n2: format!("n₂ = {}", num(h.n2)),
+                node: i,
             });
         }
     }
@@ -237,17 +253,19 @@ pub fn marks(
 
 fn shadow_marks(node: &RayNode, i: usize, proj: &Projection, m: &mut Marks) {
     let Some(h) = &node.hit else { return };
-    for s in &node.shadow_rays {
+    for (k, s) in node.shadow_rays.iter().enumerate() {
         match s.outcome {
             ShadowOutcomeRecord::Blocked { object, t, .. } => m.blocked.push(Blocked {
                 at: proj.point(s.origin + t * s.direction),
                 node: i,
                 depth: node.depth,
                 object,
+                shadow: k,
             }),
             ShadowOutcomeRecord::FacesAway => m.behind.push(Behind {
                 at: proj.point(h.point),
                 toward: proj.vector(s.direction).normalize_or_zero(),
+                node: i,
             }),
             ShadowOutcomeRecord::Reaches { .. } => {}
         }
@@ -276,6 +294,7 @@ fn ticks(
             at: proj.point(node.origin + t * node.direction),
             across,
             label: format!("t = {}", num(t)),
+            node: i,
         };
         // A primary ray's t counts in lengths of c: t = 1 is the image plane,
         // the one tick a learner needs on every primary ray.

@@ -14,6 +14,7 @@ pub mod layout; // a laid-out diagram: rays, hits and objects in drawing coordin
 pub mod frame; // what a ray diagram frames
 pub mod marks; // the angles, indices and badges a slide puts on a diagram
 pub mod arrange; // laying a recorded tree out on the drawing plane
+pub mod reveal; // when each part of a diagram appears, tagged in its SVG for the players
 pub mod labels; // what a ray diagram labels, and drawing the labels
 pub mod draw; // a ray diagram as a figure
 pub mod camera_view; // the image plane face-on, with a pixel's place on it

@@ -156,6 +156,7 @@ fn own_space(
         target,
         boxed: false,
         optional,
+        tag: String::new(),
     };
     let mut labels = vec![
         label(

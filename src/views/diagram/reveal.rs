@@ -1,0 +1,95 @@
+//! When each part of a diagram appears as the algorithm runs, written into
+//! its SVG: the book's players draw the whole diagram once and reveal it stop
+//! by stop, so every part says which ray it belongs to (`data-ray`, the tree
+//! node) and from which step of `raytree trace --steps` it is drawn
+//! (`data-step`, 1-based): a ray from its spawn, its hit and the marks there
+//! from the closest hit, a shadow ray from the step that casts it. Parts of
+//! the scene (objects, lights, the eye) carry no tag: they are there from the
+//! start.
+
+use std::collections::HashMap;
+
+use crate::tree::document::TraceDocument;
+use crate::tree::steps::StepKind;
+
+/// The step at which each part of one sample's tree appears.
+#[derive(Clone, Debug, Default)]
+pub struct Reveal {
+    spawn: HashMap<usize, usize>,
+    hit: HashMap<usize, usize>,
+    shadow: HashMap<(usize, usize), usize>,
+}
+
+/// What a tagged part is, for the player's styles and the browser test.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Part {
+    /// A ray's line (primary, reflected, refracted).
+    Ray,
+    /// A shadow ray's line.
+    Shadow,
+    /// A hit point, its normal, and the marks at it.
+    Hit,
+    /// A label naming one of those.
+    Label,
+}
+
+impl Reveal {
+    /// The steps of `sample` of `trace`.
+    pub fn of(trace: &TraceDocument, sample: usize) -> Self {
+        let mut r = Reveal::default();
+        for (k, s) in trace.steps(sample).iter().enumerate() {
+            let step = k + 1;
+            match s.kind {
+                StepKind::Spawn => {
+                    r.spawn.entry(s.node).or_insert(step);
+                }
+                StepKind::Hit => {
+                    r.hit.entry(s.node).or_insert(step);
+                }
+                StepKind::Shadow(j) => {
+                    r.shadow.entry((s.node, j)).or_insert(step);
+                }
+                _ => {}
+            }
+        }
+        r
+    }
+
+    /// The attributes of a ray's line.
+    pub fn ray(&self, node: usize) -> String {
+        tag(Part::Ray, node, self.spawn.get(&node))
+    }
+
+    /// The attributes of shadow ray `k` of `node`.
+    pub fn shadow(&self, node: usize, k: usize) -> String {
+        tag(Part::Shadow, node, self.shadow.get(&(node, k)))
+    }
+
+    /// The attributes of `node`'s hit and what is marked there.
+    pub fn hit(&self, node: usize) -> String {
+        tag(Part::Hit, node, self.hit.get(&node))
+    }
+
+    /// The attributes of a label naming a part of `node` that appears with
+    /// its hit (`at_hit`) or its spawn.
+    pub fn label(&self, node: usize, at_hit: bool) -> String {
+        let step = if at_hit {
+            self.hit.get(&node)
+        } else {
+            self.spawn.get(&node)
+        };
+        tag(Part::Label, node, step)
+    }
+}
+
+fn tag(part: Part, node: usize, step: Option<&usize>) -> String {
+    let class = match part {
+        Part::Ray => "ray",
+        Part::Shadow => "shadow",
+        Part::Hit => "hit",
+        Part::Label => "label",
+    };
+    // A part with no step of its own (a tree cut short) appears at the end.
+    let step = step.map_or_else(|| "end".to_owned(), |s| s.to_string());
+    format!("class=\"{class}\" data-ray=\"{node}\" data-step=\"{step}\"")
+}
