@@ -37,6 +37,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
+use crate::course::question::{self, Question};
 use crate::course::spec_file::{NumberFile, SpecFile};
 
 pub use crate::course::lesson_command::Command;
@@ -62,6 +63,8 @@ pub struct Spec {
     pub numbers: BTreeMap<String, Number>,
     /// Exercises, in order.
     pub exercises: Vec<Exercise>,
+    /// Checked questions, in order.
+    pub questions: Vec<Question>,
 }
 
 /// A command whose output the text quotes.
@@ -281,6 +284,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
             line: line(e.span()),
         })
         .collect();
+    let questions = question::read(&file.question, &numbers, line).map_err(|(l, e)| fail(l, e))?;
     let mut spec = Spec {
         title: file.title,
         summary: file.summary,
@@ -290,6 +294,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
         excerpts,
         numbers,
         exercises,
+        questions,
     };
     resolve_reads(&mut spec).map_err(|(l, e)| fail(l, e))?;
     Ok(spec)

@@ -9,5 +9,7 @@ pub(crate) mod spec_file; // a spec file's TOML as serde reads it
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
 pub mod lesson_command; // a spec's command lines, and the images and figures each one reads
 pub mod lesson; // the lessons: finding, loading and narrating one
+pub mod question; // checked questions: predict a number, checked against raytree's own
+pub mod player; // a lesson's step-through as a player for the book's page
 pub mod learner; // the learner trace format, and the check of a learner's tracer against ours
 pub mod vectors; // test vectors of the lecture's functions for a learner's own tracer

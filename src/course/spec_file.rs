@@ -24,6 +24,8 @@ pub(crate) struct SpecFile {
     pub(crate) number: BTreeMap<String, Spanned<NumberFile>>,
     #[serde(default)]
     pub(crate) exercise: Vec<Spanned<ExerciseFile>>,
+    #[serde(default)]
+    pub(crate) question: Vec<Spanned<crate::course::question::QuestionFile>>,
 }
 
 #[derive(Deserialize)]

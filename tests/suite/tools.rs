@@ -27,12 +27,18 @@ pub enum Need {
     Python3,
     /// `rsvg-convert` (librsvg) on the PATH: draws a diagram's SVG as pixels.
     Rsvg,
+    /// `chromium` on the PATH: the built book read in a real browser.
+    Chromium,
+    /// `mdbook` on the PATH: builds the book for the browser.
+    MdBook,
 }
 
 impl Need {
     /// Whether this machine has it (looked up once per test run).
     pub fn present(self) -> bool {
-        static FOUND: [OnceLock<bool>; 6] = [
+        static FOUND: [OnceLock<bool>; 8] = [
+            OnceLock::new(),
+            OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
             OnceLock::new(),
@@ -53,6 +59,8 @@ impl Need {
             Need::Spd => spd().is_some(),
             Need::Python3 => runs("python3", "--version"),
             Need::Rsvg => runs("rsvg-convert", "--version"),
+            Need::Chromium => runs("chromium", "--version"),
+            Need::MdBook => runs("mdbook", "--version"),
         })
     }
 
@@ -65,15 +73,25 @@ impl Need {
             Need::Spd => "there is no ../shared/spd/ beside the repository",
             Need::Python3 => "python3 not found",
             Need::Rsvg => "rsvg-convert (librsvg2-bin) is not installed",
+            Need::Chromium => "chromium is not installed",
+            Need::MdBook => "mdbook is not installed",
         }
     }
 
     /// How CI gets it; `alone`, the only thing missing.
     fn remedy(self, alone: bool) -> &'static str {
         match (self, alone) {
-            (Need::Ghostscript | Need::Tmux | Need::Python3 | Need::Rsvg, true) => {
-                ".ci/run installs it"
-            }
+            (
+                Need::Ghostscript
+                | Need::Tmux
+                | Need::Python3
+                | Need::Rsvg
+                | Need::Chromium
+                | Need::MdBook,
+                true,
+            ) => ".ci/run installs it",
+            (Need::Chromium, false) => ".ci/run installs chromium",
+            (Need::MdBook, false) => ".ci/run installs the pinned mdBook",
             (Need::Rsvg, false) => ".ci/run installs librsvg2-bin",
             (Need::Python3, false) => ".ci/run installs python3",
             (Need::Ghostscript, false) => ".ci/run installs Ghostscript",

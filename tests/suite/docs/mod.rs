@@ -3,6 +3,7 @@
 
 mod architecture;
 mod book;
+mod browser;
 mod guide;
 mod readme;
 mod vectors;

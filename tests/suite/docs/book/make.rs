@@ -6,7 +6,7 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use raytree::course::{lesson, lesson_spec};
+use raytree::course::{lesson, lesson_spec, player};
 
 use super::page::{self, Input, Quoted};
 use super::run;
@@ -81,6 +81,17 @@ pub fn book() -> Result<Vec<File>, String> {
             figures: &format!("{}/", entry.name),
             lesson: Some((entry.number, &walk)),
         };
+        // Loaded again by the relative path, which the player's diagram and
+        // title name the scene by (the tests run in the repository).
+        let relative = lesson::load(Path::new("lessons"), entry.number)?;
+        let player = lesson::step_through(&relative)
+            .and_then(|walk| player::make(&relative, &walk))
+            .and_then(|p| player::script(&p))?;
+        files.push(text(
+            &format!("book/src/lessons/{}/player.js", entry.name),
+            player,
+            &format!("{folder}/steps.toml"),
+        ));
         let heading = format!("# Lesson {}: {}\n\n", entry.number, entry.title());
         chapter(
             &input,

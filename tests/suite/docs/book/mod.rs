@@ -13,7 +13,7 @@ mod check;
 mod links;
 mod make;
 mod page;
-mod run;
+pub(super) mod run;
 
 use std::process::Command;
 

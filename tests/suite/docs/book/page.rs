@@ -10,6 +10,8 @@ use std::path::Path;
 use raytree::course::lesson::StepThrough;
 use raytree::course::lesson_spec::{Source, Spec};
 
+mod questions;
+
 use super::run::{self, Output};
 use crate::tools::Need;
 
@@ -270,9 +272,10 @@ impl Page<'_> {
             return Err("{{steps}} twice".to_owned());
         }
         let mut out = format!(
-            "`raytree lesson {number}` prints this step-through; each stop quotes the trace's own numbers \
+            "<div class=\"raytree-player\" data-lesson=\"{number}\"></div>\n<script src=\"{}player.js\"></script>\n\n\
+             `raytree lesson {number}` prints this step-through; each stop quotes the trace's own numbers \
              (the pixel has {} steps in all).\n",
-            walk.steps
+            self.src.figures, walk.steps
         );
         for stop in &walk.stops {
             let block = format!(
@@ -295,7 +298,7 @@ impl Page<'_> {
         if !self.used.insert("exercises".to_owned()) {
             return Err("{{exercises}} twice".to_owned());
         }
-        let mut out = String::new();
+        let mut out = self.questions()?;
         for (k, e) in self.src.spec.exercises.iter().enumerate() {
             let at = format!("{} (exercise at line {})", self.src.spec_path, e.line);
             let task = self.fill(&e.task, &at, false)?;

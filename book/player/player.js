@@ -1,0 +1,232 @@
+// raytree's players and checked questions for the book's pages. Plain
+// JavaScript with no build step. Everything it shows was made by raytree at
+// book build: a chapter's player.js files the data under the lesson's number
+// (window.raytreePlayers), the questions carry their answers as attributes.
+// This file only shows and hides: a part of the diagram is drawn once it
+// has been spawned by the stop's step (its data-step), as `raytree lesson N`
+// narrates it.
+(function () {
+  "use strict";
+
+  function el(tag, cls, text) {
+    var e = document.createElement(tag);
+    if (cls) e.className = cls;
+    if (text !== undefined) e.textContent = text;
+    return e;
+  }
+
+  function stepOf(node) {
+    var s = node.getAttribute("data-step");
+    return s === "end" ? Infinity : Number(s);
+  }
+
+  function Player(root, data) {
+    this.root = root;
+    this.data = data;
+    this.at = 0;
+    this.picked = null;
+    root.setAttribute("tabindex", "0");
+    root.setAttribute("aria-label", "Step-through player of lesson " + data.lesson);
+    var bar = el("div", "rp-bar");
+    this.prev = el("button", "rp-prev", "◀ Previous");
+    this.next = el("button", "rp-next", "Next ▶");
+    this.where = el("span", "rp-where");
+    bar.appendChild(this.prev);
+    bar.appendChild(this.where);
+    bar.appendChild(this.next);
+    this.diagram = el("div", "rp-diagram");
+    this.diagram.innerHTML = data.svg;
+    this.say = el("p", "rp-say");
+    this.lines = el("pre", "rp-lines");
+    var below = el("div", "rp-below");
+    var treeBox = el("div", "rp-tree");
+    treeBox.appendChild(el("div", "rp-label", "The rays spawned so far (click one)"));
+    this.tree = el("ul");
+    treeBox.appendChild(this.tree);
+    this.ray = el("pre", "rp-ray");
+    below.appendChild(treeBox);
+    below.appendChild(this.ray);
+    root.appendChild(el("div", "rp-title", "Step through it: " + data.title +
+      " (pixel " + data.pixel.join(",") + " of " + data.scene + ")"));
+    root.appendChild(bar);
+    root.appendChild(this.diagram);
+    root.appendChild(this.say);
+    root.appendChild(this.lines);
+    root.appendChild(below);
+    this.parts = Array.prototype.slice.call(this.diagram.querySelectorAll("[data-step]"));
+    var self = this;
+    this.prev.addEventListener("click", function () { self.go(self.at - 1); });
+    this.next.addEventListener("click", function () { self.go(self.at + 1); });
+    root.addEventListener("keydown", function (e) {
+      var k = e.key;
+      if (k === "ArrowRight" || k === "n" || k === "j") self.go(self.at + 1);
+      else if (k === "ArrowLeft" || k === "p" || k === "k") self.go(self.at - 1);
+      else if (k === "Home") self.go(0);
+      else if (k === "End") self.go(self.data.stops.length - 1);
+      else return;
+      // The book's own arrow keys turn the page: not while stepping here.
+      e.preventDefault();
+      e.stopPropagation();
+    });
+    this.diagram.addEventListener("click", function (e) {
+      var t = e.target.closest ? e.target.closest("[data-ray]") : null;
+      if (t) self.pick(Number(t.getAttribute("data-ray")));
+    });
+    this.go(0);
+  }
+
+  Player.prototype.go = function (i) {
+    var stops = this.data.stops;
+    if (i < 0 || i >= stops.length) return;
+    this.at = i;
+    var stop = stops[i];
+    this.parts.forEach(function (p) {
+      var shown = stepOf(p) <= stop.step;
+      p.style.display = shown ? "" : "none";
+      var current = shown && Number(p.getAttribute("data-ray")) === stop.ray;
+      p.classList.toggle("rp-current", current);
+    });
+    this.where.textContent = "stop " + (i + 1) + " of " + stops.length +
+      " · step " + stop.step + " of " + this.data.steps;
+    this.prev.disabled = i === 0;
+    this.next.disabled = i === stops.length - 1;
+    this.say.textContent = stop.say;
+    this.lines.textContent = stop.lines.map(function (l, k) {
+      return (k === 0 ? stop.step + ". " : "    ") + l;
+    }).join("\n");
+    this.drawTree(stop);
+    this.pick(this.picked !== null && this.data.rays[this.picked].spawn <= stop.step ?
+      this.picked : stop.ray);
+  };
+
+  Player.prototype.drawTree = function (stop) {
+    var rays = this.data.rays, self = this;
+    this.tree.textContent = "";
+    var lists = {};
+    rays.forEach(function (r, i) {
+      if (r.spawn > stop.step) return;
+      var li = el("li");
+      var b = el("button", "rp-node" + (i === stop.ray ? " rp-current" : ""),
+        r.kind + " (depth " + r.depth + ")" + (r.hit ? " → " + r.hit : ""));
+      b.setAttribute("data-ray", i);
+      b.addEventListener("click", function () { self.pick(i); });
+      li.appendChild(b);
+      var sub = el("ul");
+      li.appendChild(sub);
+      lists[i] = sub;
+      var parent = r.parent === null ? self.tree : lists[r.parent];
+      (parent || self.tree).appendChild(li);
+    });
+  };
+
+  Player.prototype.pick = function (i) {
+    var r = this.data.rays[i];
+    if (!r || r.spawn > this.data.stops[this.at].step) return;
+    this.picked = i;
+    this.ray.textContent = "ray " + i + ": " + r.kind + ", depth " + r.depth + "\n" +
+      r.lines.join("\n");
+  };
+
+  function Question(root) {
+    var answer = Number(root.getAttribute("data-answer"));
+    var within = Number(root.getAttribute("data-within"));
+    var unit = root.getAttribute("data-unit") || "";
+    var hint = root.querySelector(".raytree-hint");
+    var worked = root.querySelector(".raytree-worked");
+    var form = el("form", "rq-form");
+    var input = el("input", "rq-input");
+    input.setAttribute("inputmode", "decimal");
+    input.setAttribute("aria-label", "your answer");
+    var check = el("button", "rq-check", "Check");
+    var verdict = el("span", "rq-verdict");
+    verdict.setAttribute("aria-live", "polite");
+    form.appendChild(input);
+    if (unit) form.appendChild(el("span", "rq-unit", unit));
+    form.appendChild(check);
+    form.appendChild(verdict);
+    var tol = root.querySelector(".raytree-tolerance");
+    root.insertBefore(form, tol);
+    if (hint) hint.style.display = "none";
+    if (worked) worked.style.display = "none";
+    form.addEventListener("submit", function (e) {
+      e.preventDefault();
+      var given = Number(input.value.replace(",", ".").replace(/[^0-9eE.+-]/g, ""));
+      if (input.value.trim() === "" || isNaN(given)) {
+        verdict.textContent = "Type a number.";
+        verdict.className = "rq-verdict";
+        return;
+      }
+      var right = Math.abs(given - answer) <= within;
+      verdict.textContent = right ? "Right: raytree says " + answer + unit + "." :
+        "Not yet: that is off by " + (given - answer > 0 ? "more" : "less") +
+        " than the tolerance. Read the hint and try again.";
+      verdict.className = "rq-verdict " + (right ? "rq-right" : "rq-wrong");
+      if (hint) { hint.style.display = right ? "none" : ""; hint.open = !right; }
+      if (worked && right) { worked.style.display = ""; worked.open = true; }
+    });
+    return { input: input, check: check, verdict: verdict, answer: answer, within: within };
+  }
+
+  // ?selftest: the browser test's probe. It presses the real buttons and keys
+  // and writes what the page then shows; the test judges it against the trace.
+  function selftest(players, questions) {
+    var report = { players: [], questions: [], scrollWidth: 0, width: 0 };
+    players.forEach(function (p) {
+      var seen = [];
+      function look(how) {
+        var shown = {};
+        p.parts.forEach(function (part) {
+          if (part.getAttribute("class").split(" ").indexOf("ray") < 0) return;
+          if (getComputedStyle(part).display !== "none") shown[part.getAttribute("data-ray")] = 1;
+        });
+        seen.push({ how: how, stop: p.at, step: p.data.stops[p.at].step,
+          rays: Object.keys(shown).map(Number).sort(function (a, b) { return a - b; }),
+          tree: p.tree.querySelectorAll(".rp-node").length });
+      }
+      look("start");
+      while (!p.next.disabled) { p.next.click(); look("next"); }
+      while (p.at > 0) {
+        p.root.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowLeft", bubbles: true }));
+        look("key");
+      }
+      report.players.push({ lesson: p.data.lesson, stops: p.data.stops.length, seen: seen });
+    });
+    questions.forEach(function (q) {
+      var out = {};
+      q.input.value = String(q.answer + 10 * q.within + 1);
+      q.check.click();
+      out.wrong = q.verdict.className;
+      q.input.value = String(q.answer);
+      q.check.click();
+      out.right = q.verdict.className;
+      report.questions.push(out);
+    });
+    report.scrollWidth = document.documentElement.scrollWidth;
+    report.width = document.documentElement.clientWidth;
+    var pre = el("pre", "", JSON.stringify(report));
+    pre.id = "raytree-selftest";
+    document.body.appendChild(pre);
+  }
+
+  function start() {
+    var data = window.raytreePlayers || {};
+    var players = [];
+    Array.prototype.forEach.call(document.querySelectorAll(".raytree-player"), function (root) {
+      var d = data[root.getAttribute("data-lesson")];
+      if (d) players.push(new Player(root, d));
+    });
+    var questions = Array.prototype.map.call(document.querySelectorAll(".raytree-question"), Question);
+    if (/[?&]selftest\b/.test(location.search)) selftest(players, questions);
+    // ?stop=N: the first player at stop N, moved to the top of the page, for
+    // the screenshots in docs/ (a headless browser shoots the page's top).
+    var m = /[?&]stop=(\d+)/.exec(location.search);
+    if (m && players[0]) {
+      players[0].go(Number(m[1]) - 1);
+      var main = document.querySelector("main") || document.body;
+      main.insertBefore(players[0].root, main.firstChild);
+    }
+  }
+
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", start);
+  else start();
+})();

@@ -1,0 +1,84 @@
+//! A chapter's checked questions, written where its exercises go: each a
+//! box `player.js` turns into an answer field, checked against the value
+//! raytree printed in this build; without JavaScript (and on GitHub) the
+//! hint and the worked answer are folds, as the exercises are.
+
+use std::fmt::Write;
+
+use raytree::course::question::{self, Question};
+
+use super::{HOLE, Page};
+
+impl Page<'_> {
+    /// The questions as HTML boxes around Markdown.
+    pub(super) fn questions(&mut self) -> Result<String, String> {
+        let spec = self.src.spec;
+        let mut out = String::new();
+        if spec.questions.is_empty() {
+            return Ok(out);
+        }
+        out.push_str(
+            "Predict each number, type it in the box and press Check: the page holds raytree's own \
+             value from this book's build and says how close an answer must be. A wrong answer \
+             brings a hint; a right one, the worked answer.\n\n",
+        );
+        for (k, q) in spec.questions.iter().enumerate() {
+            let at = format!("{} (question at line {})", self.src.spec_path, q.line);
+            let printed = self.numbers[&q.answer].clone();
+            self.used.insert(format!("number {}", q.answer));
+            typed_by_hand(q, &printed).map_err(|e| format!("{at}: {e}"))?;
+            let ask = self.fill(&q.ask, &at, false)?;
+            let hint = self.fill(&q.hint, &at, false)?;
+            let worked = self.fill(&q.worked, &at, false)?;
+            let (value, unit, within) = if printed == HOLE {
+                (HOLE.to_owned(), String::new(), HOLE.to_owned())
+            } else {
+                let (value, unit) = question::answer_value(&printed, q.pick)
+                    .map_err(|e| format!("{at}: answer {}: {e}", q.answer))?;
+                let within = question::tolerance(q, value);
+                (value.to_string(), unit, format!("{within:e}"))
+            };
+            let _ = write!(
+                out,
+                "<div class=\"raytree-question\" data-answer=\"{value}\" data-within=\"{within}\" data-unit=\"{unit}\">\n\n\
+                 **Question {}.** {ask}\n\n\
+                 <p class=\"raytree-tolerance\">Checked {}.</p>\n\n\
+                 <details class=\"raytree-hint\">\n<summary>Hint</summary>\n\n{hint}\n\n</details>\n\n\
+                 <details class=\"raytree-worked\">\n<summary>Answer (computed by raytree)</summary>\n\n{worked}\n\n</details>\n\n\
+                 </div>\n\n",
+                k + 1,
+                question::tolerance_reason(q),
+            );
+        }
+        Ok(out)
+    }
+}
+
+/// A question's texts quote its answer as `{{name}}`, never as the value
+/// typed: a typed value would go stale when the code changes.
+fn typed_by_hand(q: &Question, printed: &str) -> Result<(), String> {
+    let Ok((value, _)) = question::answer_value(printed, q.pick) else {
+        return Ok(());
+    };
+    let shown = raytree::views::numbers::num(value);
+    // Short values (2, 0.5) are too common in prose to mean the answer.
+    if shown.len() < 4 {
+        return Ok(());
+    }
+    for (field, text) in [("ask", &q.ask), ("hint", &q.hint), ("worked", &q.worked)] {
+        let mut rest = text.as_str();
+        while let Some(i) = rest.find(&shown) {
+            let before = rest[..i].chars().next_back();
+            let after = rest[i + shown.len()..].chars().next();
+            let digit = |c: Option<char>| c.is_some_and(|c| c.is_ascii_digit() || c == '.');
+            if !digit(before) && !digit(after) {
+                return Err(format!(
+                    "{field} types the answer {shown} by hand; quote it as {{{{{}}}}}",
+                    q.answer
+                ));
+            }
+            rest = &rest[i + shown.len()..];
+        }
+    }
+    Ok(())
+}

@@ -1,0 +1,249 @@
+//! The built book in a real browser: mdBook builds it into a scratch folder
+//! and headless Chromium (its own profile, in the scratch folder) opens every
+//! page. Each page must load without a console message; each chapter's
+//! player, stepped to its last stop by its Next button and back by the arrow
+//! key, must at every stop show exactly the rays the trace has spawned by
+//! that stop's step; each checked question must say wrong to a wrong answer
+//! and right to raytree's value; no page may scroll sideways at 1280 pixels.
+//! The page reports what it shows through `player.js`'s `?selftest` probe,
+//! which presses the real controls; what it should show comes from the
+//! trace, here.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use raytree::course::lesson;
+use raytree::tree::steps::StepKind;
+use serde_json::Value;
+
+use super::book::run;
+use crate::tools::{Need, available};
+
+/// The page's width in the browser, as the issue's readers used it.
+const WIDTH: u32 = 1280;
+
+#[test]
+fn the_books_players_and_questions_work_in_a_real_browser() {
+    if !available(
+        "",
+        &[Need::MdBook, Need::Chromium],
+        "the book is built with mdBook and read in headless Chromium",
+    ) {
+        return;
+    }
+    let scratch = tempfile::tempdir().unwrap();
+    let built = scratch.path().join("book");
+    let out = Command::new("mdbook")
+        .args(["build", "book", "-d"])
+        .arg(&built)
+        .current_dir(run::root())
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "mdbook build: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let mut failures = Vec::new();
+    let entries = lesson::list(&run::root().join("lessons")).unwrap();
+    for e in &entries {
+        let page = built.join(format!("lessons/{}.html", e.name));
+        let (report, console) = open(&page, scratch.path());
+        let loaded = lesson::load(&run::root().join("lessons"), e.number).unwrap();
+        let walk = lesson::step_through(&loaded).unwrap();
+        failures.extend(
+            console
+                .into_iter()
+                .map(|c| format!("{}: console: {c}", e.name)),
+        );
+        failures.extend(check_player(&e.name, e.number, &report, &loaded, &walk));
+        failures.extend(check_questions(&e.name, &report, loaded_questions(e)));
+        failures.extend(check_width(&e.name, &report));
+    }
+    for other in [
+        "preface",
+        "spd",
+        "where-next",
+        "commands",
+        "scene-format",
+        "trace-format",
+    ] {
+        let (report, console) = open(&built.join(format!("{other}.html")), scratch.path());
+        failures.extend(
+            console
+                .into_iter()
+                .map(|c| format!("{other}: console: {c}")),
+        );
+        failures.extend(check_width(other, &report));
+    }
+    assert!(
+        failures.is_empty(),
+        "in the browser:\n{}",
+        failures.join("\n")
+    );
+}
+
+/// Opens `page` with `?selftest` and returns the probe's report and every
+/// console message the page logged.
+fn open(page: &Path, scratch: &Path) -> (Value, Vec<String>) {
+    let profile: PathBuf = scratch.join("chromium-profile");
+    let out = Command::new("chromium")
+        .args([
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--no-first-run",
+            "--enable-logging=stderr",
+            "--v=0",
+            &format!("--window-size={WIDTH},900"),
+            "--virtual-time-budget=15000",
+        ])
+        .arg(format!("--user-data-dir={}", profile.display()))
+        .arg("--dump-dom")
+        .arg(format!("file://{}?selftest", page.display()))
+        .output()
+        .unwrap();
+    let dom = String::from_utf8_lossy(&out.stdout);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let console = stderr
+        .lines()
+        .filter(|l| l.contains(":CONSOLE"))
+        .map(|l| l.split_once("] ").map_or(l, |(_, m)| m).to_owned())
+        .collect();
+    let start = "<pre id=\"raytree-selftest\">";
+    let report = dom
+        .split_once(start)
+        .and_then(|(_, rest)| rest.split_once("</pre>"))
+        .map(|(json, _)| json.replace("&quot;", "\"").replace("&amp;", "&"))
+        .unwrap_or_else(|| {
+            panic!(
+                "{}: no self-test report; the page's script did not run (stderr: {})",
+                page.display(),
+                stderr
+                    .lines()
+                    .filter(|l| !l.contains("dbus"))
+                    .collect::<Vec<_>>()
+                    .join(" | ")
+            )
+        });
+    (serde_json::from_str(&report).unwrap(), console)
+}
+
+/// The player went from the first stop to the last and back, and at every
+/// stop its diagram showed the rays spawned by the stop's step, no more, no
+/// fewer, and its tree listed as many.
+fn check_player(
+    name: &str,
+    number: u32,
+    report: &Value,
+    loaded: &lesson::Lesson,
+    walk: &lesson::StepThrough,
+) -> Vec<String> {
+    let players = report["players"].as_array().cloned().unwrap_or_default();
+    let [player] = players.as_slice() else {
+        return vec![format!(
+            "{name}: {} players on the page, not one",
+            players.len()
+        )];
+    };
+    let mut out = Vec::new();
+    if player["lesson"] != number {
+        out.push(format!(
+            "{name}: the player is lesson {}'s",
+            player["lesson"]
+        ));
+    }
+    let steps = walk.trace.steps(loaded.script.sample);
+    let tree = &walk.trace.samples[loaded.script.sample].tree;
+    let spawned_by = |step: usize| -> Vec<u64> {
+        steps[..step]
+            .iter()
+            .filter(|s| s.kind == StepKind::Spawn)
+            .map(|s| s.node as u64)
+            .collect()
+    };
+    let seen = player["seen"].as_array().unwrap();
+    let n = walk.stops.len();
+    // Forward through every stop, then back by the key to the first.
+    let order: Vec<usize> = (0..n).chain((0..n.saturating_sub(1)).rev()).collect();
+    if seen.len() != order.len() {
+        out.push(format!(
+            "{name}: the player showed {} states stepping {n} stops there and back, not {}",
+            seen.len(),
+            order.len()
+        ));
+    }
+    for (look, &stop) in seen.iter().zip(&order) {
+        let step = walk.stops[stop].step;
+        let mut want = spawned_by(step);
+        want.sort_unstable();
+        let shown: Vec<u64> = look["rays"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|r| r.as_u64().unwrap())
+            .collect();
+        if look["stop"] != stop || look["step"] != step {
+            out.push(format!(
+                "{name}: expected stop {} (step {step}), the player is at {look}",
+                stop + 1
+            ));
+        } else if shown != want {
+            out.push(format!(
+                "{name}: at stop {} (step {step}) the diagram shows rays {shown:?}, but the trace has spawned {want:?} by then",
+                stop + 1
+            ));
+        } else if look["tree"] != want.len() {
+            out.push(format!(
+                "{name}: at stop {} the tree lists {} rays, not {}",
+                stop + 1,
+                look["tree"],
+                want.len()
+            ));
+        }
+    }
+    if tree.nodes.is_empty() {
+        out.push(format!("{name}: the traced pixel has no rays"));
+    }
+    out
+}
+
+fn loaded_questions(e: &lesson::Entry) -> usize {
+    e.spec.questions.len()
+}
+
+/// Every question said wrong to a wrong answer and right to raytree's.
+fn check_questions(name: &str, report: &Value, count: usize) -> Vec<String> {
+    let asked = report["questions"].as_array().cloned().unwrap_or_default();
+    let mut out = Vec::new();
+    if asked.len() != count {
+        out.push(format!(
+            "{name}: {} question boxes work on the page, the spec has {count}",
+            asked.len()
+        ));
+    }
+    for (k, q) in asked.iter().enumerate() {
+        let (wrong, right) = (
+            q["wrong"].as_str().unwrap_or(""),
+            q["right"].as_str().unwrap_or(""),
+        );
+        if !wrong.contains("rq-wrong") || !right.contains("rq-right") {
+            out.push(format!(
+                "{name}: question {}: a wrong answer got '{wrong}', the right one '{right}'",
+                k + 1
+            ));
+        }
+    }
+    out
+}
+
+/// The page does not scroll sideways.
+fn check_width(name: &str, report: &Value) -> Vec<String> {
+    let (scroll, width) = (&report["scrollWidth"], &report["width"]);
+    match (scroll.as_u64(), width.as_u64()) {
+        (Some(s), Some(w)) if s <= w => Vec::new(),
+        _ => vec![format!(
+            "{name}: the page is {scroll} pixels wide in a {width}-pixel window: it scrolls sideways"
+        )],
+    }
+}
