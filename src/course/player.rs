@@ -8,6 +8,7 @@
 use serde::Serialize;
 
 use crate::course::lesson::{Lesson, StepThrough};
+use crate::methods::Accel;
 use crate::tree::ray_tree::RayKind;
 use crate::tree::steps::StepKind;
 use crate::views::diagram::draw;
@@ -77,6 +78,9 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         height: DIAGRAM_SIZE.1,
         sample,
         svg: true,
+        // The boxes or cells a structure's search visits appear step by step
+        // with the rays (lesson 12 walks a grid).
+        boxes: trace.structure != Accel::None,
         ..Options::default()
     };
     let figure = draw::draw(trace, &lesson.scene, &options).map_err(|e| {

@@ -130,6 +130,8 @@ pub fn answer_value(printed: &str, pick: Option<usize>) -> Result<(f64, String),
         (Some(k), n) if k <= n => values[k - 1],
         (Some(k), n) => return Err(format!("pick {k} but '{printed}' has {n} value(s)")),
     };
+    // Counts are printed with thousands separators (1,347,578).
+    let one = &one.replace(',', "");
     let end = one
         .char_indices()
         .find(|&(i, c)| {
@@ -169,6 +171,37 @@ pub fn tolerance_reason(q: &Question) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::course::lesson_spec;
+
+    fn spec(questions: &str) -> Result<lesson_spec::Spec, String> {
+        let text = format!(
+            "[run.p]\ncommand = \"raytree trace scenes/whitted.json --pixel 1,1\"\n[number]\nt = {{ run = \"p\", step = 7, value = \"t\" }}\n{questions}"
+        );
+        lesson_spec::parse(std::path::Path::new("l.toml"), &text)
+    }
+
+    #[test]
+    fn an_answer_names_a_number_and_a_tolerance_says_why() {
+        let ok =
+            spec("[[question]]\nask = \"a\"\nanswer = \"t\"\nhint = \"h\"\nworked = \"{{t}}\"\n")
+                .unwrap();
+        assert_eq!(ok.questions[0].answer, "t");
+        assert_eq!(ok.questions[0].line, 5);
+        let typed =
+            spec("[[question]]\nask = \"a\"\nanswer = \"5.014\"\nhint = \"h\"\nworked = \"w\"\n");
+        assert_eq!(
+            typed.unwrap_err(),
+            "l.toml: line 5: question: answer '5.014' is no [number]: an answer is a number raytree computes, never one typed"
+        );
+        let why = spec(
+            "[[question]]\nask = \"a\"\nanswer = \"t\"\nhint = \"h\"\nworked = \"w\"\nwithin = 0.1\n",
+        );
+        assert!(why.unwrap_err().contains("within needs its why"));
+        let zero = spec(
+            "[[question]]\nask = \"a\"\nanswer = \"t\"\nhint = \"h\"\nworked = \"w\"\npick = 0\n",
+        );
+        assert!(zero.unwrap_err().contains("pick counts from 1"));
+    }
 
     #[test]
     fn printed_values_give_their_number_and_unit() {
@@ -190,5 +223,10 @@ mod tests {
         );
         assert!(answer_value("5.014", Some(2)).is_err());
         assert!(answer_value("glass", None).is_err());
+        assert_eq!(
+            answer_value("1,347,578", None),
+            Ok((1_347_578.0, String::new()))
+        );
+        assert_eq!(answer_value("0.0189%", None), Ok((0.0189, "%".to_owned())));
     }
 }

@@ -19,16 +19,20 @@ pub struct BoxMark {
     pub met: bool,
     /// The ray (tree node) that tested it.
     pub node: usize,
+    /// Which of that ray's recorded boxes it is.
+    pub index: usize,
 }
 
 /// The recorded boxes of `node`, projected by `proj`.
 pub fn project(node: usize, boxes: &[BoxRecord], proj: &Projection) -> Vec<BoxMark> {
     boxes
         .iter()
-        .map(|b| BoxMark {
+        .enumerate()
+        .map(|(index, b)| BoxMark {
             outline: hull(&corners(b.min, b.max).map(|c| proj.point(c))),
             met: b.met,
             node,
+            index,
         })
         .collect()
 }

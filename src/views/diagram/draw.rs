@@ -85,7 +85,7 @@ pub fn draw_with_labels(
     fig.fit(lay.window.0, lay.window.1, 0.0);
     let reveal = Reveal::of(trace, options.sample);
     draw_objects(&mut fig, scene, &lay, &scale);
-    draw_boxes(&mut fig, &lay, &scale);
+    draw_boxes(&mut fig, &lay, &scale, &reveal);
     draw_eye_and_image_plane(&mut fig, &lay, &scale);
     for &p in &lay.lights {
         if fig.shows(p) {
@@ -155,17 +155,20 @@ fn caption(trace: &TraceDocument, lay: &Layout, options: &Options) -> String {
 /// The hierarchy's boxes the rays were tested against, under the rays: the
 /// ones a ray entered solid, the ones it missed (whole subtrees never opened)
 /// dotted and fainter.
-fn draw_boxes(fig: &mut Figure, lay: &Layout, scale: &Scale) {
+fn draw_boxes(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     for b in lay.boxes.iter().filter(|b| !b.met) {
+        fig.tag(&reveal.visit(b.node, b.index));
         fig.polygon(&b.outline, None, Some(scale.pen(MISSED_BOX)));
     }
     for b in lay.boxes.iter().filter(|b| b.met) {
+        fig.tag(&reveal.visit(b.node, b.index));
         fig.polygon(
             &b.outline,
             Some((palette::BOX, 18)),
             Some(scale.pen(MET_BOX)),
         );
     }
+    fig.tag("");
 }
 
 /// A box a ray entered.

@@ -18,6 +18,7 @@ pub struct Reveal {
     spawn: HashMap<usize, usize>,
     hit: HashMap<usize, usize>,
     shadow: HashMap<(usize, usize), usize>,
+    visit: HashMap<(usize, usize), usize>,
 }
 
 /// What a tagged part is, for the player's styles and the browser test.
@@ -31,6 +32,8 @@ pub enum Part {
     Hit,
     /// A label naming one of those.
     Label,
+    /// A box or cell of the scene's structure, from the step that visits it.
+    Box,
 }
 
 impl Reveal {
@@ -48,6 +51,9 @@ impl Reveal {
                 }
                 StepKind::Shadow(j) => {
                     r.shadow.entry((s.node, j)).or_insert(step);
+                }
+                StepKind::Visit(j) => {
+                    r.visit.entry((s.node, j)).or_insert(step);
                 }
                 _ => {}
             }
@@ -70,6 +76,11 @@ impl Reveal {
         tag(Part::Hit, node, self.hit.get(&node))
     }
 
+    /// The attributes of box `k` that `node`'s search visited.
+    pub fn visit(&self, node: usize, k: usize) -> String {
+        tag(Part::Box, node, self.visit.get(&(node, k)))
+    }
+
     /// The attributes of a label naming a part of `node` that appears with
     /// its hit (`at_hit`) or its spawn.
     pub fn label(&self, node: usize, at_hit: bool) -> String {
@@ -88,6 +99,7 @@ fn tag(part: Part, node: usize, step: Option<&usize>) -> String {
         Part::Shadow => "shadow",
         Part::Hit => "hit",
         Part::Label => "label",
+        Part::Box => "box",
     };
     // A part with no step of its own (a tree cut short) appears at the end.
     let step = step.map_or_else(|| "end".to_owned(), |s| s.to_string());

@@ -346,6 +346,10 @@ impl Page<'_> {
                 (spec.figures.len() >= 2, "at least two figures"),
                 (spec.exercises.len() >= 2, "at least two exercises"),
                 (
+                    spec.questions.len() >= 3,
+                    "at least three checked questions ([[question]])",
+                ),
+                (
                     self.used.contains("steps"),
                     "its step-through: {{steps}} in the text",
                 ),

@@ -36,7 +36,7 @@ impl Page<'_> {
                 let (value, unit) = question::answer_value(&printed, q.pick)
                     .map_err(|e| format!("{at}: answer {}: {e}", q.answer))?;
                 let within = question::tolerance(q, value);
-                (value.to_string(), unit, format!("{within:e}"))
+                (value.to_string(), unit, format!("{within:.3e}"))
             };
             let _ = write!(
                 out,
@@ -81,4 +81,36 @@ fn typed_by_hand(q: &Question, printed: &str) -> Result<(), String> {
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn question(worked: &str) -> Question {
+        Question {
+            ask: "At what t?".to_owned(),
+            answer: "glass_t".to_owned(),
+            pick: None,
+            hint: "The smaller root.".to_owned(),
+            worked: worked.to_owned(),
+            within: None,
+            line: 3,
+        }
+    }
+
+    #[test]
+    fn a_question_that_types_its_answer_is_refused() {
+        assert_eq!(
+            typed_by_hand(&question("t = {{glass_t}}."), "5.014"),
+            Ok(())
+        );
+        let typed = typed_by_hand(&question("t = 5.014, the first root."), "5.014");
+        assert_eq!(
+            typed,
+            Err("worked types the answer 5.014 by hand; quote it as {{glass_t}}".to_owned())
+        );
+        // Part of a longer number is not the answer.
+        assert_eq!(typed_by_hand(&question("t = 15.0145."), "5.014"), Ok(()));
+    }
 }
