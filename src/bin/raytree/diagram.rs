@@ -107,12 +107,6 @@ pub fn run(args: &Args) -> Result<()> {
             path.display()
         );
     }
-    if svg && matches!(args.view, ViewArg::Camera) {
-        bail!(
-            "cannot write {}: the camera view is drawn as PNG only",
-            path.display()
-        );
-    }
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let trace = args.target.record(&scene, source)?;
     let view = match args.view {

@@ -36,7 +36,11 @@ pub fn draw(trace: &TraceDocument, width: u32, height: u32) -> Result<Figure, St
     );
     let lines = Figure::wrap(&caption, size, width as f32 - 24.0);
     let top = (f64::from(size) * (1.3 * lines.len() as f64 + 0.9)) as i32 + 8;
-    let mut page = Figure::page(width, height).ok_or("the figure is too small")?;
+    // Always recorded as SVG too: the view is three panels pasted onto a
+    // page, and a page can hold its panels' vectors only if each has them.
+    let mut page = Figure::page(width, height)
+        .ok_or("the figure is too small")?
+        .with_svg();
     let (w2, h_rest) = (width / 2, height.saturating_sub(top as u32));
     let (h_plane, h_side) = (h_rest * 62 / 100, h_rest - h_rest * 62 / 100);
     let plane = plane_panel(cam, first, w2, h_plane, &scale)?;
@@ -52,6 +56,7 @@ pub fn draw(trace: &TraceDocument, width: u32, height: u32) -> Result<Figure, St
 fn panel(width: u32, height: u32, scale: &Scale) -> Result<Figure, String> {
     let m = (12.0 * scale.text / 15.0).max(6.0);
     Figure::new(width, height, m, m)
+        .map(Figure::with_svg)
         .ok_or_else(|| "the figure is too small for the camera view".to_owned())
 }
 

@@ -45,6 +45,10 @@ fn the_books_players_and_questions_work_in_a_real_browser() {
         String::from_utf8_lossy(&out.stderr)
     );
     let mut failures = Vec::new();
+    let size = folder_size(&built);
+    if size > 25 * 1024 * 1024 {
+        failures.push(format!("the built book is {size} bytes, over 25 MB"));
+    }
     let entries = lesson::list(&run::root().join("lessons")).unwrap();
     for e in &entries {
         let page = built.join(format!("lessons/{}.html", e.name));
@@ -246,4 +250,20 @@ fn check_width(name: &str, report: &Value) -> Vec<String> {
             "{name}: the page is {scroll} pixels wide in a {width}-pixel window: it scrolls sideways"
         )],
     }
+}
+
+/// Bytes in a folder and all below it.
+fn folder_size(dir: &Path) -> u64 {
+    std::fs::read_dir(dir)
+        .unwrap()
+        .map(|e| {
+            let e = e.unwrap();
+            let meta = e.metadata().unwrap();
+            if meta.is_dir() {
+                folder_size(&e.path())
+            } else {
+                meta.len()
+            }
+        })
+        .sum()
 }

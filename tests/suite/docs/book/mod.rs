@@ -225,3 +225,22 @@ fn a_folder_that_is_no_lesson_is_passed_over() {
         "{err}"
     );
 }
+
+/// A player is the page's heaviest part: each stays within 300 KB (the
+/// diagram's SVG is most of it), so a chapter opens quickly on a slow line.
+#[test]
+fn every_player_stays_within_300_kb() {
+    let entries = lesson::list(&run::root().join("lessons")).unwrap();
+    assert!(!entries.is_empty());
+    for e in &entries {
+        let path = run::root().join(format!("book/src/lessons/{}/player.js", e.name));
+        let size = std::fs::metadata(&path)
+            .unwrap_or_else(|err| panic!("{}: {err}", path.display()))
+            .len();
+        assert!(
+            size <= 300 * 1024,
+            "{}: {size} bytes, over 300 KB",
+            path.display()
+        );
+    }
+}
