@@ -279,7 +279,7 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     }
 }
 
-/// Blockers, lights behind surfaces, angle arcs and ticks.
+/// Blockers, lights behind surfaces, angle arcs, the other roots and ticks.
 fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     for &(_, _, on_ray, on_object) in &lay.near_misses {
         let pen = scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.2, &[3.0, 3.0]));
@@ -327,6 +327,15 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale) {
             a.from,
             a.to,
             scale.pen(Pen::solid(palette::INK, 1.2)),
+        );
+    }
+    for r in &m.roots {
+        fig.line(r.from, r.at, scale.pen(ray_pen(r.kind).passing()));
+        fig.dot(
+            r.at,
+            scale.px(3.5) as f32,
+            palette::PAPER,
+            Some(palette::INK),
         );
     }
     for t in &m.ticks {

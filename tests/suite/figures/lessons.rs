@@ -1,0 +1,130 @@
+//! Lesson figures that must show what their captions and text say (issue 26):
+//! each test reads the figure's own command from the lesson's spec, draws it
+//! as the book does, and checks the claim the caption makes.
+
+use std::path::Path;
+
+use glam::DVec3;
+use raytree::course::lesson_spec;
+use raytree::math::ray::Ray;
+use raytree::scene::source::SceneSource;
+use raytree::tree::document::TraceDocument;
+use raytree::views::diagram::arrange::layout;
+use raytree::views::diagram::options::{Fit, Options};
+use raytree::views::diagram::projection::View;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// A figure's command line (after `raytree`) and caption, from its lesson.
+fn figure(lesson: &str, name: &str) -> (Vec<String>, String) {
+    let spec = lesson_spec::load(&root().join("lessons").join(lesson).join("lesson.toml")).unwrap();
+    let f = &spec.figures[name];
+    (f.command.args.clone(), f.caption.clone())
+}
+
+fn value<'a>(args: &'a [String], flag: &str) -> Option<&'a str> {
+    let i = args.iter().position(|a| a == flag)?;
+    args.get(i + 1).map(String::as_str)
+}
+
+fn triple(s: &str) -> DVec3 {
+    let v: Vec<f64> = s.split(',').map(|x| x.parse().unwrap()).collect();
+    DVec3::new(v[0], v[1], v[2])
+}
+
+/// The trace a diagram command draws (its scene, and `--pixel` or `--ray`),
+/// with the diagram options the test needs from its flags.
+fn traced(args: &[String]) -> (raytree::scene::Scene, TraceDocument, Options) {
+    let path = &args[1];
+    let scene = raytree::scene::loader::load(&root().join(path)).unwrap();
+    let source = SceneSource::new(path, "");
+    let trace = if let Some(p) = value(args, "--pixel") {
+        let (x, y) = p.split_once(',').unwrap();
+        raytree::tree::record::pixel(&scene, source, x.parse().unwrap(), y.parse().unwrap(), None)
+            .unwrap()
+    } else {
+        let (s, c) = value(args, "--ray").unwrap().split_once(':').unwrap();
+        raytree::tree::record::ray(&scene, source, Ray::new(triple(s), triple(c))).unwrap()
+    };
+    let has = |f: &str| args.iter().any(|a| a == f);
+    let options = Options {
+        view: match value(args, "--view") {
+            Some("side") => View::Side,
+            Some("front") => View::Front,
+            _ => View::Auto,
+        },
+        fit: if value(args, "--fit") == Some("tree") {
+            Fit::Tree
+        } else {
+            Fit::Hits
+        },
+        depth: value(args, "--depth").map(|d| d.parse().unwrap()),
+        shadows: !has("--no-shadows"),
+        ticks: has("--ticks"),
+        roots: has("--roots"),
+        ..Options::default()
+    };
+    (scene, trace, options)
+}
+
+#[test]
+fn lesson_4_ticks_every_whole_t_as_its_caption_says() {
+    let (args, caption) = figure("04-rays", "glass");
+    assert!(
+        caption.contains("a tick at every whole step of t"),
+        "{caption}"
+    );
+    let (scene, trace, options) = traced(&args);
+    let lay = layout(&trace, &scene, &options).unwrap();
+    let ray = &trace.samples[0].tree.nodes[0];
+    let t_hit = ray.hit.as_ref().unwrap().t;
+    // Every whole t short of the hit, each where S + t·c projects (the same
+    // arithmetic as the figure's, so to rounding).
+    let whole: Vec<f64> = (1..).map(f64::from).take_while(|&t| t < t_hit).collect();
+    assert!(whole.len() >= 5, "the glass ball is past t = 5: {t_hit}");
+    let labels: Vec<&str> = lay.marks.ticks.iter().map(|t| t.label.as_str()).collect();
+    let want: Vec<String> = whole.iter().map(|t| format!("t = {t}")).collect();
+    assert_eq!(labels, want);
+    for (tick, t) in lay.marks.ticks.iter().zip(&whole) {
+        let at = lay.proj.point(ray.origin + t * ray.direction);
+        assert!(tick.at.abs_diff_eq(at, 1e-9), "t = {t}");
+    }
+}
+#[test]
+fn lesson_5_marks_the_exit_root_and_the_rejected_negative_root() {
+    for (name, t, words) in [("hit", 6.0, "not the first"), ("inside", -1.0, "rejected")] {
+        let (args, _) = figure("05-sphere", name);
+        assert!(args.iter().any(|a| a == "--roots"), "{name}: {args:?}");
+        let (scene, trace, options) = traced(&args);
+        let lay = layout(&trace, &scene, &options).unwrap();
+        let ray = &trace.samples[0].tree.nodes[0];
+        assert_eq!(lay.marks.roots.len(), 1, "{name}: {:?}", lay.marks.roots);
+        let mark = &lay.marks.roots[0];
+        assert!(
+            mark.label.starts_with(&format!("t = {t}:")) && mark.label.contains(words),
+            "{name}: {}",
+            mark.label
+        );
+        // The unit sphere's roots are whole numbers here: exact to rounding.
+        let at = lay.proj.point(ray.origin + t * ray.direction);
+        assert!(mark.at.abs_diff_eq(at, 1e-9), "{name}");
+        // The negative root lies behind the start, against the ray's direction.
+        let along = lay.proj.vector(ray.direction);
+        let start = lay.proj.point(ray.origin);
+        assert_eq!((mark.at - start).dot(along) < 0.0, t < 0.0, "{name}");
+    }
+}
+
+#[test]
+fn lesson_5_the_grazing_normal_points_up_out_of_the_sphere() {
+    let (args, caption) = figure("05-sphere", "graze");
+    assert!(caption.contains("pointing up"), "{caption}");
+    let (scene, trace, options) = traced(&args);
+    let lay = layout(&trace, &scene, &options).unwrap();
+    assert_eq!(lay.hits.len(), 1);
+    // The side view draws world y up; the outward normal at the top is +y.
+    let n = lay.hits[0].normal;
+    assert!(n.y > 0.999 && n.x.abs() < 1e-9, "{n}");
+}
