@@ -7,7 +7,10 @@ use std::path::Path;
 use glam::DVec3;
 use raytree::course::lesson_spec;
 use raytree::math::ray::Ray;
+use raytree::methods::Accel;
 use raytree::scene::source::SceneSource;
+use raytree::trace::aov::Aov;
+use raytree::trace::progress::Progress;
 use raytree::tree::document::TraceDocument;
 use raytree::views::diagram::arrange::layout;
 use raytree::views::diagram::options::{Fit, Options};
@@ -127,4 +130,25 @@ fn lesson_5_the_grazing_normal_points_up_out_of_the_sphere() {
     // The side view draws world y up; the outward normal at the top is +y.
     let n = lay.hits[0].normal;
     assert!(n.y > 0.999 && n.x.abs() < 1e-9, "{n}");
+}
+#[test]
+fn lesson_12_the_heat_maps_title_names_the_method_used() {
+    let path = root().join("scenes/spheres.json");
+    for (accel, says, not) in [
+        (Accel::None, "--accel none", "bvh"),
+        (Accel::Auto, "--accel auto: bvh", "none"),
+        (Accel::Bvh, "--accel bvh", "none"),
+    ] {
+        let mut scene = raytree::scene::loader::load(&path).unwrap();
+        scene.settings.accel = accel;
+        scene.settings.width = 8;
+        scene.settings.height = 6;
+        let map =
+            raytree::trace::aov_render::render_aov(&scene, Aov::Tests, &Progress::QUIET).unwrap();
+        assert!(
+            map.title.contains(says) && !map.title.contains(not),
+            "{accel:?}: {}",
+            map.title
+        );
+    }
 }
