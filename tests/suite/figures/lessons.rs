@@ -132,6 +132,43 @@ fn lesson_5_the_grazing_normal_points_up_out_of_the_sphere() {
     assert!(n.y > 0.999 && n.x.abs() < 1e-9, "{n}");
 }
 #[test]
+fn lesson_2_draws_the_lamp_mirror_floor_path_to_the_pixels_floor_point() {
+    let (args, caption) = figure("02-sources", "room");
+    assert!(caption.contains("lamp → mirror → floor"), "{caption}");
+    let (scene, trace, options) = traced(&args);
+    let nodes = &trace.samples[0].tree.nodes;
+    let lamp = scene.lights[0].position;
+    assert!(
+        nodes[0].origin.abs_diff_eq(lamp, 1e-12),
+        "the ray starts at the lamp"
+    );
+    let first = nodes[0].hit.as_ref().unwrap();
+    assert_eq!(first.name, "ceiling");
+    let down = nodes.iter().find(|n| n.depth == 2).unwrap();
+    let floor = down.hit.as_ref().unwrap();
+    assert_eq!(floor.name, "floor");
+    // The point pixel 160,225 sees: the direction is typed to four digits, so
+    // the two agree to a few thousandths over a path of length about 8.
+    let pixel_args = ["diagram", &args[1], "--pixel", "160,225"].map(str::to_owned);
+    let (_, pixel, _) = traced(&pixel_args);
+    let seen = pixel.samples[0].tree.nodes[0].hit.as_ref().unwrap().point;
+    assert!(
+        floor.point.abs_diff_eq(seen, 2e-3),
+        "{} vs {seen}",
+        floor.point
+    );
+    // There the shadow ray to the lamp is blocked by the wall, and the figure
+    // draws the reflected ray down and the blocker's ×.
+    assert!(matches!(
+        down.shadow_rays[0].outcome,
+        raytree::tree::ray_tree::ShadowOutcomeRecord::Blocked { object, .. }
+            if scene.objects[object].name == "wall"
+    ));
+    let lay = layout(&trace, &scene, &options).unwrap();
+    assert_eq!(lay.marks.blocked.len(), 1);
+    assert!(lay.segments.iter().any(|s| nodes[s.node].depth == 2));
+}
+#[test]
 fn lesson_12_the_heat_maps_title_names_the_method_used() {
     let path = root().join("scenes/spheres.json");
     for (accel, says, not) in [
