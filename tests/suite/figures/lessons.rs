@@ -4,8 +4,10 @@
 
 use std::path::Path;
 
-use glam::DVec3;
+use glam::{DVec2, DVec3};
 use raytree::course::lesson_spec;
+use raytree::figure::canvas::Figure;
+use raytree::figure::pen::palette;
 use raytree::math::ray::Ray;
 use raytree::methods::Accel;
 use raytree::scene::source::SceneSource;
@@ -95,6 +97,7 @@ fn lesson_4_ticks_every_whole_t_as_its_caption_says() {
         assert!(tick.at.abs_diff_eq(at, 1e-9), "t = {t}");
     }
 }
+
 #[test]
 fn lesson_5_marks_the_exit_root_and_the_rejected_negative_root() {
     for (name, t, words) in [("hit", 6.0, "not the first"), ("inside", -1.0, "rejected")] {
@@ -131,6 +134,7 @@ fn lesson_5_the_grazing_normal_points_up_out_of_the_sphere() {
     let n = lay.hits[0].normal;
     assert!(n.y > 0.999 && n.x.abs() < 1e-9, "{n}");
 }
+
 #[test]
 fn lesson_2_draws_the_lamp_mirror_floor_path_to_the_pixels_floor_point() {
     let (args, caption) = figure("02-sources", "room");
@@ -168,6 +172,7 @@ fn lesson_2_draws_the_lamp_mirror_floor_path_to_the_pixels_floor_point() {
     assert_eq!(lay.marks.blocked.len(), 1);
     assert!(lay.segments.iter().any(|s| nodes[s.node].depth == 2));
 }
+
 #[test]
 fn lesson_12_the_heat_maps_title_names_the_method_used() {
     let path = root().join("scenes/spheres.json");
@@ -188,4 +193,84 @@ fn lesson_12_the_heat_maps_title_names_the_method_used() {
             map.title
         );
     }
+}
+
+/// Whether some pixel within `r` of `p` is within `tol` of `want` in each
+/// channel (thin lines are antialiased, so never quite their pen's color).
+fn drawn_near(fig: &Figure, p: DVec2, r: i32, want: [u8; 3], tol: u8) -> bool {
+    let (w, h) = fig.size();
+    let rgb = fig.rgb();
+    (-r..=r)
+        .flat_map(|dy| (-r..=r).map(move |dx| (dx, dy)))
+        .any(|(dx, dy)| {
+            let (x, y) = (p.x as i32 + dx, p.y as i32 + dy);
+            if x < 0 || y < 0 || x >= w as i32 || y >= h as i32 {
+                return false;
+            }
+            let i = 3 * (y as usize * w as usize + x as usize);
+            (0..3).all(|k| rgb[i + k].abs_diff(want[k]) <= tol)
+        })
+}
+
+#[test]
+fn lesson_6_object_space_has_axes_reads_the_usual_way_and_shows_both_normals() {
+    let (args, _) = figure("06-transforms", "shoulder");
+    let (scene, trace, options) = traced(&args);
+    let drawn =
+        raytree::views::diagram::object_view::draw_marked(&trace, &scene, &options).unwrap();
+    // The ray lies in z' = 0: x' and y' are drawn, full length, as a front view.
+    let names: Vec<&str> = drawn.axes.iter().map(|a| a.0.as_str()).collect();
+    assert_eq!(names.len(), 2, "{names:?}");
+    assert!(names.contains(&"x'") && names.contains(&"y'"), "{names:?}");
+    let axis = |name: &str| {
+        let (_, from, to) = drawn.axes.iter().find(|a| a.0 == name).unwrap();
+        (*from, *to - *from)
+    };
+    let (center, x) = axis("x'");
+    let (_, y) = axis("y'");
+    // Pixels run right and down: +x' right, +y' up.
+    assert!(x.x > 0.0 && x.y.abs() < 1e-6 * x.x, "{x}");
+    assert!(y.y < 0.0 && y.x.abs() < 1e-6 * -y.y, "{y}");
+    // Past the sphere's outline (the tips are at 1.4 radii), on white paper,
+    // a thin dark line: its 1.2 pixels may straddle two rows at half
+    // strength each (about 137 of 255), hence the wide tolerance.
+    for (name, from, to) in &drawn.axes {
+        let p = *from + (*to - *from) * 0.85;
+        assert!(
+            drawn_near(&drawn.figure, p, 2, palette::INK, 125),
+            "{name} at {p}"
+        );
+    }
+    // P' = (0.708, 0.706, 0): up and to the right of the center.
+    let hit = trace.samples[0].tree.nodes[0].hit.as_ref().unwrap();
+    let p = hit.object_point.unwrap();
+    assert!(p.x > 0.5 && p.y > 0.5, "{p}");
+    assert!(drawn.hit.x > center.x && drawn.hit.y < center.y);
+    // Both normals: N = (M⁻¹)ᵀn' and the point rule's M·n', apart by the
+    // angle the trace reports, each drawn in its color past the hit's dot.
+    let [right, wrong] = drawn.normals.unwrap();
+    let angle = (right.1 - right.0)
+        .angle_to(wrong.1 - wrong.0)
+        .abs()
+        .to_degrees();
+    let off = raytree::views::explain::normal_like_point_error(hit).unwrap();
+    assert!(
+        (angle - off).abs() < 0.5,
+        "drawn {angle}° apart, the trace says {off}°"
+    );
+    let along = |(a, b): (DVec2, DVec2)| a + (b - a) * 0.6;
+    assert!(drawn_near(
+        &drawn.figure,
+        along(right),
+        2,
+        palette::NORMAL,
+        40
+    ));
+    assert!(drawn_near(
+        &drawn.figure,
+        along(wrong),
+        2,
+        palette::SHADOW_BLOCKED,
+        40
+    ));
 }
