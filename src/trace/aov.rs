@@ -320,7 +320,7 @@ impl Aov {
             }
             Aov::T => "t·|c| along the primary ray S + t·c (t = 1 on the image plane)",
             Aov::Tests => {
-                "what the efficiency slide counts: the object tests, plus the steps of the structure (--accel) when one is built"
+                "what the efficiency slide counts: the object tests, plus the structure's steps (box tests, cells) when the title names one"
             }
             _ => "",
         }

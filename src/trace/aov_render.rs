@@ -13,6 +13,7 @@
 
 use glam::DVec3;
 
+use crate::methods::Accel;
 use crate::scene::Scene;
 use crate::trace::aov::{Aov, AovImage, MAX_COMBINED_LIGHTS, Value};
 use crate::trace::pixel_record::{SampleRecord, record_pixel};
@@ -57,15 +58,7 @@ pub fn render_aov(
         name: aov.name(scene),
         title: match aov {
             // What the counts count depends on the structure built.
-            Aov::Tests => match tracer.accelerator().kind() {
-                crate::methods::Accel::None => {
-                    "intersection tests per pixel (objects: no structure)".to_owned()
-                }
-                kind => format!(
-                    "intersection tests per pixel ({} + objects)",
-                    kind.step_word(true)
-                ),
-            },
+            Aov::Tests => tests_title(scene.settings.accel, tracer.accelerator().kind()),
             _ => aov.title(scene),
         },
         key: aov.key(scene),
@@ -75,6 +68,25 @@ pub fn render_aov(
         height,
         values,
     })
+}
+
+/// The tests map's title, naming the method the counts come from: the
+/// structure actually built (`auto` resolved), so a map made without a
+/// hierarchy can never read as one made with it.
+pub fn tests_title(requested: Accel, built: Accel) -> String {
+    let how = if requested == Accel::Auto {
+        format!("--accel auto: {}", built.name())
+    } else {
+        format!("--accel {}", built.name())
+    };
+    // Short enough for the title line of a narrow map.
+    let what = match built {
+        Accel::None | Accel::Auto => "every object",
+        Accel::Bvh => "box tests + objects",
+        Accel::Grid => "cells + objects",
+        Accel::Octree | Accel::Bsp => "nodes + objects",
+    };
+    format!("intersection tests per pixel ({how}; {what})")
 }
 
 /// One pixel's value from its samples (see the module's documentation), `at`
@@ -169,5 +181,37 @@ fn count(rays: &RayCounter, kind: Option<RayKind>) -> u64 {
         Some(RayKind::Reflected) => rays.reflected,
         Some(RayKind::Refracted) => rays.refracted,
         Some(RayKind::Shadow) => rays.shadow,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_tests_title_names_the_structure_built() {
+        let none = tests_title(Accel::None, Accel::None);
+        assert!(
+            none.contains("--accel none") && !none.contains("bvh"),
+            "{none}"
+        );
+        let bvh = tests_title(Accel::Bvh, Accel::Bvh);
+        assert!(bvh.contains("--accel bvh; box tests"), "{bvh}");
+        let auto = tests_title(Accel::Auto, Accel::Bvh);
+        assert!(auto.contains("--accel auto: bvh"), "{auto}");
+        let grid = tests_title(Accel::Grid, Accel::Grid);
+        assert!(grid.contains("--accel grid; cells + objects"), "{grid}");
+        // The longest must fit a 640-pixel figure's title line, which cuts
+        // "tests: " and the title at about 78 characters.
+        for kind in [
+            Accel::None,
+            Accel::Bvh,
+            Accel::Grid,
+            Accel::Octree,
+            Accel::Bsp,
+        ] {
+            let t = tests_title(Accel::Auto, kind);
+            assert!(t.chars().count() <= 70, "{t}");
+        }
     }
 }

@@ -44,9 +44,12 @@ pub struct Args {
     /// Which labels to write.
     #[arg(long, value_enum, default_value = "all")]
     labels: Labels,
-    /// Tick marks at round steps of t along each ray that hits (1, 2 or 5 times a power of ten, about five to the hit, on the parametric line S + t·c), and t = 1 on a primary ray's image plane (most of a primary ray lies outside the frame of --fit hits: add --fit tree).
+    /// Tick marks along each ray that hits, on the parametric line S + t·c: at every whole t when the hit is at 1 < t ≤ 10, otherwise about five at a round step (1, 2 or 5 times a power of ten), with t = 1 on a primary ray's image plane (most of a primary ray lies outside the frame of --fit hits: add --fit tree).
     #[arg(long)]
     ticks: bool,
+    /// Mark the other roots of the hit object's equation on each ray's line: a root past the hit (where the line leaves a sphere), and a root behind the ray's start, with what became of each (the trace's "ignored" roots).
+    #[arg(long)]
+    roots: bool,
     /// Number the rays and hits as `raytree trace --steps` numbers their steps.
     #[arg(long)]
     steps: bool,
@@ -127,6 +130,7 @@ pub fn run(args: &Args) -> Result<()> {
         fit: args.fit,
         window: args.window,
         ticks: args.ticks,
+        roots: args.roots,
         steps: args.steps,
         until_step: None,
         boxes: args.boxes,

@@ -289,7 +289,7 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     fig.tag("");
 }
 
-/// Blockers, lights behind surfaces, angle arcs and ticks.
+/// Blockers, lights behind surfaces, angle arcs, the other roots and ticks.
 fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     for &(_, _, on_ray, on_object) in &lay.near_misses {
         let pen = scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.2, &[3.0, 3.0]));
@@ -340,6 +340,16 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
             a.from,
             a.to,
             scale.pen(Pen::solid(palette::INK, 1.2)),
+        );
+    }
+    for r in &m.roots {
+        fig.tag(&reveal.hit(r.node));
+        fig.line(r.from, r.at, scale.pen(ray_pen(r.kind).passing()));
+        fig.dot(
+            r.at,
+            scale.px(3.5) as f32,
+            palette::PAPER,
+            Some(palette::INK),
         );
     }
     for t in &m.ticks {

@@ -138,6 +138,13 @@ pub(super) fn label_requests(
             ..text(t.label.clone(), palette::INK, point(t.at, 5.0))
         });
     }
+    for r in &lay.marks.roots {
+        out.push(Label {
+            size: size - 3.0,
+            tag: reveal.label(r.node, true),
+            ..text(r.label.clone(), palette::INK, point(r.at, 5.0))
+        });
+    }
     for s in &lay.marks.steps {
         out.push(Label {
             size: size - 3.0,

@@ -10,6 +10,7 @@ use glam::{DVec2, DVec3};
 
 use crate::geometry::object::Object;
 use crate::math::angle::angle_between;
+use crate::tree::arithmetic::Fate;
 use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::options::{Labels, Options};
@@ -31,6 +32,8 @@ pub struct Marks {
     pub tir: Vec<Tir>,
     /// Ticks of `t` along rays.
     pub ticks: Vec<Tick>,
+    /// The hit object's other roots on a ray's line.
+    pub roots: Vec<RootMark>,
     /// Step numbers.
     pub steps: Vec<StepNumber>,
 }
@@ -115,6 +118,23 @@ pub struct Tick {
     /// `t = 2`.
     pub label: String,
     /// The ray it is on.
+    pub node: usize,
+}
+
+/// A root of the hit object's equation that is not the hit: where the line
+/// leaves the object past the hit, or a crossing behind the ray's start.
+#[derive(Clone, Debug, PartialEq)]
+pub struct RootMark {
+    /// The root's point on the line.
+    pub at: DVec2,
+    /// Where the drawn ray stops short of it (the hit, or the start): the
+    /// line is drawn on from there, dotted.
+    pub from: DVec2,
+    /// The ray's kind, for its pen.
+    pub kind: RayKind,
+    /// `t = −1: behind S, rejected`.
+    pub label: String,
+    /// The ray whose line it is on.
     pub node: usize,
 }
 
@@ -245,6 +265,9 @@ pub fn marks(
     if options.ticks {
         m.ticks = ticks(tree, proj, options, shown);
     }
+    if options.roots {
+        m.roots = other_roots(tree, proj, options, shown);
+    }
     if options.steps {
         m.steps = step_numbers(tree, steps, proj, options, shown);
     }
@@ -272,8 +295,10 @@ fn shadow_marks(node: &RayNode, i: usize, proj: &Projection, m: &mut Marks) {
     }
 }
 
-/// Ticks at whole steps of `t` along each ray: a step of 1, 2 or 5 times a
-/// power of ten that gives about five ticks to the ray's end.
+/// Ticks along each ray: at every whole `t` while the ray ends within
+/// [`WHOLE_TICKS`] (`1 < t ≤ 10`), so a learner can count the lengths of `c`;
+/// otherwise ([`tick_step`]) about five ticks at a round step, with t = 1
+/// always ticked on a primary ray, where it crosses the image plane.
 fn ticks(
     tree: &RayTree,
     proj: &Projection,
@@ -288,7 +313,7 @@ fn ticks(
         {
             continue;
         }
-        let step = nice_step(h.t / 5.0);
+        let step = tick_step(h.t);
         let across = proj.vector(node.direction).normalize_or_zero().perp();
         let tick = |t: f64| Tick {
             at: proj.point(node.origin + t * node.direction),
@@ -296,9 +321,7 @@ fn ticks(
             label: format!("t = {}", num(t)),
             node: i,
         };
-        // A primary ray's t counts in lengths of c: t = 1 is the image plane,
-        // the one tick a learner needs on every primary ray.
-        let primary = node.kind == RayKind::Primary && h.t > 1.0;
+        let primary = node.kind == RayKind::Primary && h.t > 1.0 && step != 1.0;
         if primary {
             out.push(tick(1.0));
         }
@@ -315,7 +338,57 @@ fn ticks(
     out
 }
 
-fn nice_step(raw: f64) -> f64 {
+/// The roots of each drawn hit's object that the tracer passed over (not the
+/// surface a ray starts on, which lies at its start).
+fn other_roots(
+    tree: &RayTree,
+    proj: &Projection,
+    options: &Options,
+    shown: &Option<Vec<usize>>,
+) -> Vec<RootMark> {
+    let mut out = Vec::new();
+    for (i, node) in tree.nodes.iter().enumerate() {
+        let Some(h) = &node.hit else { continue };
+        if options.depth.is_some_and(|d| node.depth > d)
+            || shown.as_ref().is_some_and(|s| !s.contains(&i))
+        {
+            continue;
+        }
+        let Some(test) = node.tests.iter().find(|t| t.object == h.object) else {
+            continue;
+        };
+        for r in &test.roots {
+            let why = match r.fate {
+                Fate::Chosen => continue,
+                _ if r.at_start => continue,
+                Fate::Farther => "past the hit, not the first",
+                Fate::Behind => "behind S, rejected",
+                Fate::Beyond => "past the ray's end, rejected",
+            };
+            out.push(RootMark {
+                at: proj.point(node.origin + r.t * node.direction),
+                from: proj.point(if r.t > h.t { h.point } else { node.origin }),
+                kind: node.kind,
+                label: format!("t = {}: {why}", num(r.t)),
+                node: i,
+            });
+        }
+    }
+    out
+}
+
+/// Up to this `t`, a ray is ticked at every whole `t`.
+pub const WHOLE_TICKS: f64 = 10.0;
+
+/// The step between ticks on a ray that ends at `t_end`: 1 when
+/// `1 < t_end ≤ WHOLE_TICKS`, else the smallest 1, 2 or 5 times a power of ten
+/// that leaves at most five ticks (a longer ray's whole steps would crowd, a
+/// ray shorter than 1 has none).
+pub fn tick_step(t_end: f64) -> f64 {
+    if t_end > 1.0 && t_end <= WHOLE_TICKS {
+        return 1.0;
+    }
+    let raw = t_end / 5.0;
     let power = 10f64.powf(raw.log10().floor());
     [1.0, 2.0, 5.0, 10.0]
         .into_iter()
@@ -403,10 +476,15 @@ mod tests {
     use super::*;
 
     #[test]
-    fn tick_steps_are_round() {
-        assert_eq!(nice_step(0.9), 1.0);
-        assert_eq!(nice_step(1.3), 2.0);
-        assert_eq!(nice_step(0.03), 0.05);
-        assert_eq!(nice_step(4.0), 5.0);
+    fn tick_steps_are_whole_up_to_ten_then_round() {
+        // Every whole t from just past the image plane to t = 10.
+        assert_eq!(tick_step(1.5), 1.0);
+        assert_eq!(tick_step(5.014), 1.0);
+        assert_eq!(tick_step(10.0), 1.0);
+        // Beyond, or short of 1: about five ticks at a round step.
+        assert_eq!(tick_step(10.5), 5.0);
+        assert_eq!(tick_step(30.0), 10.0);
+        assert_eq!(tick_step(1.0), 0.2);
+        assert_eq!(tick_step(0.15), 0.05);
     }
 }

@@ -14,14 +14,42 @@ use crate::geometry::object::Shape;
 use crate::scene::Scene;
 use crate::tree::arithmetic::Fate;
 use crate::tree::document::TraceDocument;
+use crate::tree::ray_tree::HitRecord;
+use crate::views::diagram::arrange::layout;
 use crate::views::diagram::draw::draw_with_labels;
 use crate::views::diagram::options::Options;
 use crate::views::diagram::style::Scale;
 use crate::views::numbers::{num, vec3};
 
+/// Where the object view put what a reader checks it by, in page pixels.
+pub struct ObjectDrawn {
+    /// The figure.
+    pub figure: Figure,
+    /// The normal at the hit as the inverse transpose gives it, and as the
+    /// point rule would (`M·n'`), each from the hit to its arrow's tip: `None`
+    /// where the hit has no point-rule normal or lies off the world panel.
+    pub normals: Option<[(DVec2, DVec2); 2]>,
+    /// The object's axes drawn in its own space.
+    pub axes: Vec<Axis>,
+    /// Where `P' = S' + t_h·c'` is drawn.
+    pub hit: DVec2,
+}
+
+/// An object axis as drawn: its name (`x'`, …), the center and the tip.
+pub type Axis = (String, DVec2, DVec2);
+
 /// The world view of `trace` beside the first hit on a transformed sphere, in
 /// that sphere's own space.
 pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<Figure, String> {
+    draw_marked(trace, scene, options).map(|d| d.figure)
+}
+
+/// [`draw`], also returning where its marks went.
+pub fn draw_marked(
+    trace: &TraceDocument,
+    scene: &Scene,
+    options: &Options,
+) -> Result<ObjectDrawn, String> {
     let tree = &trace.samples[options.sample].tree;
     let found = tree.nodes.iter().find_map(|node| {
         let h = node.hit.as_ref()?;
@@ -52,8 +80,9 @@ pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<F
         height,
         ..*options
     };
-    let left = draw_with_labels(trace, scene, &world)?.figure;
-    let right = own_space(
+    let mut left = draw_with_labels(trace, scene, &world)?.figure;
+    let normals = point_rule_normal(&mut left, trace, scene, &world, hit)?;
+    let (right, axes, hit_px) = own_space(
         sphere.center,
         sphere.radius,
         (ray.origin, ray.direction),
@@ -71,7 +100,105 @@ pub fn draw(trace: &TraceDocument, scene: &Scene, options: &Options) -> Result<F
     page.paste(&left, 0, top);
     page.paste(&right, half as i32, top);
     page.caption_at(&lines, size, 12.0, f64::from(top) - f64::from(size) * 0.6);
-    Ok(page)
+    let on_left = |p: DVec2| p + DVec2::new(0.0, f64::from(top));
+    let on_right = |p: DVec2| p + DVec2::new(f64::from(half), f64::from(top));
+    Ok(ObjectDrawn {
+        figure: page,
+        normals: normals.map(|n| n.map(|(a, b)| (on_left(a), on_left(b)))),
+        axes: axes
+            .into_iter()
+            .map(|(name, a, b)| (name, on_right(a), on_right(b)))
+            .collect(),
+        hit: on_right(hit_px),
+    })
+}
+
+/// The lesson's wrong normal beside the right one at the hit, in the world
+/// panel: the object normal carried like a point, by M (dashed), against the
+/// inverse transpose's N, which the diagram draws as it draws every normal.
+fn point_rule_normal(
+    fig: &mut Figure,
+    trace: &TraceDocument,
+    scene: &Scene,
+    world: &Options,
+    hit: &HitRecord,
+) -> Result<Option<[(DVec2, DVec2); 2]>, String> {
+    let Some(wrong) = hit.normal_like_point else {
+        return Ok(None);
+    };
+    // The drawn normal faces the ray; the wrong one is turned the same way.
+    let wrong = if hit.shading_normal.dot(hit.normal) < 0.0 {
+        -wrong
+    } else {
+        wrong
+    };
+    let proj = layout(trace, scene, world)?.proj;
+    let scale = Scale::of(world.width, world.height);
+    let at = proj.point(hit.point);
+    if !fig.shows(at) {
+        return Ok(None);
+    }
+    // As long as the diagram's normal arrows (draw.rs), so the two compare.
+    let length = scale.px(45.0) / fig.scale();
+    let tip = at + proj.vector(wrong) * length;
+    let right_tip = at + proj.vector(hit.shading_normal) * length;
+    fig.arrow(
+        at,
+        tip,
+        scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.6, &[4.0, 3.0])),
+    );
+    // Each label beside its tip, on the outer side of the pair, so neither
+    // crosses the other's arrow; kept inside the panel.
+    let size = scale.text;
+    let (width, _) = fig.size();
+    let mut pair = [
+        (right_tip, "N = (M⁻¹)ᵀn'", palette::NORMAL),
+        (tip, "M·n': the point rule, wrong", palette::SHADOW_BLOCKED),
+    ];
+    pair.sort_by(|a, b| a.0.x.total_cmp(&b.0.x));
+    for (k, (end, text, color)) in pair.into_iter().enumerate() {
+        let w = f64::from(Figure::text_width(text, size));
+        let gap = f64::from(size) * 0.5;
+        let px = fig.to_px(end) - DVec2::new(0.0, f64::from(size) * 0.6);
+        let beside = if k == 0 { px.x - gap - w } else { px.x + gap };
+        let room = 6.0..=f64::from(width) - w - 6.0;
+        // No room beside the tip: above it (the first) or below it (the second).
+        let at = if room.contains(&beside) {
+            DVec2::new(beside, px.y)
+        } else {
+            let up = if k == 0 { -1.6 } else { 1.8 };
+            DVec2::new(
+                (px.x - w / 2.0).clamp(*room.start(), room.end().max(*room.start())),
+                px.y + up * f64::from(size),
+            )
+        };
+        fig.text_px(at, text, size, color, Anchor::Left, false);
+    }
+    let px = |p: DVec2| fig.to_px(p);
+    Ok(Some([(px(at), px(right_tip)), (px(at), px(tip))]))
+}
+
+/// The drawing plane of the object-space panel: the plane through the center
+/// that holds the ray (`c'` and `rel = S' − center`), as in-plane axes `e1`
+/// (right), `e2` (up) and its normal. It is seen from the side of +z' (else
+/// +y', else +x') and turned so x' runs to the right (else y' up), so a ray in
+/// the plane z' = 0 reads as a front view: +x' right, +y' up.
+pub fn object_axes_plane(c: DVec3, rel: DVec3) -> (DVec3, DVec3, DVec3) {
+    let n = c
+        .cross(rel)
+        .try_normalize()
+        .or_else(|| c.cross(DVec3::Z).try_normalize())
+        .or_else(|| c.cross(DVec3::Y).try_normalize())
+        .unwrap_or(DVec3::Z);
+    let side = [n.z, n.y, n.x]
+        .into_iter()
+        .find(|v| v.abs() > 1e-9)
+        .unwrap_or(1.0);
+    let n = n * side.signum();
+    let e1 = (DVec3::X - DVec3::X.dot(n) * n)
+        .try_normalize()
+        .unwrap_or_else(|| DVec3::Y.cross(n).normalize());
+    (e1, n.cross(e1), n)
 }
 
 /// The sphere's own space, in the plane of its center and the ray.
@@ -86,19 +213,14 @@ fn own_space(
     height: u32,
     scale: &Scale,
     svg: bool,
-) -> Result<Figure, String> {
+) -> Result<(Figure, Vec<Axis>, DVec2), String> {
     let m = (12.0 * scale.text / 15.0).max(6.0);
     let mut fig =
         Figure::new(width, height, m + scale.text * 1.6, m).ok_or("the figure is too small")?;
     if svg {
         fig = fig.with_svg();
     }
-    // The plane through the center holding the ray: e1 along c', e2 toward S'.
-    let e1 = c.normalize();
-    let rel = s - center;
-    let e2 = (rel - rel.dot(e1) * e1)
-        .try_normalize()
-        .unwrap_or_else(|| e1.any_orthonormal_vector());
+    let (e1, e2, normal) = object_axes_plane(c, s - center);
     let at = |p: DVec3| DVec2::new((p - center).dot(e1), (p - center).dot(e2));
     let far_root = test.roots.iter().map(|r| r.t).fold(t_h, f64::max);
     // Framed on the sphere; S' joins the frame only when it is near.
@@ -130,6 +252,32 @@ fn own_space(
         Some(([244, 226, 190], 255)),
         Some(Pen::solid(palette::OBJECT, 1.6).scaled(scale.k as f32)),
     );
+    // The object's own axes from its center, as they fall on the drawing plane.
+    let axis_pen = Pen::solid(palette::INK, 1.2).scaled(scale.k as f32);
+    let mut axes: Vec<(DVec2, String)> = Vec::new();
+    let mut onto: Vec<(DVec3, &str, DVec2)> =
+        [(DVec3::X, "x'"), (DVec3::Y, "y'"), (DVec3::Z, "z'")]
+            .into_iter()
+            .map(|(axis, name)| (axis, name, DVec2::new(axis.dot(e1), axis.dot(e2))))
+            .collect();
+    onto.sort_by(|a, b| b.2.length().total_cmp(&a.2.length()));
+    for (axis, name, v) in onto {
+        // An axis nearly on end, or drawn over a longer one, would only confuse.
+        let along_drawn = axes
+            .iter()
+            .any(|(tip, _)| tip.normalize().dot(v.normalize()) > 0.98);
+        if v.length() < 0.3 || along_drawn {
+            continue;
+        }
+        let tip = v * 1.4 * radius;
+        fig.arrow(DVec2::ZERO, tip, axis_pen);
+        // Within 1e-3 of the plane, the drawn length is true to 1e-6.
+        let exact = axis.dot(normal).abs() < 1e-3;
+        axes.push((
+            tip,
+            format!("{name}{}", if exact { "" } else { " (foreshortened)" }),
+        ));
+    }
     let pen = Pen::solid(palette::PRIMARY, 2.5).scaled(scale.k as f32);
     let hit = at(s + t_h * c);
     fig.arrow(start, hit, pen);
@@ -170,6 +318,9 @@ fn own_space(
             false,
         ),
     ];
+    for (tip, name) in &axes {
+        labels.push(label(name.clone(), point(&fig, *tip, 3.0), false));
+    }
     let mut dots = vec![PxRect::around(fig.to_px(hit), 6.0 * k)];
     if near_s {
         dots.push(PxRect::around(fig.to_px(start), 6.0 * k));
@@ -200,6 +351,10 @@ fn own_space(
         fig.to_px(DVec2::new(a.cos(), a.sin()) * radius)
     };
     lines.extend((0..48).map(|k| ([rim(k), rim(k + 1)], 2)));
+    lines.extend(
+        axes.iter()
+            .map(|(tip, _)| ([fig.to_px(DVec2::ZERO), fig.to_px(*tip)], 2)),
+    );
     for p in labels::place_weighted(labels, &dots, &lines, frame) {
         p.draw(&mut fig, 1.0);
     }
@@ -216,5 +371,10 @@ fn own_space(
         false,
     );
     fig.frame_border();
-    Ok(fig)
+    let axes = axes
+        .into_iter()
+        .map(|(tip, name)| (name, fig.to_px(DVec2::ZERO), fig.to_px(tip)))
+        .collect();
+    let hit = fig.to_px(hit);
+    Ok((fig, axes, hit))
 }

@@ -53,6 +53,8 @@ pub struct Options {
     pub window: Option<(DVec2, DVec2)>,
     /// Tick marks along the rays at whole steps of `t`.
     pub ticks: bool,
+    /// The hit object's other roots on each ray's line, with their fates.
+    pub roots: bool,
     /// Step numbers, as `raytree trace --steps` numbers them.
     pub steps: bool,
     /// Show the algorithm only up to this step (0-based), as a step-through does.
@@ -77,6 +79,7 @@ impl Default for Options {
             fit: Fit::default(),
             window: None,
             ticks: false,
+            roots: false,
             steps: false,
             until_step: None,
             boxes: false,

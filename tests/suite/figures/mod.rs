@@ -4,4 +4,5 @@
 mod aov;
 mod boxes;
 mod diagram;
+mod lessons;
 mod svg;
