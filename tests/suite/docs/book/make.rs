@@ -40,6 +40,11 @@ pub enum Content {
 /// The folders the book's generation owns: every file in them is made by it.
 pub const OWNED: &[&str] = &["book/src/lessons", "book/src/figures"];
 
+/// The widest line (in characters) of the book's code blocks: wider, a trace
+/// line runs off a phone's screen or a printed page. Longer lines are wrapped
+/// with a hanging indent, as the inspector wraps them.
+pub const CODE_WIDTH: usize = 90;
+
 /// Book pages: `book/pages/NAME.md` and `NAME.toml`, made into `book/src/NAME.md`.
 const PAGES: &[(&str, &str)] = &[("preface", "Preface: reading a trace and a diagram")];
 
@@ -154,11 +159,11 @@ fn chapter(
     }
     files.push(File {
         path: format!("{out}.md"),
-        content: Content::Text(format!(
+        content: Content::Text(fit_code_blocks(&format!(
             "{}{heading}{}",
             generated_from(&origin),
             made.text.trim_start()
-        )),
+        ))),
         origin,
         numbers: made.numbers,
         blocks: made.blocks,
@@ -192,14 +197,37 @@ fn commands() -> Result<String, String> {
             help(&[name, "--help"])?
         );
     }
-    Ok(out)
+    Ok(fit_code_blocks(&out))
 }
 
 /// The scene format, from the file that documents it beside the scenes.
 fn scene_format() -> Result<String, String> {
     let readme = std::fs::read_to_string(run::root().join("scenes/README.md"))
         .map_err(|e| format!("scenes/README.md: {e}"))?;
-    Ok(format!("{}{readme}", generated_from("`scenes/README.md`")))
+    Ok(fit_code_blocks(&format!(
+        "{}{readme}",
+        generated_from("`scenes/README.md`")
+    )))
+}
+
+/// `markdown` with every line of its fenced code blocks wrapped at
+/// [`CODE_WIDTH`] (`raytree::views::wrap`, the inspector's wrapping), so the
+/// blocks a lesson's text or a readme writes fit as the excerpts do.
+fn fit_code_blocks(markdown: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for line in markdown.split_inclusive('\n') {
+        let fence = ["```", "~~~"]
+            .iter()
+            .any(|f| line.trim_start().starts_with(f));
+        if inside && !fence {
+            out.push_str(&raytree::views::wrap::text(line, CODE_WIDTH));
+        } else {
+            out.push_str(line);
+        }
+        inside ^= fence;
+    }
+    out
 }
 
 /// The table of contents: the preface, the lessons that exist, where next,

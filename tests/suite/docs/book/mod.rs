@@ -10,6 +10,7 @@
 //! ([`crate::tools`]).
 
 mod check;
+mod code_width;
 mod links;
 mod make;
 mod page;
