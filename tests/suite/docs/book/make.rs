@@ -6,6 +6,7 @@
 use std::fmt::Write;
 use std::path::Path;
 
+use raytree::course::lesson_frame::{self, Frame};
 use raytree::course::{lesson, lesson_spec};
 
 use super::page::{self, Input, Quoted};
@@ -86,7 +87,12 @@ pub fn book() -> Result<Vec<File>, String> {
             figures: &format!("{}/", entry.name),
             lesson: Some((entry.number, &walk)),
         };
-        let heading = format!("# Lesson {}: {}\n\n", entry.number, entry.title());
+        let heading = format!(
+            "# Lesson {}: {}\n\n{}",
+            entry.number,
+            entry.title(),
+            frame(&entry.spec.frame)
+        );
         chapter(
             &input,
             &format!("book/src/lessons/{}", entry.name),
@@ -129,6 +135,26 @@ pub fn book() -> Result<Vec<File>, String> {
         "the lessons and pages",
     ));
     Ok(files)
+}
+
+/// A lesson's frame under its heading: the note that it goes beyond the
+/// lecture, what a learner can do after it, and how long it takes.
+fn frame(frame: &Frame) -> String {
+    let mut out = String::new();
+    if frame.beyond_lecture {
+        let _ = write!(out, "> {}\n\n", lesson_frame::BEYOND_LECTURE);
+    }
+    if !frame.objectives.is_empty() {
+        out.push_str("**After this lesson you can**\n\n");
+        for o in &frame.objectives {
+            let _ = writeln!(out, "- {o}");
+        }
+        out.push('\n');
+    }
+    if let Some(m) = frame.minutes {
+        let _ = write!(out, "*{}*\n\n", m.sentence());
+    }
+    out
 }
 
 /// A chapter `out.md` with its figures; `book/src/NAME` puts figures in
