@@ -120,11 +120,11 @@ impl Guided {
         Some(match self.told.get(self.at)? {
             Ok(n) => n.text.clone(),
             Err(Untold::PastEnd { steps }) => format!(
-                "after the what-if the pixel has {steps} steps, so this stop's step {step} is gone \
+                "after the what-if, the pixel has {steps} steps, so this stop's step {step} is gone \
                  and it has nothing to tell (u undoes the edits)"
             ),
             Err(Untold::NoNumber { name, .. }) => format!(
-                "after the what-if step {step} has no {{{name}}} to quote, so this stop cannot be \
+                "after the what-if, step {step} has no {{{name}}} to quote, so this stop cannot be \
                  told of the changed trace (u undoes the edits)"
             ),
         })
