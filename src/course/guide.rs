@@ -179,35 +179,65 @@ pub fn narrate(script: &Script, trace: &TraceDocument) -> Result<Vec<Narration>,
             trace.samples.len()
         ));
     }
-    let count = trace.steps(script.sample).len();
-    script
-        .stops
-        .iter()
-        .enumerate()
-        .map(|(i, stop)| {
-            if stop.step > count {
-                return Err(format!(
-                    "{at}: stop {}: step {} is past the pixel's {count} steps",
+    (0..script.stops.len())
+        .map(|i| {
+            let stop = &script.stops[i];
+            tell(script, trace, i).map_err(|untold| match untold {
+                Untold::PastEnd { steps } => format!(
+                    "{at}: stop {}: step {} is past the pixel's {steps} steps",
                     i + 1,
                     stop.step
-                ));
-            }
-            let names = values(trace, script.sample, stop.step - 1);
-            let text = fill(&stop.say, &names).map_err(|name| {
-                let have: Vec<&str> = names.keys().map(String::as_str).collect();
-                format!(
+                ),
+                Untold::NoNumber { name, have } => format!(
                     "{at}: stop {} (step {}): no number {{{name}}} here; this step has {}",
                     i + 1,
                     stop.step,
                     have.join(", ")
-                )
-            })?;
-            Ok(Narration {
-                step: stop.step - 1,
-                text,
+                ),
             })
         })
         .collect()
+}
+
+/// Why a stop cannot be told against a trace: after a what-if in the
+/// inspector, the trace may no longer be the one the teacher wrote it for.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Untold {
+    /// The stop's step is past the last of the pixel's `steps`.
+    PastEnd {
+        /// How many steps the pixel has.
+        steps: usize,
+    },
+    /// The step has no number called `name`; it has `have`.
+    NoNumber {
+        /// The placeholder the sentence quotes.
+        name: String,
+        /// The names the step does have.
+        have: Vec<String>,
+    },
+}
+
+/// Stop `i` of `script` told against `trace`, on its own, so one stop that
+/// no longer fits a changed trace leaves the others told.
+pub fn tell(script: &Script, trace: &TraceDocument, i: usize) -> Result<Narration, Untold> {
+    let stop = &script.stops[i];
+    let steps = if script.sample < trace.samples.len() {
+        trace.steps(script.sample).len()
+    } else {
+        0
+    };
+    if stop.step > steps {
+        return Err(Untold::PastEnd { steps });
+    }
+    let names = values(trace, script.sample, stop.step - 1);
+    let text = fill(&stop.say, &names).map_err(|name| Untold::NoNumber {
+        name,
+        have: names.keys().cloned().collect(),
+    })?;
+    Ok(Narration {
+        step: stop.step - 1,
+        text,
+    })
 }
 
 /// Replaces `{name}` with its value (`{{` and `}}` stand for braces); the

@@ -9,6 +9,7 @@ use std::fmt::Write;
 use std::path::{Component, Path, PathBuf};
 
 use crate::course::guide::{self, Narration, Script};
+use crate::course::lesson_frame;
 use crate::course::lesson_spec::{self, Spec};
 use crate::scene::Scene;
 use crate::scene::source::{self, SceneSource};
@@ -97,6 +98,7 @@ pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
                 ));
             }
         }
+        need_frame(&spec_path, &spec)?;
         out.push(Entry {
             number,
             name,
@@ -114,7 +116,25 @@ pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
     Ok(out)
 }
 
-/// The list as `raytree lesson` prints it: number, title and summary, a line each.
+/// A lesson says what a learner can do after it and how long it takes
+/// (`crate::course::lesson_frame`); a book page need not.
+fn need_frame(spec_path: &Path, spec: &Spec) -> Result<(), String> {
+    let at = spec_path.display();
+    if spec.frame.objectives.is_empty() {
+        return Err(format!(
+            "{at}: a lesson needs objectives = [...]: 2 to 4 things a learner can do after it"
+        ));
+    }
+    if spec.frame.minutes.is_none() {
+        return Err(format!(
+            "{at}: a lesson needs minutes = {{ reading = R, exercises = E, build = B }}: how long it takes"
+        ));
+    }
+    Ok(())
+}
+
+/// The list as `raytree lesson` prints it: number, title, minutes and
+/// summary, a line each; a lesson beyond the lecture says it is optional.
 pub fn list_text(entries: &[Entry]) -> String {
     let width = entries
         .iter()
@@ -123,9 +143,15 @@ pub fn list_text(entries: &[Entry]) -> String {
         .unwrap_or(0);
     let mut out = String::new();
     for e in entries {
+        let minutes = e.spec.frame.minutes.map_or(0, |m| m.total());
+        let optional = if e.spec.frame.beyond_lecture {
+            "beyond the lecture, optional: "
+        } else {
+            ""
+        };
         let _ = writeln!(
             out,
-            "{:>3}  {:<width$}  {}",
+            "{:>3}  {:<width$}  {minutes:>3} min  {optional}{}",
             e.number,
             e.title(),
             e.summary()
@@ -247,6 +273,8 @@ pub fn step_through_text(lesson: &Lesson, walk: &StepThrough) -> String {
         lesson.entry.number,
         lesson.entry.title()
     );
+    out.push_str(&lesson_frame::text(&lesson.entry.spec.frame));
+    out.push('\n');
     let what = lesson.script.title.as_deref().unwrap_or("Step-through");
     let _ = writeln!(
         out,

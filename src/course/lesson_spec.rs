@@ -7,6 +7,8 @@
 //! ```toml
 //! title = "The camera and the image plane"
 //! summary = "eye, u, v, n and the image plane; a pixel's (r, c) → (u_c, v_r) → P(r, c)"
+//! objectives = ["…", "…"]                    # the frame: crate::course::lesson_frame
+//! minutes = { reading = 20, exercises = 15, build = 30 }
 //!
 //! [run.pixel]      # a raytree command; a `raytree trace` is run with --json
 //! command = "raytree trace scenes/whitted.json --pixel 416,209"
@@ -37,6 +39,7 @@
 use std::collections::BTreeMap;
 use std::path::Path;
 
+use crate::course::lesson_frame::{self, Frame, FrameFile};
 use crate::course::question::{self, Question};
 use crate::course::spec_file::{NumberFile, SpecFile};
 
@@ -51,6 +54,8 @@ pub struct Spec {
     pub title: Option<String>,
     /// One line on what it teaches (required of a lesson).
     pub summary: Option<String>,
+    /// What a learner can do after it, how long it takes, whether it is optional.
+    pub frame: Frame,
     /// Commands whose output numbers and excerpts come from, by name.
     pub runs: BTreeMap<String, Run>,
     /// Figures, by name (the file is `NAME.png`).
@@ -163,6 +168,12 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
     let file: SpecFile = teacher_file::parse(path, text)?;
     let line = |s: std::ops::Range<usize>| line_of(text, s.start);
     let fail = |l: usize, what: String| format!("{at}: line {l}: {what}");
+    let frame = FrameFile {
+        objectives: file.objectives.clone(),
+        minutes: file.minutes.clone(),
+        beyond_lecture: file.beyond_lecture,
+    };
+    let frame = lesson_frame::check(frame, text).map_err(|(l, e)| fail(l, e))?;
     for name in file
         .run
         .keys()
@@ -288,6 +299,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
     let mut spec = Spec {
         title: file.title,
         summary: file.summary,
+        frame,
         runs,
         figures,
         images,

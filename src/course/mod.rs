@@ -7,6 +7,7 @@ pub mod teacher_file; // the small TOML files a teacher writes, read with line-n
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
 pub(crate) mod spec_file; // a spec file's TOML as serde reads it
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
+pub mod lesson_frame; // what a lesson lets a learner do, how long it takes, whether it is optional
 pub mod lesson_command; // a spec's command lines, and the images and figures each one reads
 pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod question; // checked questions: predict a number, checked against raytree's own

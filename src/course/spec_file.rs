@@ -7,11 +7,16 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
+use crate::course::lesson_frame::Minutes;
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct SpecFile {
     pub(crate) title: Option<String>,
     pub(crate) summary: Option<String>,
+    pub(crate) objectives: Option<Spanned<Vec<String>>>,
+    pub(crate) minutes: Option<Spanned<Minutes>>,
+    pub(crate) beyond_lecture: Option<bool>,
     #[serde(default)]
     pub(crate) run: BTreeMap<String, Spanned<RunFile>>,
     #[serde(default)]

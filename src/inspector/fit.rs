@@ -1,9 +1,12 @@
 //! Lines fitted to a pane: cut with a marker (…) where a line does not fit,
-//! or wrapped with the continuation aligned under the text it continues, so
+//! or wrapped with the continuation aligned under the text it continues (the
+//! wrapping itself is [`crate::views::wrap`], shared with the book), so
 //! nothing is lost silently at any terminal size.
 
 use ratatui::style::Style;
 use ratatui::text::{Line, Span};
+
+use crate::views::wrap;
 
 /// The marker at the end of a cut line.
 pub const CUT: &str = "…";
@@ -19,63 +22,30 @@ pub fn cut(line: Line<'static>, width: usize) -> Line<'static> {
     join(kept, line.style)
 }
 
-/// `lines` wrapped to `width` columns: breaks at spaces where it can; each
-/// continuation starts under the first text after the line's indentation and
-/// label (a bold label padded with spaces counts as the label).
+/// `lines` wrapped to `width` columns by [`crate::views::wrap`]: breaks at
+/// spaces where it can; each continuation starts under the first text after
+/// the line's indentation and label (a bold label padded with spaces counts
+/// as the label).
 pub fn wrap(lines: Vec<Line<'static>>, width: usize) -> Vec<Line<'static>> {
-    let width = width.max(8);
     let mut out = Vec::new();
     for line in lines {
         let cells = cells(&line);
-        if cells.len() <= width {
-            out.push(line);
-            continue;
-        }
-        let indent = hang(&line, &cells).min(width / 2);
-        let mut rest: &[(char, Style)] = &cells;
-        let mut first = true;
-        while !rest.is_empty() {
-            let room = if first { width } else { width - indent };
-            let mut take = rest.len().min(room);
-            if take < rest.len()
-                && let Some(space) = rest[..take].iter().rposition(|c| c.0 == ' ')
-                && space > room / 3
-            {
-                take = space + 1;
-            }
-            let mut row: Vec<(char, Style)> = Vec::new();
-            if !first {
-                row.extend(std::iter::repeat_n((' ', Style::default()), indent));
-            }
-            row.extend_from_slice(&rest[..take]);
+        let indent = hang(&line, &cells);
+        for row in wrap::rows(&cells, width, indent, Style::default()) {
             out.push(join(row, line.style));
-            rest = &rest[take..];
-            while rest.first().is_some_and(|c| c.0 == ' ') {
-                rest = &rest[1..];
-            }
-            first = false;
         }
     }
     out
 }
 
-/// Where a line's continuation starts: after its indentation, and after a
-/// padded label or a `name = ` or `name: ` opening.
+/// Where a line's continuation starts: after a padded label, or where
+/// [`wrap::hang`] puts it in the line's text.
 fn hang(line: &Line<'static>, cells: &[(char, Style)]) -> usize {
-    let lead = cells.iter().take_while(|c| c.0 == ' ').count();
     if line.spans.len() > 1 && line.spans[0].content.ends_with("  ") {
         return line.spans[0].content.chars().count();
     }
     let text: String = cells.iter().map(|c| c.0).collect();
-    let body = &text[text.char_indices().nth(lead).map_or(text.len(), |(i, _)| i)..];
-    for sep in [" = ", ": "] {
-        if let Some(i) = body.find(sep)
-            && body[..i].chars().count() < 24
-        {
-            return lead + body[..i].chars().count() + sep.len();
-        }
-    }
-    lead + 2
+    wrap::hang(&text)
 }
 
 fn cells(line: &Line<'static>) -> Vec<(char, Style)> {

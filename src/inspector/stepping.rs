@@ -3,7 +3,8 @@
 //! there.
 
 use super::reveal::Revealed;
-use crate::course::guide::{Narration, Script};
+use crate::course::guide::{self, Narration, Script, Untold};
+use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::RayTree;
 use crate::tree::steps::Step;
 
@@ -78,11 +79,12 @@ impl Stepping {
 }
 
 /// A guided step-through being followed: its script, its stops filled with
-/// the trace's numbers, and the stop shown.
+/// the trace's numbers (told again after a what-if; a stop the changed trace
+/// cannot tell says why), and the stop shown.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Guided {
     script: Script,
-    told: Vec<Narration>,
+    told: Vec<Result<Narration, Untold>>,
     at: usize,
 }
 
@@ -91,21 +93,41 @@ impl Guided {
     pub fn new(script: Script, told: Vec<Narration>) -> Self {
         Self {
             script,
-            told,
+            told: told.into_iter().map(Ok).collect(),
             at: 0,
         }
+    }
+
+    /// Tells every stop again against `trace`, the script's pixel traced in
+    /// the scene as it is now, so no stop quotes a number of the old trace.
+    pub fn retell(&mut self, trace: &TraceDocument) {
+        self.told = (0..self.script.stops.len())
+            .map(|i| guide::tell(&self.script, trace, i))
+            .collect();
     }
 
     /// Moves `by` stops, kept within them; the step of the stop reached.
     pub fn move_by(&mut self, by: i64) -> Option<usize> {
         let last = self.told.len().saturating_sub(1) as i64;
         self.at = (self.at as i64 + by).clamp(0, last) as usize;
-        self.stop().map(|n| n.step)
+        self.script.stops.get(self.at).map(|s| s.step - 1)
     }
 
-    /// The stop shown.
-    pub fn stop(&self) -> Option<&Narration> {
-        self.told.get(self.at)
+    /// The stop shown: its sentence, or why the trace as it is now cannot
+    /// tell it.
+    pub fn stop(&self) -> Option<String> {
+        let step = self.script.stops.get(self.at)?.step;
+        Some(match self.told.get(self.at)? {
+            Ok(n) => n.text.clone(),
+            Err(Untold::PastEnd { steps }) => format!(
+                "after the what-if, the pixel has {steps} steps, so this stop's step {step} is gone \
+                 and it has nothing to tell (u undoes the edits)"
+            ),
+            Err(Untold::NoNumber { name, .. }) => format!(
+                "after the what-if, step {step} has no {{{name}}} to quote, so this stop cannot be \
+                 told of the changed trace (u undoes the edits)"
+            ),
+        })
     }
 
     /// Which stop is shown (0 is the first) and how many there are.
@@ -116,5 +138,10 @@ impl Guided {
     /// The script's title.
     pub fn title(&self) -> Option<&str> {
         self.script.title.as_deref()
+    }
+
+    /// The pixel the script follows.
+    pub fn pixel(&self) -> (u32, u32) {
+        (self.script.pixel[0], self.script.pixel[1])
     }
 }

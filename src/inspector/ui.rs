@@ -119,7 +119,7 @@ fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
             .fg(Color::Cyan)
             .add_modifier(Modifier::BOLD),
     );
-    let line = Line::from(vec![head, Span::raw(told.text.replace('\n', " "))]);
+    let line = Line::from(vec![head, Span::raw(told.replace('\n', " "))]);
     let mut lines = wrap(vec![line], usize::from(width));
     lines.truncate(4);
     lines

@@ -5,6 +5,7 @@
 
 pub mod numbers; // numbers written for reading
 pub mod text; // the trace in words
+pub mod wrap; // long lines wrapped with a hanging indent, for the inspector and the book
 pub mod explain; // the lecture's arithmetic of each step, written out
 pub mod walk; // a structure's walk step by step: the box or cell, and the wall a grid cell is left through
 mod explain_shapes; // the polygon's and the cone's tests, written out

@@ -57,11 +57,25 @@ pub fn run(args: &Args) -> Result<()> {
 /// Opens the lesson's step-through in the inspector, at its first stop.
 fn guided(loaded: lesson::Lesson) -> Result<()> {
     let [x, y] = loaded.script.pixel;
+    // The frame's time and objectives head the text; the inspector's one
+    // status line has room for the time (the objectives are in the book).
+    let frame = &loaded.entry.spec.frame;
+    let opening = format!(
+        "Lesson {}: {}{} · n/p: next/previous stop",
+        loaded.entry.number,
+        frame.minutes.map_or(String::new(), |m| m.sentence()),
+        if frame.beyond_lecture {
+            " Beyond the lecture, optional."
+        } else {
+            ""
+        }
+    );
     let mut app = App::new(loaded.scene, loaded.source, Some((x, y)), true);
     app.follow(loaded.script).map_err(anyhow::Error::msg)?;
     let (truecolor, note) = inspector::color_support();
-    if let Some(note) = &note {
-        app.set_message(note.clone());
+    match &note {
+        Some(note) => app.set_message(note.clone()),
+        None => app.set_message(opening),
     }
     app.set_colors(truecolor, note);
     inspector::run(app).map_err(|e| anyhow!("terminal error: {e}"))

@@ -160,5 +160,32 @@ impl App {
         let line = self.selection.set_view(view);
         let count = self.items().len();
         self.selection.set_line(line.min(count.saturating_sub(1)));
+        self.retell();
+    }
+
+    /// Tells the guided step-through again from its pixel traced in the scene
+    /// as it is now, and goes back to the stop shown when that pixel is the
+    /// one selected: a stop never quotes the trace before a what-if.
+    fn retell(&mut self) {
+        let (Some(guide), Some(scene)) = (&self.guide, &self.scene) else {
+            return;
+        };
+        let pixel = guide.pixel();
+        let here = pixel == self.cursor();
+        let traced = match self.trace().filter(|_| here) {
+            Some(trace) => Ok(trace.clone()),
+            None => scene.record(self.source.clone(), pixel.0, pixel.1),
+        };
+        match traced {
+            Ok(trace) => {
+                if let Some(g) = self.guide.as_mut() {
+                    g.retell(&trace);
+                }
+                if here {
+                    self.stop_by(0);
+                }
+            }
+            Err(e) => self.message = format!("the guided pixel could not be traced: {e}"),
+        }
     }
 }

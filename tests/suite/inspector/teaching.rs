@@ -354,3 +354,75 @@ fn screens_at_80x24_and_160x48_match_their_snapshots() {
         );
     }
 }
+
+/// A what-if while guided tells the stops again from the changed trace: the
+/// stop shows the new numbers, and a stop the new trace cannot tell says so
+/// instead of quoting the old trace.
+#[test]
+fn a_what_if_while_guided_retells_the_stops_from_the_new_trace() {
+    let app = whitted_at((416, 209));
+    let steps = app.steps().to_vec();
+    let entering = steps
+        .iter()
+        .position(|s| s.node == 0 && s.kind == StepKind::Refract)
+        .unwrap();
+    let theta1 = app.trace().unwrap().samples[0].tree.nodes[0]
+        .hit
+        .as_ref()
+        .and_then(|h| h.refraction.as_ref())
+        .unwrap()
+        .theta1;
+    let script = raytree::course::guide::parse(
+        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/glass.toml")),
+        &format!(
+            "title = \"Glass\"\nscene = \"../scenes/whitted.json\"\npixel = [416, 209]\n\
+             [[stop]]\nstep = {}\nsay = \"n2 = {{n2}}, theta2 = {{theta2}}\"\n\
+             [[stop]]\nstep = {}\nsay = \"the pixel is {{color}}\"\n",
+            entering + 1,
+            steps.len()
+        ),
+    )
+    .unwrap();
+    let mut app = whitted_at((0, 0));
+    app.follow(script).unwrap();
+    let before = screen(&mut app, 160, 48);
+    assert!(
+        before.contains("Glass · stop 1/2: n2 = 1.5, theta2 = "),
+        "{before}"
+    );
+
+    key(&mut app, KeyCode::Char('m'));
+    keys(&mut app, "ior=1.33");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.edits(), vec!["glass: ior=1.33".to_owned()]);
+    assert_eq!(app.step(), Some(entering), "the stop's step is shown again");
+    let after = screen(&mut app, 160, 48);
+    let said = after
+        .lines()
+        .find_map(|l| l.split("Glass · stop 1/2: ").nth(1))
+        .unwrap_or_else(|| panic!("{after}"));
+    assert!(said.starts_with("n2 = 1.33, theta2 = "), "{said}");
+    // Snell's law from the unchanged incoming angle, independently of the
+    // tracer: sin θ₂ = sin θ₁ / 1.33 (θ₁ recorded in degrees). The stop
+    // prints 4 significant digits, so 0.01° is a few units of its last digit.
+    let expected = (theta1.to_radians().sin() / 1.33).asin().to_degrees();
+    let shown: f64 = said["n2 = 1.33, theta2 = ".len()..]
+        .trim_end_matches('°')
+        .parse()
+        .unwrap_or_else(|_| panic!("{said}"));
+    assert!((shown - expected).abs() < 0.01, "{shown} vs {expected}");
+
+    // One bounce fewer than the last stop's step: the stop says it is gone.
+    key(&mut app, KeyCode::Char('m'));
+    keys(&mut app, "max_depth=1");
+    key(&mut app, KeyCode::Enter);
+    assert_eq!(app.edits().len(), 2, "{}", app.message());
+    assert!(app.steps().len() < steps.len());
+    key(&mut app, KeyCode::Char('n'));
+    let gone = screen(&mut app, 160, 48);
+    assert!(
+        gone.contains(&format!("this stop's step {} is gone", steps.len()))
+            && !gone.contains("the pixel is"),
+        "{gone}"
+    );
+}

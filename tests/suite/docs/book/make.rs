@@ -6,6 +6,7 @@
 use std::fmt::Write;
 use std::path::Path;
 
+use raytree::course::lesson_frame::{self, Frame};
 use raytree::course::{lesson, lesson_spec, player};
 
 use super::page::{self, Input, Quoted};
@@ -39,6 +40,11 @@ pub enum Content {
 
 /// The folders the book's generation owns: every file in them is made by it.
 pub const OWNED: &[&str] = &["book/src/lessons", "book/src/figures"];
+
+/// The widest line (in characters) of the book's code blocks: wider, a trace
+/// line runs off a phone's screen or a printed page. Longer lines are wrapped
+/// with a hanging indent, as the inspector wraps them.
+pub const CODE_WIDTH: usize = 90;
 
 /// Book pages: `book/pages/NAME.md` and `NAME.toml`, made into `book/src/NAME.md`.
 const PAGES: &[(&str, &str)] = &[("preface", "Preface: reading a trace and a diagram")];
@@ -92,7 +98,12 @@ pub fn book() -> Result<Vec<File>, String> {
             player,
             &format!("{folder}/steps.toml"),
         ));
-        let heading = format!("# Lesson {}: {}\n\n", entry.number, entry.title());
+        let heading = format!(
+            "# Lesson {}: {}\n\n{}",
+            entry.number,
+            entry.title(),
+            frame(&entry.spec.frame)
+        );
         chapter(
             &input,
             &format!("book/src/lessons/{}", entry.name),
@@ -137,6 +148,26 @@ pub fn book() -> Result<Vec<File>, String> {
     Ok(files)
 }
 
+/// A lesson's frame under its heading: the note that it goes beyond the
+/// lecture, what a learner can do after it, and how long it takes.
+fn frame(frame: &Frame) -> String {
+    let mut out = String::new();
+    if frame.beyond_lecture {
+        let _ = write!(out, "> {}\n\n", lesson_frame::BEYOND_LECTURE);
+    }
+    if !frame.objectives.is_empty() {
+        out.push_str("**After this lesson you can**\n\n");
+        for o in &frame.objectives {
+            let _ = writeln!(out, "- {o}");
+        }
+        out.push('\n');
+    }
+    if let Some(m) = frame.minutes {
+        let _ = write!(out, "*{}*\n\n", m.sentence());
+    }
+    out
+}
+
 /// A chapter `out.md` with its figures; `book/src/NAME` puts figures in
 /// `book/src/figures/NAME/` and lessons' in `book/src/lessons/NAME/`.
 fn chapter(
@@ -165,11 +196,11 @@ fn chapter(
     }
     files.push(File {
         path: format!("{out}.md"),
-        content: Content::Text(format!(
+        content: Content::Text(fit_code_blocks(&format!(
             "{}{heading}{}",
             generated_from(&origin),
             made.text.trim_start()
-        )),
+        ))),
         origin,
         numbers: made.numbers,
         blocks: made.blocks,
@@ -203,14 +234,37 @@ fn commands() -> Result<String, String> {
             help(&[name, "--help"])?
         );
     }
-    Ok(out)
+    Ok(fit_code_blocks(&out))
 }
 
 /// The scene format, from the file that documents it beside the scenes.
 fn scene_format() -> Result<String, String> {
     let readme = std::fs::read_to_string(run::root().join("scenes/README.md"))
         .map_err(|e| format!("scenes/README.md: {e}"))?;
-    Ok(format!("{}{readme}", generated_from("`scenes/README.md`")))
+    Ok(fit_code_blocks(&format!(
+        "{}{readme}",
+        generated_from("`scenes/README.md`")
+    )))
+}
+
+/// `markdown` with every line of its fenced code blocks wrapped at
+/// [`CODE_WIDTH`] (`raytree::views::wrap`, the inspector's wrapping), so the
+/// blocks a lesson's text or a readme writes fit as the excerpts do.
+fn fit_code_blocks(markdown: &str) -> String {
+    let mut out = String::new();
+    let mut inside = false;
+    for line in markdown.split_inclusive('\n') {
+        let fence = ["```", "~~~"]
+            .iter()
+            .any(|f| line.trim_start().starts_with(f));
+        if inside && !fence {
+            out.push_str(&raytree::views::wrap::text(line, CODE_WIDTH));
+        } else {
+            out.push_str(line);
+        }
+        inside ^= fence;
+    }
+    out
 }
 
 /// The table of contents: the preface, the lessons that exist, where next,

@@ -10,6 +10,8 @@
 //! ([`crate::tools`]).
 
 mod check;
+mod code_width;
+mod frame;
 mod links;
 mod make;
 mod page;
@@ -164,6 +166,10 @@ fn raytree_lesson_lists_the_lessons_and_steps_through_one() {
     assert!(!ok && err.contains("no/such/dir: no such folder"), "{err}");
 }
 
+/// The least a lesson's spec holds: a title, a summary and its frame.
+const FRAME: &str = "title = \"Light\"\nsummary = \"the light\"\nobjectives = [\"see\", \"shade\"]\n\
+                     minutes = { reading = 10, exercises = 5 }\n";
+
 #[test]
 fn a_broken_lesson_is_one_line_naming_file_and_line() {
     let dir = tempfile::tempdir().unwrap();
@@ -171,21 +177,17 @@ fn a_broken_lesson_is_one_line_naming_file_and_line() {
     std::fs::create_dir(&lesson).unwrap();
     std::fs::write(
         lesson.join("lesson.toml"),
-        "title = \"Light\"\nsummary = \"s\"\n[number]\nx = { run = \"nope\", json = \"/a\" }\n",
+        format!("{FRAME}[number]\nx = {{ run = \"nope\", json = \"/a\" }}\n"),
     )
     .unwrap();
     let dir_arg = dir.path().display().to_string();
     let (ok, _, err) = raytree(&["lesson", "--lessons", &dir_arg]);
     assert!(!ok);
     assert!(
-        err.contains("07-light/lesson.toml: line 4: number x: no run 'nope'"),
+        err.contains("07-light/lesson.toml: line 6: number x: no run 'nope'"),
         "{err}"
     );
-    std::fs::write(
-        lesson.join("lesson.toml"),
-        "title = \"Light\"\nsummary = \"s\"\n",
-    )
-    .unwrap();
+    std::fs::write(lesson.join("lesson.toml"), FRAME).unwrap();
     std::fs::write(
         lesson.join("steps.toml"),
         "scene = \"x.json\"\npixel = [1, 2]\n[[stop]]\nstep = 1\nsay = \"{nope}\"\n",
@@ -207,11 +209,7 @@ fn a_folder_that_is_no_lesson_is_passed_over() {
     let dir = tempfile::tempdir().unwrap();
     let lesson = dir.path().join("07-light");
     std::fs::create_dir(&lesson).unwrap();
-    std::fs::write(
-        lesson.join("lesson.toml"),
-        "title = \"Light\"\nsummary = \"the light\"\n",
-    )
-    .unwrap();
+    std::fs::write(lesson.join("lesson.toml"), FRAME).unwrap();
     std::fs::create_dir(dir.path().join("drafts")).unwrap();
     std::fs::create_dir(dir.path().join(".cache")).unwrap();
     let dir_arg = dir.path().display().to_string();

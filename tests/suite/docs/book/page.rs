@@ -234,6 +234,7 @@ impl Page<'_> {
                     Output::Unmade => (command.clone(), Ok(HOLE.to_owned())),
                 };
                 let body = body.map_err(|e| format!("excerpt {name}: {e}"))?;
+                let body = raytree::views::wrap::text(&body, super::make::CODE_WIDTH);
                 if body == HOLE {
                     self.unmade.push(format!("excerpt {name}"));
                     self.missing.extend(self.files.missing(run));

@@ -21,12 +21,13 @@ pub fn root() -> &'static Path {
 }
 
 /// Runs `raytree ARGS` and returns its standard output. Help text is wrapped
-/// at 100 columns whatever the terminal, so the book does not depend on it.
+/// at the book's code width whatever the terminal, so the book does not
+/// depend on it and the command reference fits its code blocks.
 pub fn raytree(args: &[String]) -> Result<Vec<u8>, String> {
     let out = Process::new(env!("CARGO_BIN_EXE_raytree"))
         .args(args)
         .current_dir(root())
-        .env("COLUMNS", "100")
+        .env("COLUMNS", super::make::CODE_WIDTH.to_string())
         .env_remove("NO_COLOR")
         .output()
         .map_err(|e| format!("cannot run raytree: {e}"))?;
