@@ -14,4 +14,5 @@ pub mod filmstrip; // frames side by side, one per value of a setting
 pub mod forward_figure; // a forward run: its counts in words, its sparse image beside the backward render
 pub mod difference; // two images side by side with where they differ
 pub mod chart; // speed against accuracy as a chart
+pub mod lobe; // Phong's highlight (R·V)^shininess against the angle from the mirror direction
 pub mod structures_chart; // the structures compared: a table and a chart
