@@ -2,11 +2,12 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use glam::DVec2;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
+use raytree::views::tree_graph;
 
 use crate::args::{SceneArgs, TargetArgs, parse_size};
 use crate::output;
@@ -50,6 +51,9 @@ pub struct Args {
     /// Number the rays and hits as `raytree trace --steps` numbers their steps.
     #[arg(long)]
     steps: bool,
+    /// Draw the ray tree as a graph instead of over the scene: a box per ray (kind, depth, weight, the object hit), an edge from each ray to the rays it spawned with its coefficient (PNG).
+    #[arg(long, conflicts_with_all = ["view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
+    graph: bool,
     /// Also draw the bounding boxes of the scene's hierarchy that the drawn rays were tested against (those entered solid, those missed dotted), with counts; scenes without a hierarchy have none.
     #[arg(long)]
     boxes: bool,
@@ -138,6 +142,25 @@ pub fn run(args: &Args) -> Result<()> {
         boxes: args.boxes,
         svg,
     };
+    if args.graph {
+        if svg {
+            bail!(
+                "cannot write {}: the tree graph is drawn as PNG only",
+                path.display()
+            );
+        }
+        let sample = trace.samples.first().context("the trace has no sample")?;
+        let title = match &trace.pixel {
+            Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),
+            None => format!("{}, the given ray", trace.scene.file),
+        };
+        let figure = tree_graph::draw(&sample.tree, &title, args.size.0, args.size.1)
+            .context("the figure size is too small for this tree")?;
+        pending.commit(&figure.png())?;
+        let (w, h) = figure.size();
+        output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
+        return Ok(());
+    }
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
         (_, Space::Object) => object_view::draw(&trace, &scene, &options),

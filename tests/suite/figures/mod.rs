@@ -5,3 +5,4 @@ mod aov;
 mod boxes;
 mod diagram;
 mod svg;
+mod tree_graph;
