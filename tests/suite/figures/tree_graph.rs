@@ -1,5 +1,6 @@
 //! The ray tree drawn as a graph (`raytree diagram --graph`): a box per ray
-//! and an edge per parent and child, laid out without overlaps.
+//! and an edge per parent and child, laid out without overlaps; and one hit's
+//! vectors enlarged (`--vectors`).
 
 use std::collections::BTreeSet;
 
@@ -61,4 +62,26 @@ fn one_box_per_ray_and_one_edge_per_parent_and_child() {
         draw(tree, "whitted", 200, 200).is_none(),
         "too small to read"
     );
+}
+
+/// `raytree diagram --vectors`: lesson 9's hit split from the trace's own
+/// vectors, c = along + across and v = across − along, and drawn.
+#[test]
+fn a_hits_vectors_split_into_along_and_across_the_normal() {
+    use raytree::views::hit_vectors::{draw as draw_hit, parts};
+    let scene = raytree::scene::loader::whitted();
+    let source = SceneSource::new("scenes/whitted.json", "");
+    let trace = raytree::tree::record::pixel(&scene, source, 200, 280, None).unwrap();
+    let hit = trace.samples[0].tree.nodes[0].hit.as_ref().unwrap();
+    let p = parts(hit);
+    // Tolerance: the tracer's v and these parts round differently, a few ε
+    // of unit vectors.
+    assert!((p.along + p.across - hit.incoming).length() < 1e-14);
+    assert!((p.across - p.along - hit.mirror).length() < 1e-14);
+    assert!(p.across.dot(hit.shading_normal).abs() < 1e-14, "across n");
+    assert!(
+        p.along.cross(hit.shading_normal).length() < 1e-14,
+        "along n"
+    );
+    assert!(draw_hit(hit, "P1", "whitted", 1400, 560).is_some());
 }
