@@ -30,6 +30,7 @@ impl Command {
                 "strip",
                 "forward",
                 "chart",
+                "lobe",
                 "structures",
                 "diagram",
                 "postscript",

@@ -154,7 +154,7 @@ pub struct Exercise {
 }
 
 /// Words a text uses for its own directives, so no number may take them.
-pub const RESERVED: &[&str] = &["figure", "excerpt", "steps", "exercises"];
+pub const RESERVED: &[&str] = &["figure", "see", "excerpt", "steps", "exercises"];
 
 /// Reads a spec file. Errors are one line naming the file and line.
 pub fn load(path: &Path) -> Result<Spec, String> {

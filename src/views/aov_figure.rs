@@ -451,21 +451,29 @@ pub fn draw_bar(fig: &mut Figure, range: &Range, unit: &str, (x0, x1): (f64, f64
         let label = DVec2::new(x.clamp(x0 + 12.0, x1 - 12.0), y + BAR + 19.0);
         fig.text_px(label, &num(v), SMALL, palette::INK, Anchor::Center, false);
     }
-    let scale = if range.log { " · logarithmic" } else { "" };
-    let caption = format!(
-        "{unit}{scale} · range {} to {}",
-        num(range.lo),
-        num(range.hi)
-    );
     fig.text_px(
         DVec2::new(x0, y + BAR + 19.0 + LINE),
-        &caption,
+        &bar_caption(range, unit),
         SMALL,
         [90, 90, 90],
         Anchor::Left,
         false,
     );
 }
+
+/// The line under a color bar: what it measures, its scale and its range,
+/// written at [`BAR_TEXT`]; a figure narrower than the line must widen to it.
+pub fn bar_caption(range: &Range, unit: &str) -> String {
+    let scale = if range.log { " · logarithmic" } else { "" };
+    format!(
+        "{unit}{scale} · range {} to {}",
+        num(range.lo),
+        num(range.hi)
+    )
+}
+
+/// The size of the text under a color bar.
+pub const BAR_TEXT: f32 = SMALL;
 
 /// About `count` round values from `lo` to `hi`: steps of 1, 2 or 5 times a
 /// power of ten.

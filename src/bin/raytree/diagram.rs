@@ -2,11 +2,12 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::{Context, Result, bail};
 use glam::DVec2;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
+use raytree::views::{hit_vectors, tree_graph};
 
 use crate::args::{SceneArgs, TargetArgs, parse_size};
 use crate::output;
@@ -53,6 +54,12 @@ pub struct Args {
     /// Number the rays and hits as `raytree trace --steps` numbers their steps.
     #[arg(long)]
     steps: bool,
+    /// Draw the ray tree as a graph instead of over the scene: a box per ray (kind, depth, weight, the object hit), an edge from each ray to the rays it spawned with its coefficient (PNG).
+    #[arg(long, conflicts_with_all = ["view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
+    graph: bool,
+    /// Draw hit P (1: P1, numbered as the diagram numbers hits) enlarged instead: the incoming c, the normal n and the reflected v with the equal angles, and c split into its parts along and across n (PNG).
+    #[arg(long, value_name = "P", value_parser = clap::value_parser!(u32).range(1..), conflicts_with_all = ["graph", "view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
+    vectors: Option<u32>,
     /// Also draw the bounding boxes of the scene's hierarchy that the drawn rays were tested against (those entered solid, those missed dotted), with counts; scenes without a hierarchy have none.
     #[arg(long)]
     boxes: bool,
@@ -136,6 +143,55 @@ pub fn run(args: &Args) -> Result<()> {
         boxes: args.boxes,
         svg,
     };
+    if let Some(k) = args.vectors {
+        if svg {
+            bail!(
+                "cannot write {}: the hit's vectors are drawn as PNG only",
+                path.display()
+            );
+        }
+        let sample = trace.samples.first().context("the trace has no sample")?;
+        let hits: Vec<_> = sample
+            .tree
+            .nodes
+            .iter()
+            .filter_map(|n| n.hit.as_ref())
+            .collect();
+        let hit = hits
+            .get(k as usize - 1)
+            .with_context(|| format!("no hit P{k}: the tree has {} hits", hits.len()))?;
+        let name = format!("P{k} on '{}'", hit.name);
+        let title = match &trace.pixel {
+            Some(p) => format!("{}, pixel {},{}, {name}", trace.scene.file, p.x, p.y),
+            None => format!("{}, the given ray, {name}", trace.scene.file),
+        };
+        let figure = hit_vectors::draw(hit, &name, &title, args.size.0, args.size.1).context(
+            "the ray meets the surface head-on (nothing to split), or the figure size is too small",
+        )?;
+        pending.commit(&figure.png())?;
+        let (w, h) = figure.size();
+        output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
+        return Ok(());
+    }
+    if args.graph {
+        if svg {
+            bail!(
+                "cannot write {}: the tree graph is drawn as PNG only",
+                path.display()
+            );
+        }
+        let sample = trace.samples.first().context("the trace has no sample")?;
+        let title = match &trace.pixel {
+            Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),
+            None => format!("{}, the given ray", trace.scene.file),
+        };
+        let figure = tree_graph::draw(&sample.tree, &title, args.size.0, args.size.1)
+            .context("the figure size is too small for this tree")?;
+        pending.commit(&figure.png())?;
+        let (w, h) = figure.size();
+        output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
+        return Ok(());
+    }
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
         (_, Space::Object) => object_view::draw(&trace, &scene, &options),

@@ -17,6 +17,7 @@ mod forward;
 mod generate;
 mod inspect;
 mod lesson;
+mod lobe;
 mod memory;
 mod output;
 mod postscript;
@@ -55,6 +56,8 @@ enum Command {
     Structures(structures::Args),
     /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
     Strip(strip::Args),
+    /// Plot Phong's highlight, (R·V)^shininess against the angle between the mirror direction and the eye, for a few exponents (PNG), and print where each falls to a half.
+    Lobe(lobe::Args),
     /// Trace rays forward from the lights and count how few reach the eye, beside the backward render (PNG).
     Forward(forward::Args),
     /// List the lessons, or open lesson N's guided step-through (the trace's own numbers, stop by stop).
@@ -91,6 +94,7 @@ fn main() -> ExitCode {
         Command::Structures(args) => structures::run(&args),
         Command::Strip(args) => strip::run(&args),
         Command::Forward(args) => forward::run(&args),
+        Command::Lobe(args) => lobe::run(&args),
         Command::Lesson(args) => lesson::run(&args),
         // Its exit status is its answer (1: the images differ), so its
         // errors are 2, as cmp's and diff's are.

@@ -8,6 +8,7 @@ mod fuzz;
 mod inputs;
 mod learner;
 mod learner_image;
+mod lobe;
 mod nff;
 mod outputs;
 mod pipes;

@@ -6,3 +6,4 @@ mod boxes;
 mod diagram;
 mod lessons;
 mod svg;
+mod tree_graph;

@@ -242,3 +242,44 @@ fn every_player_stays_within_300_kb() {
         );
     }
 }
+
+/// Every lesson's chapter reads the same way round: its step-through under
+/// "Step through it" and its exercises under "Exercises", each heading just
+/// above what it heads (lesson 14 once had neither); and no figure is shown
+/// twice (an exercise refers back with `{{see NAME}}`, as lesson 10's once
+/// embedded its figures again mid-sentence).
+#[test]
+fn every_chapter_heads_its_parts_and_shows_each_figure_once() {
+    let dir = run::root().join("book/src/lessons");
+    let mut chapters = 0;
+    for entry in std::fs::read_dir(&dir).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().is_none_or(|e| e != "md") {
+            continue;
+        }
+        chapters += 1;
+        let text = std::fs::read_to_string(&path).unwrap();
+        let name = path.display();
+        let steps = text.find("## Step through it\n\n");
+        // The checked questions open the exercises, then exercise 1.
+        let exercises = text
+            .find("## Exercises\n\n")
+            .filter(|&at| text[at..].contains("\n### Exercise 1\n"));
+        assert!(steps.is_some(), "{name}: no \"## Step through it\" heading");
+        assert!(
+            exercises.is_some(),
+            "{name}: no \"## Exercises\" heading above exercise 1"
+        );
+        assert!(
+            steps < exercises,
+            "{name}: the exercises come before the step-through"
+        );
+        let mut shown = std::collections::BTreeSet::new();
+        for line in text.lines().filter(|l| l.starts_with("![")) {
+            let file = line.rsplit('(').next().unwrap_or(line);
+            assert!(shown.insert(file), "{name}: figure {file} is shown twice");
+        }
+    }
+    let lessons = lesson::list(&run::root().join("lessons")).unwrap_or_else(|e| panic!("{e}"));
+    assert_eq!(chapters, lessons.len(), "a chapter per lesson");
+}

@@ -217,6 +217,15 @@ impl Page<'_> {
                     self.src.figures, caption
                 ))
             }
+            // A figure shown above, by its number, without showing it again.
+            ("see", Some(name)) => {
+                let file = format!("{name}.png");
+                let number =
+                    (self.figures.iter().position(|(f, ..)| *f == file)).ok_or_else(|| {
+                        format!("{{{{see {name}}}}}: figure {name} is not shown above it")
+                    })?;
+                Ok(format!("Figure {}", number + 1))
+            }
             ("excerpt", Some(name)) => {
                 let x = spec
                     .excerpts
@@ -260,7 +269,7 @@ impl Page<'_> {
                 Ok(value.clone())
             }
             _ => Err(format!(
-                "{{{{{inner}}}}} is not a directive: {{{{NAME}}}}, {{{{figure NAME}}}}, {{{{excerpt NAME}}}}, {{{{steps}}}} or {{{{exercises}}}}"
+                "{{{{{inner}}}}} is not a directive: {{{{NAME}}}}, {{{{figure NAME}}}}, {{{{see NAME}}}}, {{{{excerpt NAME}}}}, {{{{steps}}}} or {{{{exercises}}}}"
             )),
         }
     }

@@ -1,0 +1,59 @@
+//! `raytree lobe` and the diagram's two drawings that leave the scene out
+//! (`--graph`, `--vectors`): what they refuse, in one line, writing nothing.
+
+use crate::common::{refused, refused_with};
+
+#[test]
+fn lobe_refuses_a_bad_shininess_and_too_many_curves() {
+    for (name, value) in [
+        ("lobe-zero", "40,0"),
+        ("lobe-word", "forty"),
+        ("lobe-inf", "inf"),
+    ] {
+        let e = refused_with(2, name, &[], &["lobe", "--shininess", value]);
+        assert!(e.contains("not a shininess"), "{e}");
+    }
+    let e = refused("lobe-four", &[], &["lobe", "--shininess", "1,2,3,4"]);
+    assert!(e.contains("at most three"), "{e}");
+    let e = refused("lobe-svg", &[], &["lobe", "-o", "lobe.svg"]);
+    assert!(e.contains("lobe.svg"), "{e}");
+}
+
+#[test]
+fn the_graph_and_a_hits_vectors_refuse_what_they_cannot_draw() {
+    let scene = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json")).unwrap();
+    let files: &[(&str, &[u8])] = &[("w.json", &scene)];
+    // Pixel 200,280 has two hits (the mirror ball, the floor): no P5.
+    let e = refused(
+        "vectors-p5",
+        files,
+        &[
+            "diagram",
+            "w.json",
+            "--pixel",
+            "200,280",
+            "--vectors",
+            "5",
+            "-o",
+            "v.png",
+        ],
+    );
+    assert!(e.contains("no hit P5"), "{e}");
+    let e = refused(
+        "graph-svg",
+        files,
+        &[
+            "diagram", "w.json", "--pixel", "200,280", "--graph", "-o", "g.svg",
+        ],
+    );
+    assert!(e.contains("PNG only"), "{e}");
+    let e = refused_with(
+        2,
+        "graph-and-view",
+        files,
+        &[
+            "diagram", "w.json", "--pixel", "200,280", "--graph", "--view", "top",
+        ],
+    );
+    assert!(e.contains("--view"), "{e}");
+}
