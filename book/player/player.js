@@ -189,7 +189,23 @@
         p.root.dispatchEvent(new KeyboardEvent("keydown", { key: "ArrowLeft", bubbles: true }));
         look("key");
       }
-      report.players.push({ lesson: p.data.lesson, stops: p.data.stops.length, seen: seen });
+      // Click the last ray the tree lists at the last stop, and the diagram's
+      // primary ray: each shows its own numbers.
+      p.go(p.data.stops.length - 1);
+      var nodes = p.tree.querySelectorAll(".rp-node");
+      var last = nodes[nodes.length - 1];
+      var clicked = [];
+      if (last) {
+        last.click();
+        clicked.push({ ray: Number(last.getAttribute("data-ray")), shows: p.ray.textContent.split("\n")[0] });
+      }
+      var line = p.diagram.querySelector('.ray[data-ray="0"]');
+      if (line) {
+        line.dispatchEvent(new MouseEvent("click", { bubbles: true }));
+        clicked.push({ ray: 0, shows: p.ray.textContent.split("\n")[0] });
+      }
+      p.go(0);
+      report.players.push({ lesson: p.data.lesson, stops: p.data.stops.length, seen: seen, clicked: clicked });
     });
     questions.forEach(function (q) {
       var out = {};

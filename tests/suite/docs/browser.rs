@@ -209,6 +209,28 @@ fn check_player(
     if tree.nodes.is_empty() {
         out.push(format!("{name}: the traced pixel has no rays"));
     }
+    // A ray clicked, in the tree or in the diagram, shows its own numbers.
+    let clicked = player["clicked"].as_array().cloned().unwrap_or_default();
+    if clicked.len() != 2 {
+        out.push(format!(
+            "{name}: {} rays could be clicked, not 2 (the tree's last and the diagram's primary)",
+            clicked.len()
+        ));
+    }
+    for c in &clicked {
+        let ray = c["ray"].as_u64().unwrap_or(u64::MAX) as usize;
+        let kind = tree
+            .nodes
+            .get(ray)
+            .map(|n| format!("{:?}", n.kind).to_lowercase());
+        let want = format!("ray {ray}: {}, depth", kind.unwrap_or_default());
+        if !c["shows"].as_str().is_some_and(|s| s.starts_with(&want)) {
+            out.push(format!(
+                "{name}: clicking ray {ray} shows {}, not '{want} …'",
+                c["shows"]
+            ));
+        }
+    }
     out
 }
 
