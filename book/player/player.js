@@ -24,7 +24,6 @@
     this.root = root;
     this.data = data;
     this.at = 0;
-    this.picked = null;
     root.setAttribute("tabindex", "0");
     root.setAttribute("aria-label", "Step-through player of lesson " + data.lesson);
     var bar = el("div", "rp-bar");
@@ -95,9 +94,13 @@
       return (k === 0 ? stop.step + ". " : "    ") + l;
     }).join("\n");
     this.drawTree(stop);
-    this.pick(this.picked !== null && this.data.rays[this.picked].spawn <= stop.step ?
-      this.picked : stop.ray);
+    this.pick(stop.ray);
   };
+
+  // What the algorithm knows of ray r by step: what it meets only once found.
+  function known(r, step) {
+    return r.found !== null && r.found <= step;
+  }
 
   Player.prototype.drawTree = function (stop) {
     var rays = this.data.rays, self = this;
@@ -106,8 +109,9 @@
     rays.forEach(function (r, i) {
       if (r.spawn > stop.step) return;
       var li = el("li");
+      var meets = known(r, stop.step) ? " → " + (r.hit || "nothing") : "";
       var b = el("button", "rp-node" + (i === stop.ray ? " rp-current" : ""),
-        r.kind + " (depth " + r.depth + ")" + (r.hit ? " → " + r.hit : ""));
+        "ray " + (i + 1) + " · " + r.kind + " (depth " + r.depth + ")" + meets);
       b.setAttribute("data-ray", i);
       b.addEventListener("click", function () { self.pick(i); });
       li.appendChild(b);
@@ -119,13 +123,24 @@
     });
   };
 
+  // Rays are numbered from 1, as raytree's tree graph numbers them.
   Player.prototype.pick = function (i) {
-    var r = this.data.rays[i];
-    if (!r || r.spawn > this.data.stops[this.at].step) return;
-    this.picked = i;
-    this.ray.textContent = "ray " + i + ": " + r.kind + ", depth " + r.depth + "\n" +
-      r.lines.join("\n");
+    var r = this.data.rays[i], step = this.data.stops[this.at].step;
+    if (!r || r.spawn > step) return;
+    var lines = known(r, step) ? r.lines : r.lines.slice(0, r.spawn_lines);
+    this.ray.textContent = "ray " + (i + 1) + ": " + r.kind + ", depth " + r.depth + "\n" +
+      lines.join("\n") + (known(r, step) ? "" : "\n(what it meets: not found yet at step " + step + ")");
   };
+
+  // A number as a reader types it: a typographic minus (−), thousands
+  // separated by commas (336,120) or a decimal comma (0,5), a unit after it.
+  function parseAnswer(text) {
+    var t = text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
+    if (/^[-+]?\d{1,3}(,\d{3})+(\.\d*)?/.test(t)) t = t.replace(/,/g, "");
+    else t = t.replace(",", ".");
+    var m = /^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?/i.exec(t);
+    return m ? Number(m[0]) : NaN;
+  }
 
   function Question(root) {
     var answer = Number(root.getAttribute("data-answer"));
@@ -150,16 +165,16 @@
     if (worked) worked.style.display = "none";
     form.addEventListener("submit", function (e) {
       e.preventDefault();
-      var given = Number(input.value.replace(",", ".").replace(/[^0-9eE.+-]/g, ""));
-      if (input.value.trim() === "" || isNaN(given)) {
+      var given = parseAnswer(input.value);
+      if (isNaN(given)) {
         verdict.textContent = "Type a number.";
         verdict.className = "rq-verdict";
         return;
       }
       var right = Math.abs(given - answer) <= within;
       verdict.textContent = right ? "Right: raytree says " + answer + unit + "." :
-        "Not yet: that is off by " + (given - answer > 0 ? "more" : "less") +
-        " than the tolerance. Read the hint and try again.";
+        "Not yet: that is too " + (given > answer ? "high" : "low") +
+        ". Read the hint and try again.";
       verdict.className = "rq-verdict " + (right ? "rq-right" : "rq-wrong");
       if (hint) { hint.style.display = right ? "none" : ""; hint.open = !right; }
       if (worked && right) { worked.style.display = ""; worked.open = true; }
@@ -215,6 +230,13 @@
       q.input.value = String(q.answer);
       q.check.click();
       out.right = q.verdict.className;
+      // As a reader types it: a typographic minus, thousands with commas.
+      var abs = Math.abs(q.answer).toString();
+      if (Math.abs(q.answer) >= 1000 && Number.isInteger(q.answer)) abs = abs.replace(/\B(?=(\d{3})+$)/g, ",");
+      q.input.value = (q.answer < 0 ? "\u2212" : "") + abs;
+      q.check.click();
+      out.typed = q.input.value;
+      out.typedVerdict = q.verdict.className;
       report.questions.push(out);
     });
     report.scrollWidth = document.documentElement.scrollWidth;

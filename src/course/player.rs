@@ -62,6 +62,11 @@ pub struct PlayerRay {
     pub spawn: usize,
     /// Its lines in the trace: the spawn, then the closest hit or the miss.
     pub lines: Vec<String>,
+    /// How many of `lines` are the spawn's: the rest are not shown before
+    /// the step `found`, so the player never tells what a ray meets early.
+    pub spawn_lines: usize,
+    /// The step that finds its closest hit (or its miss).
+    pub found: Option<usize>,
     /// What it hit, if anything.
     pub hit: Option<String>,
 }
@@ -120,6 +125,7 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         .map(|(i, n)| {
             let spawn = step_of(i, &[StepKind::Spawn]);
             let end = step_of(i, &[StepKind::Hit, StepKind::Miss]);
+            let spawn_lines = spawn.map_or(0, |k| lines(k).len());
             PlayerRay {
                 parent: n.parent,
                 kind: match n.kind {
@@ -131,6 +137,8 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
                 depth: n.depth,
                 spawn: spawn.map_or(steps.len(), |k| k + 1),
                 lines: spawn.into_iter().chain(end).flat_map(lines).collect(),
+                spawn_lines,
+                found: end.map(|k| k + 1),
                 hit: n.hit.as_ref().map(|h| h.name.clone()),
             }
         })

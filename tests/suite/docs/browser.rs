@@ -223,7 +223,8 @@ fn check_player(
             .nodes
             .get(ray)
             .map(|n| format!("{:?}", n.kind).to_lowercase());
-        let want = format!("ray {ray}: {}, depth", kind.unwrap_or_default());
+        // Numbered from 1, as the tree graph numbers them.
+        let want = format!("ray {}: {}, depth", ray + 1, kind.unwrap_or_default());
         if !c["shows"].as_str().is_some_and(|s| s.starts_with(&want)) {
             out.push(format!(
                 "{name}: clicking ray {ray} shows {}, not '{want} …'",
@@ -253,6 +254,14 @@ fn check_questions(name: &str, report: &Value, count: usize) -> Vec<String> {
             q["wrong"].as_str().unwrap_or(""),
             q["right"].as_str().unwrap_or(""),
         );
+        let typed = q["typedVerdict"].as_str().unwrap_or("");
+        if !typed.contains("rq-right") {
+            out.push(format!(
+                "{name}: question {}: the right answer typed as a reader types it, {}, got '{typed}'",
+                k + 1,
+                q["typed"]
+            ));
+        }
         if !wrong.contains("rq-wrong") || !right.contains("rq-right") {
             out.push(format!(
                 "{name}: question {}: a wrong answer got '{wrong}', the right one '{right}'",
