@@ -11,6 +11,12 @@
 //! scene = "../../scenes/whitted.json"   # relative to the script
 //! pixel = [416, 209]
 //!
+//! [player]                              # optional: what the book's player draws
+//! depth = 1                             # rays to this depth only
+//! ticks = true                          # whole steps of t marked
+//! no_shadows = true
+//! whole_tree = true                     # frame the eye too, not just the hits
+//!
 //! [[stop]]
 //! step = 1                              # as `raytree trace --steps` numbers them
 //! say = "Pixel (x, y) is column c = {c}, row r = {r}."
@@ -47,6 +53,27 @@ pub struct Script {
     pub sample: usize,
     /// Its stops, in step order.
     pub stops: Vec<Stop>,
+    /// How the book's player draws the pixel's diagram.
+    pub player: PlayerView,
+}
+
+/// What the book's player draws of the pixel (`[player]` in the script):
+/// a lesson about the first hit leaves out the deeper rays and marks that
+/// belong to later lessons.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlayerView {
+    /// Draw rays only to this depth (1: the primary ray).
+    pub depth: Option<u32>,
+    /// Mark whole steps of t along the rays.
+    #[serde(default)]
+    pub ticks: bool,
+    /// Leave the shadow rays out.
+    #[serde(default)]
+    pub no_shadows: bool,
+    /// Frame the whole tree, the eye included, not just the hits.
+    #[serde(default)]
+    pub whole_tree: bool,
 }
 
 /// One stop: a step and what to say there.
@@ -66,6 +93,8 @@ struct ScriptFile {
     pixel: toml::Spanned<[u32; 2]>,
     sample: Option<usize>,
     stop: Vec<StopFile>,
+    #[serde(default)]
+    player: PlayerView,
 }
 
 #[derive(Deserialize)]
@@ -123,6 +152,7 @@ pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
         pixel: *file.pixel.get_ref(),
         pixel_line: teacher_file::line_of(text, file.pixel.span().start),
         sample: file.sample.map_or(0, |s| s - 1),
+        player: file.player,
         stops: file
             .stop
             .into_iter()

@@ -12,7 +12,7 @@ use crate::methods::Accel;
 use crate::tree::ray_tree::RayKind;
 use crate::tree::steps::StepKind;
 use crate::views::diagram::draw;
-use crate::views::diagram::options::Options;
+use crate::views::diagram::options::{Fit, Options};
 use crate::views::text;
 
 /// Everything a player shows.
@@ -86,6 +86,14 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         // The boxes or cells a structure's search visits appear step by step
         // with the rays (lesson 12 walks a grid).
         boxes: trace.structure != Accel::None,
+        depth: lesson.script.player.depth,
+        ticks: lesson.script.player.ticks,
+        shadows: !lesson.script.player.no_shadows,
+        fit: if lesson.script.player.whole_tree {
+            Fit::Tree
+        } else {
+            Fit::Hits
+        },
         ..Options::default()
     };
     let figure = draw::draw(trace, &lesson.scene, &options).map_err(|e| {
