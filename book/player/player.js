@@ -246,12 +246,35 @@
     document.body.appendChild(pre);
   }
 
+  // The book's root, from where this file was loaded (ROOT/player/…): a
+  // chapter's data is fetched relative to it, so a player works in its
+  // chapter and in mdBook's print page alike.
+  var here = document.currentScript ? document.currentScript.src : "";
+  var root = here.replace(/player\/[^\/]*$/, "");
+
+  // Loads each player's data (a chapter's player.js), then starts them all.
   function start() {
+    var roots = Array.prototype.slice.call(document.querySelectorAll(".raytree-player"));
+    var pending = roots.length;
+    if (pending === 0) ready(roots);
+    roots.forEach(function (div) {
+      var script = document.createElement("script");
+      script.src = root + div.getAttribute("data-src");
+      script.onload = script.onerror = function () {
+        pending -= 1;
+        if (pending === 0) ready(roots);
+      };
+      document.head.appendChild(script);
+    });
+  }
+
+  function ready(roots) {
     var data = window.raytreePlayers || {};
     var players = [];
-    Array.prototype.forEach.call(document.querySelectorAll(".raytree-player"), function (root) {
-      var d = data[root.getAttribute("data-lesson")];
-      if (d) players.push(new Player(root, d));
+    roots.forEach(function (div) {
+      var d = data[div.getAttribute("data-lesson")];
+      if (d) players.push(new Player(div, d));
+      else console.error("raytree: no player data at " + div.getAttribute("data-src"));
     });
     var questions = Array.prototype.map.call(document.querySelectorAll(".raytree-question"), Question);
     if (/[?&]selftest\b/.test(location.search)) selftest(players, questions);

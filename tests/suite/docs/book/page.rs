@@ -282,7 +282,7 @@ impl Page<'_> {
             return Err("{{steps}} twice".to_owned());
         }
         let mut out = format!(
-            "<div class=\"raytree-player\" data-lesson=\"{number}\"></div>\n<script src=\"{}player.js\"></script>\n\n\
+            "<div class=\"raytree-player\" data-lesson=\"{number}\" data-src=\"lessons/{}player.js\"></div>\n\n\
              `raytree lesson {number}` prints this step-through; each stop quotes the trace's own numbers \
              (the pixel has {} steps in all).\n",
             self.src.figures, walk.steps
