@@ -95,6 +95,8 @@ pub fn make(src: &Input, scratch: &Path) -> Result<Made, String> {
     };
     let mut body = page.fill(&text, src.text, true)?;
     page.check_used()?;
+    questions::not_shown_before(&body, spec, &numbers)
+        .map_err(|e| format!("{}: {e}", src.spec_path))?;
     body.push_str(&numbers_table(spec, &numbers));
     let quoted = spec
         .numbers

@@ -54,6 +54,48 @@ impl Page<'_> {
     }
 }
 
+/// A question asks for a prediction, so the chapter must not have printed
+/// its answer before it (in the text, a figure's caption, an excerpt or
+/// another question's worked answer): the first place the answer's value
+/// appears in `body` must be the question's own box. Values of one or two
+/// characters (4, −3) are too common to tell.
+pub(super) fn not_shown_before(
+    body: &str,
+    spec: &raytree::course::lesson_spec::Spec,
+    numbers: &std::collections::BTreeMap<String, String>,
+) -> Result<(), String> {
+    let boxes: Vec<usize> = body
+        .match_indices("<div class=\"raytree-question\"")
+        .map(|(at, _)| at)
+        .collect();
+    for (q, &at) in spec.questions.iter().zip(&boxes) {
+        let Ok((value, _)) = question::answer_value(&numbers[&q.answer], q.pick) else {
+            continue;
+        };
+        let shown = raytree::views::numbers::num(value);
+        if shown.trim_start_matches('-').len() < 3 {
+            continue;
+        }
+        if let Some(first) = token(body, &shown).filter(|&first| first < at) {
+            let line = body[..first].lines().count();
+            return Err(format!(
+                "line {}: question: its answer {shown} is printed above it (chapter line {line}): ask for a number the chapter has not shown",
+                q.line
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// The first place `value` appears in `text` as a whole number, not part of
+/// a longer one.
+fn token(text: &str, value: &str) -> Option<usize> {
+    let digit = |c: Option<char>| c.is_some_and(|c| c.is_ascii_digit() || c == '.');
+    text.match_indices(value).map(|(i, _)| i).find(|&i| {
+        !digit(text[..i].chars().next_back()) && !digit(text[i + value.len()..].chars().next())
+    })
+}
+
 /// A question's texts quote its answer as `{{name}}`, never as the value
 /// typed: a typed value would go stale when the code changes.
 fn typed_by_hand(q: &Question, printed: &str) -> Result<(), String> {
