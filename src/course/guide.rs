@@ -30,7 +30,7 @@ use serde::Deserialize;
 use crate::course::teacher_file;
 use crate::scene::settings::RenderSettings;
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::{RayKind, ShadowOutcomeRecord};
+use crate::tree::ray_tree::ShadowOutcomeRecord;
 use crate::tree::record::TraceError;
 use crate::tree::steps::{StepKind, visit_tests};
 use crate::views::numbers::{color, degrees, num, vec3};
@@ -327,12 +327,7 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
     put("W", num(trace.camera.half_width));
     put("H", num(trace.camera.half_height));
     let node = &smp.tree.nodes[s.node];
-    let kind = match node.kind {
-        RayKind::Primary => "primary",
-        RayKind::Reflected => "reflected",
-        RayKind::Refracted => "refracted",
-        RayKind::Shadow => "shadow",
-    };
+    let kind = node.kind.name();
     put("ray", kind.to_owned());
     put("depth", node.depth.to_string());
     put("origin", vec3(node.origin));

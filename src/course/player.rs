@@ -9,7 +9,6 @@ use serde::Serialize;
 
 use crate::course::lesson::{Lesson, StepThrough};
 use crate::methods::Accel;
-use crate::tree::ray_tree::RayKind;
 use crate::tree::steps::StepKind;
 use crate::views::diagram::draw;
 use crate::views::diagram::options::{Fit, Options};
@@ -136,12 +135,7 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
             let spawn_lines = spawn.map_or(0, |k| lines(k).len());
             PlayerRay {
                 parent: n.parent,
-                kind: match n.kind {
-                    RayKind::Primary => "primary",
-                    RayKind::Reflected => "reflected",
-                    RayKind::Refracted => "refracted",
-                    RayKind::Shadow => "shadow",
-                },
+                kind: n.kind.name(),
                 depth: n.depth,
                 spawn: spawn.map_or(steps.len(), |k| k + 1),
                 lines: spawn.into_iter().chain(end).flat_map(lines).collect(),

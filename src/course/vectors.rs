@@ -495,12 +495,7 @@ fn rows(m: &DAffine3) -> Value {
 
 /// A node's path from the primary ray: `primary → refracted → reflected`.
 fn path(nodes: &[RayNode], mut i: usize) -> String {
-    let name = |kind| match kind {
-        RayKind::Primary => "primary",
-        RayKind::Reflected => "reflected",
-        RayKind::Refracted => "refracted",
-        RayKind::Shadow => "shadow",
-    };
+    let name = |kind: RayKind| kind.name();
     let mut kinds = vec![name(nodes[i].kind)];
     while let Some(parent) = nodes[i].parent {
         i = parent;

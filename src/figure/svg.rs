@@ -227,18 +227,16 @@ impl Svg {
 /// A path's pixel coordinate to one decimal (a tenth of a pixel is invisible
 /// at the size a page shows a figure).
 fn coordinate(x: f64) -> String {
-    let s = format!("{x:.1}");
-    let s = s.trim_end_matches('0').trim_end_matches('.');
-    if s == "-0" {
-        "0".to_owned()
-    } else {
-        s.to_owned()
-    }
+    trimmed(format!("{x:.1}"))
 }
 
 /// A pixel coordinate to two decimals (a hundredth of a pixel is invisible).
 fn num(x: f64) -> String {
-    let s = format!("{x:.2}");
+    trimmed(format!("{x:.2}"))
+}
+
+/// A fixed-point number without its trailing zeros (and `-0` as `0`).
+fn trimmed(s: String) -> String {
     let s = s.trim_end_matches('0').trim_end_matches('.');
     if s == "-0" {
         "0".to_owned()

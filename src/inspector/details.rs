@@ -14,7 +14,7 @@ use crate::tree::ray_tree::RayNode;
 use crate::tree::steps::StepKind;
 use crate::views::explain;
 use crate::views::numbers::{color, num, vec3};
-use crate::views::text::{kind_name, searched};
+use crate::views::text::searched;
 
 /// The selected line's numbers: a shadow ray's, or a ray's with the camera
 /// stage (for a pixel's primary ray), its tests, its hit and its color sum,
@@ -158,7 +158,7 @@ fn ray_details(node: &RayNode, structure: Accel) -> Vec<Line<'static>> {
     vec![
         Line::from(format!(
             "{} ray · depth {} · weight {}",
-            kind_name(node.kind),
+            node.kind.name(),
             node.depth,
             num(node.weight)
         )),

@@ -114,7 +114,7 @@ pub fn call_stack(tree: &RayTree, n: usize, width: usize) -> String {
         .rev()
         .map(|&i| {
             let node = &tree.nodes[i];
-            let kind = crate::views::text::kind_name(node.kind);
+            let kind = node.kind.name();
             if node.depth <= 1 {
                 kind.to_owned()
             } else {

@@ -16,7 +16,6 @@ use super::selection::Item;
 use crate::figure::pen::palette;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::views::numbers::num;
-use crate::views::text::kind_name;
 
 fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<Span<'static>> {
     let what = match &node.hit {
@@ -26,7 +25,7 @@ fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<S
     };
     let mut spans = vec![
         Span::styled(
-            format!("{} ", kind_name(node.kind)),
+            format!("{} ", node.kind.name()),
             Style::default()
                 .fg(term_color(
                     crate::views::diagram::style::ray_pen(node.kind).color,

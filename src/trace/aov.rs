@@ -207,7 +207,7 @@ impl Aov {
             Aov::Shadow(Some(l)) => format!("shadow={}", scene.lights[l].name),
             Aov::Depth => simple("depth"),
             Aov::Rays(None) => simple("rays"),
-            Aov::Rays(Some(kind)) => format!("rays={}", kind_name(kind)),
+            Aov::Rays(Some(kind)) => format!("rays={}", kind.name()),
             Aov::Tests => simple("tests"),
             Aov::Normal => simple("normal"),
             Aov::T => simple("t"),
@@ -236,7 +236,7 @@ impl Aov {
             Aov::Shadow(None) => "which lights the first hit's shadow rays reach".into(),
             Aov::Depth => "the deepest ray of each pixel's ray tree".into(),
             Aov::Rays(None) => "rays cast per pixel (every kind)".into(),
-            Aov::Rays(Some(k)) => format!("{} rays cast per pixel", kind_name(k)),
+            Aov::Rays(Some(k)) => format!("{} rays cast per pixel", k.name()),
             Aov::Tests => "intersection tests per pixel (bounding boxes + objects)".into(),
             Aov::Normal => "unit normal at the first hit".into(),
             Aov::T => "distance from the eye to the first hit".into(),
@@ -398,15 +398,6 @@ fn discriminant(arg: Option<&str>, scene: &Scene) -> Result<Aov, String> {
                 listed()
             )),
         },
-    }
-}
-
-fn kind_name(kind: RayKind) -> &'static str {
-    match kind {
-        RayKind::Primary => "primary",
-        RayKind::Reflected => "reflected",
-        RayKind::Refracted => "refracted",
-        RayKind::Shadow => "shadow",
     }
 }
 

@@ -39,6 +39,19 @@ pub enum RayKind {
     Shadow,
 }
 
+impl RayKind {
+    /// The kind in words, as traces, figures and the book name it (and as
+    /// its JSON spells it).
+    pub fn name(self) -> &'static str {
+        match self {
+            RayKind::Primary => "primary",
+            RayKind::Reflected => "reflected",
+            RayKind::Refracted => "refracted",
+            RayKind::Shadow => "shadow",
+        }
+    }
+}
+
 /// A ray about to be traced.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct RayStart {

@@ -10,9 +10,7 @@ use std::fmt::Write;
 use crate::geometry::hit::TestCounts;
 use crate::methods::{Accel, Antialiasing};
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::{
-    Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, SumRecord,
-};
+use crate::tree::ray_tree::{Branch, BranchRecord, HitRecord, RayNode, RayTree, SumRecord};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::explain::{self, Lines};
 use crate::views::numbers::{color, num, vec3};
@@ -95,7 +93,7 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
         }
         StepKind::Spawn => one(format!(
             "spawn {} ray (depth {}, weight {}) from S = {} along c = {}: {}",
-            kind_name(node.kind),
+            node.kind.name(),
             node.depth,
             num(node.weight),
             vec3(node.origin),
@@ -208,7 +206,7 @@ fn combined(s: &SumRecord) -> String {
 
 fn returned_to(tree: &RayTree, node: &RayNode) -> String {
     node.parent.map_or("the pixel".to_owned(), |p| {
-        format!("its parent, the {} ray", kind_name(tree.nodes[p].kind))
+        format!("its parent, the {} ray", tree.nodes[p].kind.name())
     })
 }
 
@@ -225,16 +223,6 @@ pub fn searched(t: &TestCounts, structure: Accel) -> String {
             t.primitives,
             s(t.primitives)
         )
-    }
-}
-
-/// The word for a ray kind.
-pub fn kind_name(kind: RayKind) -> &'static str {
-    match kind {
-        RayKind::Primary => "primary",
-        RayKind::Reflected => "reflected",
-        RayKind::Refracted => "refracted",
-        RayKind::Shadow => "shadow",
     }
 }
 

@@ -67,15 +67,6 @@ fn color(kind: RayKind) -> Rgb {
     }
 }
 
-fn kind_name(kind: RayKind) -> &'static str {
-    match kind {
-        RayKind::Primary => "primary",
-        RayKind::Reflected => "reflected",
-        RayKind::Refracted => "refracted",
-        RayKind::Shadow => "shadow",
-    }
-}
-
 /// Why a branch was not traced, in a few words; `None` when it was, or when
 /// the material has no such branch at all (nothing worth a line).
 fn stopped(which: &str, branch: Option<&BranchRecord>) -> Option<String> {
@@ -92,7 +83,7 @@ fn stopped(which: &str, branch: Option<&BranchRecord>) -> Option<String> {
 /// The lines of a ray's box; `hit` is its hit's number P1, P2, … if any.
 fn lines(i: usize, node: &RayNode, hit: Option<usize>) -> Vec<String> {
     let mut out = vec![
-        format!("ray {} · {}", i + 1, kind_name(node.kind)),
+        format!("ray {} · {}", i + 1, node.kind.name()),
         format!("depth {} · weight {}", node.depth, num(node.weight)),
         match (&node.hit, hit) {
             (Some(h), Some(k)) => format!("P{k}: hits {}", h.name),
