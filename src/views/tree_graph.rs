@@ -170,8 +170,15 @@ pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
     let edges = (tree.nodes.iter().enumerate())
         .filter_map(|(i, node)| {
             let parent = &tree.nodes[node.parent.filter(|&p| p < i)?];
+            // Under total internal reflection the refracted share goes to the
+            // reflected ray: its coefficient is the sum, whatever k_rfl alone is.
+            let tir = parent
+                .refracted
+                .as_ref()
+                .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
             let (name, branch) = match node.kind {
                 RayKind::Refracted => ("k_rfa", parent.refracted.as_ref()),
+                _ if tir => ("TIR: k_rfl + k_rfa", parent.reflected.as_ref()),
                 _ => ("k_rfl", parent.reflected.as_ref()),
             };
             Some(Edge {
