@@ -80,8 +80,10 @@
     this.at = i;
     var stop = stops[i];
     this.parts.forEach(function (p) {
-      var shown = stepOf(p) <= stop.step;
-      p.style.display = shown ? "" : "none";
+      // A ray's stand-in (data-until) shows from its spawn until its hit is found.
+      var until = p.getAttribute("data-until");
+      var shown = stepOf(p) <= stop.step && (until === null || stop.step <= Number(until));
+      p.style.display = shown ? "inline" : "none";
       var current = shown && Number(p.getAttribute("data-ray")) === stop.ray;
       p.classList.toggle("rp-current", current);
     });

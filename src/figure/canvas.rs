@@ -197,6 +197,21 @@ impl Figure {
         self.stroke_px(&[a, b], pen, false);
     }
 
+    /// A line from `a` to `b` in the SVG only, not in the PNG: a part a
+    /// player shows for a while and the still figure never has (its tag
+    /// should hide it, `display="none"`).
+    pub fn svg_only_line(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        let (a, b) = (self.to_px(a), self.to_px(b));
+        if let Some(svg) = &mut self.svg {
+            let paint = SvgPaint {
+                fill: None,
+                stroke: Some(pen),
+                clip: true,
+            };
+            svg.path(&[a, b], false, paint);
+        }
+    }
+
     /// A line from `a` to `b` with an arrowhead at `b`.
     pub fn arrow(&mut self, a: DVec2, b: DVec2, pen: Pen) {
         let (pa, pb) = (self.to_px(a), self.to_px(b));

@@ -268,6 +268,21 @@ fn draw_eye_and_image_plane(fig: &mut Figure, lay: &Layout, scale: &Scale) {
 /// it only passes in front of or behind an object; arrowheads at rays' ends.
 fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     let (vlo, vhi) = fig.visible();
+    for s in lay
+        .segments
+        .iter()
+        .filter(|s| s.shadow.is_none() && !s.leaves)
+    {
+        let Some(tag) = reveal.pending(s.node) else {
+            continue;
+        };
+        // On past the hit by more than the frame: the frame clips it.
+        let far = s.to + (s.to - s.from).normalize_or_zero() * (vhi - vlo).length() * 2.0;
+        if let Some((a, b)) = clip_segment(s.from, far, vlo, vhi) {
+            fig.tag(&tag);
+            fig.svg_only_line(a, b, scale.pen(s.stroke.pen()));
+        }
+    }
     for s in &lay.segments {
         fig.tag(&match s.shadow {
             Some(k) => reveal.shadow(s.node, k),

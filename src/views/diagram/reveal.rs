@@ -61,9 +61,26 @@ impl Reveal {
         r
     }
 
-    /// The attributes of a ray's line.
+    /// The attributes of a ray's line: drawn to its hit from the step that
+    /// finds the hit (before that, [`Reveal::pending`] stands in for it), or
+    /// from its spawn when it meets nothing.
     pub fn ray(&self, node: usize) -> String {
-        tag(Part::Ray, node, self.spawn.get(&node))
+        let found = self.hit.get(&node).or(self.spawn.get(&node));
+        tag(Part::Ray, node, found)
+    }
+
+    /// The attributes of a ray's stand-in between its spawn and its hit: the
+    /// line runs on to the frame's edge, so the figure does not tell where
+    /// the ray stops before the algorithm has found it. Hidden unless a
+    /// player shows it; `None` when the ray's hit is found at its spawn.
+    pub fn pending(&self, node: usize) -> Option<String> {
+        let (&spawn, &hit) = (self.spawn.get(&node)?, self.hit.get(&node)?);
+        (hit > spawn + 1).then(|| {
+            format!(
+                "class=\"ray pending\" data-ray=\"{node}\" data-step=\"{spawn}\" data-until=\"{}\" display=\"none\"",
+                hit - 1
+            )
+        })
     }
 
     /// The attributes of shadow ray `k` of `node`.

@@ -258,7 +258,11 @@ impl Page<'_> {
                     .iter()
                     .map(|c| format!("$ {c}\n"))
                     .collect();
-                Ok(format!("```text\n{making}$ {shown}\n{body}```"))
+                // An excerpt not made here is a hole on a line of its own, so
+                // the closing fence still starts its line (the book's code
+                // blocks are found by their fences).
+                let end = if body.ends_with('\n') { "" } else { "\n" };
+                Ok(format!("```text\n{making}$ {shown}\n{body}{end}```"))
             }
             ("steps", None) if top => self.steps(),
             ("exercises", None) if top => self.exercises(),
