@@ -11,7 +11,7 @@ use glam::{DVec2, DVec3};
 use crate::geometry::object::Object;
 use crate::math::angle::angle_between;
 use crate::tree::arithmetic::Fate;
-use crate::tree::ray_tree::{Branch, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
+use crate::tree::ray_tree::{Branch, HitRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::options::{Labels, Options};
 use crate::views::diagram::projection::Projection;
@@ -295,6 +295,23 @@ fn shadow_marks(node: &RayNode, i: usize, proj: &Projection, m: &mut Marks) {
     }
 }
 
+/// The hits a diagram draws, with their nodes: within its depth, and
+/// reached by a step-through's step (`shown`, `None` for all).
+fn drawn_hits<'t>(
+    tree: &'t RayTree,
+    options: &Options,
+    shown: &Option<Vec<usize>>,
+) -> impl Iterator<Item = (usize, &'t RayNode, &'t HitRecord)> {
+    let depth = options.depth;
+    let shown = shown.clone();
+    tree.nodes.iter().enumerate().filter_map(move |(i, node)| {
+        let h = node.hit.as_ref()?;
+        let drawn =
+            depth.is_none_or(|d| node.depth <= d) && shown.as_ref().is_none_or(|s| s.contains(&i));
+        drawn.then_some((i, node, h))
+    })
+}
+
 /// Ticks along each ray: at every whole `t` while the ray ends within
 /// [`WHOLE_TICKS`] (`1 < t ≤ 10`), so a learner can count the lengths of `c`;
 /// otherwise ([`tick_step`]) about five ticks at a round step, with t = 1
@@ -306,13 +323,7 @@ fn ticks(
     shown: &Option<Vec<usize>>,
 ) -> Vec<Tick> {
     let mut out = Vec::new();
-    for (i, node) in tree.nodes.iter().enumerate() {
-        let Some(h) = &node.hit else { continue };
-        if options.depth.is_some_and(|d| node.depth > d)
-            || shown.as_ref().is_some_and(|s| !s.contains(&i))
-        {
-            continue;
-        }
+    for (i, node, h) in drawn_hits(tree, options, shown) {
         let step = tick_step(h.t);
         let across = proj.vector(node.direction).normalize_or_zero().perp();
         let tick = |t: f64| Tick {
@@ -347,13 +358,7 @@ fn other_roots(
     shown: &Option<Vec<usize>>,
 ) -> Vec<RootMark> {
     let mut out = Vec::new();
-    for (i, node) in tree.nodes.iter().enumerate() {
-        let Some(h) = &node.hit else { continue };
-        if options.depth.is_some_and(|d| node.depth > d)
-            || shown.as_ref().is_some_and(|s| !s.contains(&i))
-        {
-            continue;
-        }
+    for (i, node, h) in drawn_hits(tree, options, shown) {
         let Some(test) = node.tests.iter().find(|t| t.object == h.object) else {
             continue;
         };
