@@ -130,16 +130,20 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         .iter()
         .enumerate()
         .map(|(i, n)| {
-            let spawn = step_of(i, &[StepKind::Spawn]);
+            let spawn_step = step_of(i, &[StepKind::Spawn]);
+            let spawn = spawn_step.map(lines);
             let end = step_of(i, &[StepKind::Hit, StepKind::Miss]);
-            let spawn_lines = spawn.map_or(0, |k| lines(k).len());
             PlayerRay {
                 parent: n.parent,
                 kind: n.kind.name(),
                 depth: n.depth,
-                spawn: spawn.map_or(steps.len(), |k| k + 1),
-                lines: spawn.into_iter().chain(end).flat_map(lines).collect(),
-                spawn_lines,
+                spawn: spawn_step.map_or(steps.len(), |k| k + 1),
+                spawn_lines: spawn.as_ref().map_or(0, Vec::len),
+                lines: spawn
+                    .into_iter()
+                    .flatten()
+                    .chain(end.into_iter().flat_map(lines))
+                    .collect(),
                 found: end.map(|k| k + 1),
                 hit: n.hit.as_ref().map(|h| h.name.clone()),
             }

@@ -61,7 +61,7 @@ fn the_books_players_and_questions_work_in_a_real_browser() {
                 .map(|c| format!("{}: console: {c}", e.name)),
         );
         failures.extend(check_player(&e.name, e.number, &report, &loaded, &walk));
-        failures.extend(check_questions(&e.name, &report, loaded_questions(e)));
+        failures.extend(check_questions(&e.name, &report, e.spec.questions.len()));
         failures.extend(check_width(&e.name, &report));
     }
     for other in [
@@ -236,10 +236,6 @@ fn check_player(
         }
     }
     out
-}
-
-fn loaded_questions(e: &lesson::Entry) -> usize {
-    e.spec.questions.len()
 }
 
 /// Every question said wrong to a wrong answer and right to raytree's.

@@ -108,18 +108,11 @@ fn typed_by_hand(q: &Question, printed: &str) -> Result<(), String> {
         return Ok(());
     }
     for (field, text) in [("ask", &q.ask), ("hint", &q.hint), ("worked", &q.worked)] {
-        let mut rest = text.as_str();
-        while let Some(i) = rest.find(&shown) {
-            let before = rest[..i].chars().next_back();
-            let after = rest[i + shown.len()..].chars().next();
-            let digit = |c: Option<char>| c.is_some_and(|c| c.is_ascii_digit() || c == '.');
-            if !digit(before) && !digit(after) {
-                return Err(format!(
-                    "{field} types the answer {shown} by hand; quote it as {{{{{}}}}}",
-                    q.answer
-                ));
-            }
-            rest = &rest[i + shown.len()..];
+        if token(text, &shown).is_some() {
+            return Err(format!(
+                "{field} types the answer {shown} by hand; quote it as {{{{{}}}}}",
+                q.answer
+            ));
         }
     }
     Ok(())
