@@ -15,7 +15,7 @@ use crate::geometry::triangle::{ShearedRay, Triangle};
 use crate::geometry::unit_cone::Cone;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
-use crate::methods::{IntersectionMethods, SphereMethod, TriangleMethod};
+use crate::methods::{IntersectionMethods, TriangleMethod};
 
 /// The primitive shapes, in their own (object) space.
 #[derive(Clone, Debug, PartialEq)]
@@ -55,11 +55,7 @@ impl Shape {
         match self {
             Shape::Sphere(s) => {
                 tested.primitives += 1;
-                if methods.sphere == SphereMethod::Lecture {
-                    s.lecture_roots(ray)
-                } else {
-                    s.roots(ray)
-                }
+                s.roots_by(ray, methods.sphere)
             }
             Shape::Plane(p) => {
                 tested.primitives += 1;

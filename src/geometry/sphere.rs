@@ -12,6 +12,7 @@ use glam::DVec3;
 use crate::geometry::hit::{Roots, Surface};
 use crate::math::float::gamma;
 use crate::math::ray::Ray;
+use crate::methods::SphereMethod;
 
 /// A sphere with a center and a radius.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -41,6 +42,17 @@ pub struct UnitQuadratic {
 }
 
 impl Sphere {
+    /// The roots by the scene's chosen method: [`Sphere::roots`] or
+    /// [`Sphere::lecture_roots`].
+    #[inline]
+    pub fn roots_by(&self, ray: &Ray, method: SphereMethod) -> Roots {
+        if method == SphereMethod::Lecture {
+            self.lecture_roots(ray)
+        } else {
+            self.roots(ray)
+        }
+    }
+
     /// The stable roots (Ray Tracing Gems, ch. 7, eq. 7.11–7.13): with `f = S - C`,
     /// `a = c·c` and `b = f·c`, the discriminant is `Δ = r² - |f - (b/a)c|²`, the
     /// squared distance from the center to the line subtracted from `r²` (no

@@ -34,7 +34,7 @@ use crate::scene::Scene;
 use crate::shading::material::Material;
 use crate::shading::optics::{self, Media, Shares};
 use crate::shading::phong;
-use crate::trace::accelerator::Accelerator;
+use crate::trace::accelerator::{Accelerator, Candidate};
 use crate::trace::recent::RecentBlockers;
 use crate::trace::recorder::{
     BoxVisit, Branch, BranchEvent, HitEvent, LightEvent, LocalEvent, NoRecorder, RayKind, RayStart,
@@ -245,8 +245,10 @@ impl<'s> Tracer<'s> {
             &mut t_closest,
             &mut outer,
             seen,
-            |i, t_closest| {
-                let roots = self.scene.objects[i].roots_within(
+            |candidate, t_closest| {
+                let i = candidate.object();
+                let roots = candidate.roots(
+                    &self.scene.objects,
                     ray,
                     methods,
                     *t_closest,
@@ -421,7 +423,11 @@ impl<'s> Tracer<'s> {
         let recent = self.recent.get(light).map(|object| {
             (
                 object,
-                self.shadow_test(object, &event.ray, &mut event.tested),
+                self.shadow_test(
+                    &Candidate::Object(object as u32),
+                    &event.ray,
+                    &mut event.tested,
+                ),
             )
         });
         event.recent = recent.map(|(object, t)| RecentTry {
@@ -444,11 +450,22 @@ impl<'s> Tracer<'s> {
 
     /// Where a shadow ray meets object `i` before its light, if it does.
     #[inline]
-    fn shadow_test(&self, i: usize, ray: &Ray, tested: &mut TestCounts) -> Option<f64> {
+    fn shadow_test(
+        &self,
+        candidate: &Candidate,
+        ray: &Ray,
+        tested: &mut TestCounts,
+    ) -> Option<f64> {
         let methods = self.scene.settings.intersection_methods();
-        self.scene.objects[i]
-            .roots_within(ray, methods, SHADOW_T_MAX, Search::Any, tested)
-            .first_in(0.0, SHADOW_T_MAX)
+        (candidate.roots(
+            &self.scene.objects,
+            ray,
+            methods,
+            SHADOW_T_MAX,
+            Search::Any,
+            tested,
+        ))
+        .first_in(0.0, SHADOW_T_MAX)
     }
 
     /// The first opaque object a shadow ray meets before its light (the search
@@ -464,13 +481,17 @@ impl<'s> Tracer<'s> {
         let mut transmitted = 1.0;
         let mut blocked = None;
         let mut inner = TestCounts::default();
-        let _ = self
-            .accel
-            .visit(ray, 0.0, &mut SHADOW_T_MAX.clone(), tested, |i, _| {
+        let _ = self.accel.visit(
+            ray,
+            0.0,
+            &mut SHADOW_T_MAX.clone(),
+            tested,
+            |candidate, _| {
+                let i = candidate.object();
                 if Some(i) == skip {
                     return ControlFlow::Continue(());
                 }
-                if let Some(t) = self.shadow_test(i, ray, &mut inner) {
+                if let Some(t) = self.shadow_test(candidate, ray, &mut inner) {
                     let k = self.scene.material_of(i).transparent;
                     if k == 0.0 {
                         blocked = Some(ShadowOutcome::Blocked { object: i, t });
@@ -479,7 +500,8 @@ impl<'s> Tracer<'s> {
                     transmitted *= k;
                 }
                 ControlFlow::Continue(())
-            });
+            },
+        );
         tested.add(inner);
         blocked.unwrap_or(ShadowOutcome::Reaches { transmitted })
     }
