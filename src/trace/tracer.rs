@@ -245,9 +245,14 @@ impl<'s> Tracer<'s> {
             &mut t_closest,
             &mut outer,
             seen,
+            // Inlined into each traversal, as the shape tests are: out of
+            // line, a call per object tested was 8 % of a render's
+            // instructions on a scene of four objects.
+            #[inline(always)]
             |candidate, t_closest| {
                 let i = candidate.object();
-                let roots = candidate.roots(
+                let roots = self.accel.roots(
+                    candidate,
                     &self.scene.objects,
                     ray,
                     methods,
@@ -448,7 +453,7 @@ impl<'s> Tracer<'s> {
         event
     }
 
-    /// Where a shadow ray meets object `i` before its light, if it does.
+    /// Where a shadow ray meets the candidate's object before its light, if it does.
     #[inline]
     fn shadow_test(
         &self,
@@ -456,16 +461,21 @@ impl<'s> Tracer<'s> {
         ray: &Ray,
         tested: &mut TestCounts,
     ) -> Option<f64> {
-        let methods = self.scene.settings.intersection_methods();
-        (candidate.roots(
+        let (objects, methods) = (
             &self.scene.objects,
-            ray,
-            methods,
-            SHADOW_T_MAX,
-            Search::Any,
-            tested,
-        ))
-        .first_in(0.0, SHADOW_T_MAX)
+            self.scene.settings.intersection_methods(),
+        );
+        (self.accel)
+            .roots(
+                candidate,
+                objects,
+                ray,
+                methods,
+                SHADOW_T_MAX,
+                Search::Any,
+                tested,
+            )
+            .first_in(0.0, SHADOW_T_MAX)
     }
 
     /// The first opaque object a shadow ray meets before its light (the search
@@ -486,6 +496,7 @@ impl<'s> Tracer<'s> {
             0.0,
             &mut SHADOW_T_MAX.clone(),
             tested,
+            #[inline(always)]
             |candidate, _| {
                 let i = candidate.object();
                 if Some(i) == skip {
