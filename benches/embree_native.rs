@@ -166,8 +166,10 @@ struct Embree {
     commit_scene: unsafe extern "C" fn(Handle),
     intersect1: unsafe extern "C" fn(Handle, *mut RayHit, *mut c_void),
     device: Handle,
-    // Kept open while the functions above are in use.
-    _library: libloading::Library,
+    // Never closed: TBB's worker threads, started by Embree, may still be
+    // running the library's code as the process ends, and crash if it is
+    // unloaded under them.
+    _library: std::mem::ManuallyDrop<libloading::Library>,
 }
 
 extern "C" fn report_error(_: *mut c_void, code: i32, message: *const c_char) {
@@ -221,7 +223,7 @@ impl Embree {
                 commit_scene: get!("rtcCommitScene"),
                 intersect1: get!("rtcIntersect1"),
                 device,
-                _library: library,
+                _library: std::mem::ManuallyDrop::new(library),
             };
             (embree.set_error_function)(device, report_error, std::ptr::null_mut());
             embree
