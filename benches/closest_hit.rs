@@ -1,23 +1,37 @@
-//! raytree's closest-hit loop on the Gaspra mesh, alone, for the side-by-side
-//! with Embree (`benches/embree/compare.sh` drives it; see there).
+//! raytree's closest-hit loop alone, for the side-by-sides with Embree
+//! (`benches/embree/compare.sh` through Python, `benches/embree/native.sh`
+//! natively; see there).
 //!
 //! ```text
 //! closest_hit export DIR [--width W --height H --random N]
-//! closest_hit time DIR [--set primary|random] [--passes P]
+//! closest_hit time DIR [--set primary|random|inside] [--passes P]
+//! closest_hit spheres export DIR N [--width W --height H]
+//! closest_hit spheres time DIR N [--passes P]
 //! ```
 //!
 //! `export` writes into DIR the Gaspra mesh's triangles in world space
-//! (`triangles.f32`: 9 floats each) and two sets of rays (`primary.f64`,
-//! `random.f64`: 6 doubles each, origin then direction): exactly raytree's
-//! primary rays of `scenes/gaspra.json` at W×H (default 640×480, one per pixel
-//! through its center), and N rays (default 300,000, fixed seed) from random
-//! points on a sphere around the mesh toward random points in its box.
+//! (`triangles.f32`: 9 floats each) and three sets of rays (`primary.f64`,
+//! `random.f64`, `inside.f64`: 6 doubles each, origin then direction): exactly
+//! raytree's primary rays of `scenes/gaspra.json` at W×H (default 640×480, one
+//! per pixel through its center); N rays (default 300,000, fixed seed) from
+//! random points on a sphere around the mesh toward random points in its box;
+//! and N rays from random points inside the mesh's box in random directions
+//! (most start in empty space between the asteroid's box and its surface, some
+//! inside the asteroid).
 //!
 //! `time` reads the mesh and a ray set back, builds raytree's hierarchy over the
 //! world-space triangles, and times the closest hit of every ray on one thread
 //! (the watertight test in f64 under the 4-wide single-precision hierarchy, as
 //! the renderer runs it), P passes (default 3). It prints one line:
 //! `seconds=<fastest pass> rays=<n> hits=<n> t_sum=<Σ t over hits>`.
+//!
+//! `spheres export` writes the spheres of `raytree generate spheres N` (seed 1,
+//! the scene `benches/scenes.rs` times; its floor plane left out) as
+//! `spheres-N.f64` (4 doubles each: center, radius) and that scene's primary
+//! rays at W×H (default 320×240, as `benches/scenes.rs`) as `spheres-N-rays.f64`.
+//! `spheres time` times what the renderer does for each of those rays:
+//! `Tracer::closest_hit` on a tracer over a scene of those spheres alone, under
+//! the hierarchy (`accel: bvh`), with the no-op recorder; it prints the same line.
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
@@ -27,8 +41,10 @@ use raytree::geometry::hit::{Search, TestCounts};
 use raytree::geometry::mesh::Mesh;
 use raytree::geometry::object::Shape;
 use raytree::math::ray::Ray;
-use raytree::methods::TriangleMethod;
+use raytree::methods::{Accel, TriangleMethod};
 use raytree::trace::pixel::sample_points;
+use raytree::trace::recorder::NoRecorder;
+use raytree::trace::tracer::Tracer;
 
 fn main() {
     let args: Vec<String> = std::env::args()
@@ -48,18 +64,38 @@ fn main() {
         .position(|a| a == "--set")
         .and_then(|i| args.get(i + 1))
         .map_or("primary", String::as_str);
-    match (args.first().map(String::as_str), args.get(1)) {
-        (Some("export"), Some(dir)) => export(
+    // The words that are not flags or their values.
+    let words: Vec<&str> = args
+        .iter()
+        .enumerate()
+        .filter(|&(i, a)| !a.starts_with("--") && (i == 0 || !args[i - 1].starts_with("--")))
+        .map(|(_, a)| a.as_str())
+        .collect();
+    let count = |word: &str| {
+        word.parse::<usize>()
+            .ok()
+            .filter(|&n| n > 0)
+            .unwrap_or_else(|| fail(&format!("sphere count: {word}")))
+    };
+    match words.as_slice() {
+        ["export", dir] => export(
             Path::new(dir),
             flag("--width", 640),
             flag("--height", 480),
             flag("--random", 300_000),
         ),
-        (Some("time"), Some(dir)) => time(Path::new(dir), set, flag("--passes", 3)),
+        ["time", dir] => time(Path::new(dir), set, flag("--passes", 3)),
+        ["spheres", "export", dir, n] => export_spheres(
+            Path::new(dir),
+            count(n),
+            flag("--width", 320),
+            flag("--height", 240),
+        ),
+        ["spheres", "time", dir, n] => time_spheres(Path::new(dir), count(n), flag("--passes", 3)),
         // `cargo test --benches` runs every bench target once: nothing to do.
         _ if args.is_empty() || args.iter().any(|a| a == "--test") => {}
         _ => fail(
-            "usage: closest_hit export DIR [--width W --height H --random N] | time DIR [--set primary|random] [--passes P]",
+            "usage: closest_hit export DIR [--width W --height H --random N] | time DIR [--set primary|random|inside] [--passes P] | spheres export DIR N [--width W --height H] | spheres time DIR N [--passes P]",
         ),
     }
 }
@@ -128,11 +164,28 @@ fn export(dir: &Path, width: usize, height: usize, random: usize) {
         })
         .collect();
     write_rays(&dir.join("random.f64"), &random_rays);
+    let mut rng = fastrand::Rng::with_seed(19);
+    let inside: Vec<Ray> = (0..random)
+        .map(|_| {
+            let at = DVec3::new(rng.f64(), rng.f64(), rng.f64());
+            let origin = bounds.min + at * (bounds.max - bounds.min);
+            // Uniform over directions: a point drawn in the unit ball, away from its center.
+            let dir = loop {
+                let d = DVec3::new(rng.f64(), rng.f64(), rng.f64()) * 2.0 - DVec3::ONE;
+                if (1e-6..=1.0).contains(&d.length_squared()) {
+                    break d.normalize();
+                }
+            };
+            Ray::new(origin, dir)
+        })
+        .collect();
+    write_rays(&dir.join("inside.f64"), &inside);
     eprintln!(
-        "wrote {} triangles, {} primary and {} random rays to {}",
+        "wrote {} triangles, {} primary, {} random and {} inside rays to {}",
         triangles.len(),
         primary.len(),
         random_rays.len(),
+        inside.len(),
         dir.display()
     );
 }
@@ -161,6 +214,20 @@ fn read<const N: usize>(path: &Path) -> Vec<[u8; N]> {
         .collect()
 }
 
+fn read_doubles(path: &Path) -> Vec<f64> {
+    read::<8>(path)
+        .into_iter()
+        .map(f64::from_le_bytes)
+        .collect()
+}
+
+fn read_rays(path: &Path) -> Vec<Ray> {
+    read_doubles(path)
+        .chunks_exact(6)
+        .map(|v| Ray::new(DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5])))
+        .collect()
+}
+
 fn time(dir: &Path, set: &str, passes: usize) {
     let floats: Vec<f64> = read::<4>(&dir.join("triangles.f32"))
         .into_iter()
@@ -172,14 +239,7 @@ fn time(dir: &Path, set: &str, passes: usize) {
         .map(|f| [3 * f, 3 * f + 1, 3 * f + 2])
         .collect();
     let mesh = Mesh::new(positions, vec![], faces, vec![]);
-    let values: Vec<f64> = read::<8>(&dir.join(format!("{set}.f64")))
-        .into_iter()
-        .map(f64::from_le_bytes)
-        .collect();
-    let rays: Vec<Ray> = values
-        .chunks_exact(6)
-        .map(|v| Ray::new(DVec3::new(v[0], v[1], v[2]), DVec3::new(v[3], v[4], v[5])))
-        .collect();
+    let rays = read_rays(&dir.join(format!("{set}.f64")));
     let mut best = f64::INFINITY;
     let (mut hits, mut t_sum) = (0, 0.0);
     for _ in 0..passes.max(1) {
@@ -201,6 +261,77 @@ fn time(dir: &Path, set: &str, passes: usize) {
         }
         best = best.min(start.elapsed().as_secs_f64());
         std::hint::black_box(tested);
+    }
+    println!(
+        "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",
+        rays.len()
+    );
+}
+
+/// The scene of `raytree generate spheres n` (seed 1) with its spheres alone,
+/// under the hierarchy.
+fn spheres_scene(n: usize) -> raytree::scene::Scene {
+    let text = raytree::scene::generate::random_spheres(n, 1);
+    let mut scene = raytree::scene::loader::parse(&text, "random.json")
+        .unwrap_or_else(|e| fail(&format!("{e:#}")));
+    scene
+        .objects
+        .retain(|o| matches!(o.shape, Shape::Sphere(_)));
+    if scene.objects.len() != n || scene.objects.iter().any(|o| o.transform.is_some()) {
+        fail("the generated scene's spheres are not n untransformed spheres");
+    }
+    scene.settings.accel = Accel::Bvh;
+    scene
+}
+
+fn export_spheres(dir: &Path, n: usize, width: usize, height: usize) {
+    std::fs::create_dir_all(dir).unwrap_or_else(|e| fail(&format!("{}: {e}", dir.display())));
+    let mut scene = spheres_scene(n);
+    scene.settings.width = width as u32;
+    scene.settings.height = height as u32;
+    let spheres: Vec<f64> = scene
+        .objects
+        .iter()
+        .flat_map(|o| match &o.shape {
+            Shape::Sphere(s) => [s.center.x, s.center.y, s.center.z, s.radius],
+            _ => unreachable!("spheres only"),
+        })
+        .collect();
+    write(
+        &dir.join(format!("spheres-{n}.f64")),
+        &spheres,
+        f64::to_le_bytes,
+    );
+    let camera = scene.camera();
+    let rays: Vec<Ray> = (0..height as u32)
+        .flat_map(|y| (0..width as u32).map(move |x| (x, y)))
+        .flat_map(|(x, y)| sample_points(x, y, 1))
+        .map(|(sx, sy)| camera.pixel_ray(sx, sy))
+        .collect();
+    write_rays(&dir.join(format!("spheres-{n}-rays.f64")), &rays);
+    eprintln!(
+        "wrote {n} spheres and {} primary rays to {}",
+        rays.len(),
+        dir.display()
+    );
+}
+
+fn time_spheres(dir: &Path, n: usize, passes: usize) {
+    let scene = spheres_scene(n);
+    let tracer = Tracer::new(&scene);
+    let rays = read_rays(&dir.join(format!("spheres-{n}-rays.f64")));
+    let mut best = f64::INFINITY;
+    let (mut hits, mut t_sum) = (0, 0.0);
+    for _ in 0..passes.max(1) {
+        let start = Instant::now();
+        (hits, t_sum) = (0, 0.0);
+        for ray in &rays {
+            if let Some((_, t, _)) = tracer.closest_hit(ray, 0.0, f64::INFINITY, &mut NoRecorder) {
+                hits += 1;
+                t_sum += t;
+            }
+        }
+        best = best.min(start.elapsed().as_secs_f64());
     }
     println!(
         "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",

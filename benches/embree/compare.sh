@@ -40,7 +40,7 @@ fi
 embree_version=$("$venv/bin/pip" show embreex 2>/dev/null | sed -n 's/^Version: //p')
 
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p raytree-benches --example closest_hit
-closest_hit="$root/target/release/examples/closest_hit"
+closest_hit="${CARGO_TARGET_DIR:-$root/target}/release/examples/closest_hit"
 
 data=$(mktemp -d)
 trap 'rm -rf "$data"' EXIT
