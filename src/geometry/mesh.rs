@@ -105,22 +105,33 @@ impl Mesh {
         let sheared = ShearedRay::new(ray);
         let mut nearest = None;
         let mut faces = 0;
-        let _ = self
-            .bvh
-            .traverse(&RayBox::new(ray), 0.0, &mut t_max, tested, |at, t_max| {
-                faces += 1;
-                let tri = &self.leaf_triangles[at];
-                if let Some(hit) = hit_triangle(tri, ray, &sheared, method, *t_max) {
-                    *t_max = hit.t;
-                    nearest = Some((hit.t, self.leaf_faces[at]));
-                    if search == Search::Any {
-                        return ControlFlow::Break(());
+        let hit = |tri: &Triangle, t_max: f64| match method {
+            TriangleMethod::Watertight => tri.watertight_t(&sheared, 0.0, t_max),
+            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, 0.0, t_max).map(|h| h.t),
+        };
+        // The leaves list positions in `leaf_triangles` (see `Mesh::new`): a
+        // leaf is a run of it, tested in order, a hit shrinking `t_max` for the
+        // next, so of equal `t`s the first found is kept.
+        let _ =
+            self.bvh
+                .traverse_leaves(&RayBox::new(ray), 0.0, &mut t_max, tested, |leaf, t_max| {
+                    let first = leaf.start;
+                    for (i, tri) in self.leaf_triangles[leaf].iter().enumerate() {
+                        faces += 1;
+                        if let Some(t) = hit(tri, *t_max) {
+                            *t_max = t;
+                            nearest = Some((t, first + i));
+                            if search == Search::Any {
+                                return ControlFlow::Break(());
+                            }
+                        }
                     }
-                }
-                ControlFlow::Continue(())
-            });
+                    ControlFlow::Continue(())
+                });
         tested.primitives += faces;
-        nearest.map_or(Roots::NONE, |(t, face)| Roots::on_face(t, face))
+        nearest.map_or(Roots::NONE, |(t, at)| {
+            Roots::on_face(t, self.leaf_faces[at])
+        })
     }
 
     #[inline]
