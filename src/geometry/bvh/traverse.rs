@@ -103,7 +103,12 @@ impl Bvh {
                     seen(node.lane(lane), mask & (1 << lane) != 0);
                 }
                 let n = mask.count_ones() as usize;
-                if n > 0 {
+                if n == 1 {
+                    // One box met (most often): nothing to order.
+                    at = node.children[mask.trailing_zeros() as usize];
+                    continue;
+                }
+                if n > 1 {
                     // Farthest first onto the stack; go on with the nearest.
                     let order = farthest_first(mask, enter);
                     let child = |k: u64| {
