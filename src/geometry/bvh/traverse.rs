@@ -108,7 +108,20 @@ impl Bvh {
                     at = node.children[mask.trailing_zeros() as usize];
                     continue;
                 }
-                if n > 1 {
+                if n == 2 {
+                    // Two (most often of the rest): the farther onto the stack,
+                    // the lower lane counting as the farther of equals, as in
+                    // `farthest_first`.
+                    let (a, b) = (
+                        mask.trailing_zeros() as usize,
+                        31 - mask.leading_zeros() as usize,
+                    );
+                    let (far, near) = if enter[a] < enter[b] { (b, a) } else { (a, b) };
+                    stack.push((node.children[far], enter[far]));
+                    at = node.children[near];
+                    continue;
+                }
+                if n > 2 {
                     // Farthest first onto the stack; go on with the nearest.
                     let order = farthest_first(mask, enter);
                     let child = |k: u64| {
