@@ -102,13 +102,11 @@ impl Mesh {
         search: Search,
         tested: &mut TestCounts,
     ) -> Roots {
-        let sheared = ShearedRay::new(ray);
+        // The shear is prepared at the first leaf, out of line: many rays reach
+        // no leaf (most primary rays miss the mesh), and inlined it slows the walk.
+        let mut sheared = None;
         let mut nearest = None;
         let mut faces = 0;
-        let hit = |tri: &Triangle, t_max: f64| match method {
-            TriangleMethod::Watertight => tri.watertight_t(&sheared, 0.0, t_max),
-            TriangleMethod::MollerTrumbore => tri.moller_trumbore(ray, 0.0, t_max).map(|h| h.t),
-        };
         // The leaves list positions in `leaf_triangles` (see `Mesh::new`): a
         // leaf is a run of it, tested in order, a hit shrinking `t_max` for the
         // next, so of equal `t`s the first found is kept.
@@ -116,9 +114,19 @@ impl Mesh {
             self.bvh
                 .traverse_leaves(&RayBox::new(ray), 0.0, &mut t_max, tested, |leaf, t_max| {
                     let first = leaf.start;
+                    let sheared = match sheared {
+                        Some(s) => s,
+                        None => *sheared.insert(prepare(ray)),
+                    };
                     for (i, tri) in self.leaf_triangles[leaf].iter().enumerate() {
                         faces += 1;
-                        if let Some(t) = hit(tri, *t_max) {
+                        let hit = match method {
+                            TriangleMethod::Watertight => tri.watertight_t(&sheared, 0.0, *t_max),
+                            TriangleMethod::MollerTrumbore => {
+                                tri.moller_trumbore(ray, 0.0, *t_max).map(|h| h.t)
+                            }
+                        };
+                        if let Some(t) = hit {
                             *t_max = t;
                             nearest = Some((t, first + i));
                             if search == Search::Any {
@@ -165,6 +173,13 @@ impl Mesh {
         });
         tri.surface(&hit, normals)
     }
+}
+
+/// The ray prepared for the watertight test, out of the traversal's loop.
+#[cold]
+#[inline(never)]
+fn prepare(ray: &Ray) -> ShearedRay {
+    ShearedRay::new(ray)
 }
 
 /// The hit of `ray` with `tri` in `(0, t_max)` by `method`.
