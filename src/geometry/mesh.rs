@@ -236,6 +236,67 @@ mod tests {
         assert!((s.point - DVec3::new(0.2, 0.7, 0.0)).length() < 1e-16);
     }
 
+    /// The nearest hit of rays through a bumpy sheet of triangles, shared
+    /// edges and vertices included, is the least `t` over every face, bit for
+    /// bit, and the face named meets the ray there; a shadow-ray search finds
+    /// a hit when there is one.
+    #[test]
+    fn the_walk_finds_the_nearest_face_of_all() {
+        let n = 24;
+        let height = |i: usize, j: usize| ((i * 7 + j * 13) % 5) as f64 * 0.05;
+        let positions: Vec<DVec3> = (0..=n)
+            .flat_map(|j| (0..=n).map(move |i| (i, j)))
+            .map(|(i, j)| DVec3::new(i as f64, j as f64, height(i, j)))
+            .collect();
+        let at = |i: usize, j: usize| (j * (n + 1) + i) as u32;
+        let faces: Vec<[u32; 3]> = (0..n)
+            .flat_map(|j| (0..n).map(move |i| (i, j)))
+            .flat_map(|(i, j)| {
+                [
+                    [at(i, j), at(i + 1, j), at(i + 1, j + 1)],
+                    [at(i, j), at(i + 1, j + 1), at(i, j + 1)],
+                ]
+            })
+            .collect();
+        let m = Mesh::new(positions, vec![], faces, vec![]);
+        let mut rng = fastrand::Rng::with_seed(11);
+        let mut hits = 0;
+        for k in 0..3000 {
+            let origin = DVec3::new(rng.f64() * 30.0 - 3.0, rng.f64() * 30.0 - 3.0, 3.0);
+            // Every third ray aimed at a vertex, where faces meet.
+            let target = if k % 3 == 0 {
+                let (i, j) = (rng.usize(..=n), rng.usize(..=n));
+                DVec3::new(i as f64, j as f64, height(i, j))
+            } else {
+                DVec3::new(rng.f64() * 24.0, rng.f64() * 24.0, 0.0)
+            };
+            let ray = Ray::new(origin, target - origin);
+            for method in [TriangleMethod::Watertight, TriangleMethod::MollerTrumbore] {
+                let each = |f: usize| {
+                    hit_triangle(
+                        &m.triangle(f),
+                        &ray,
+                        &ShearedRay::new(&ray),
+                        method,
+                        f64::INFINITY,
+                    )
+                    .map(|h| h.t)
+                };
+                let least = (0..m.faces.len()).filter_map(each).reduce(f64::min);
+                let mut tested = TestCounts::default();
+                let roots = m.roots(&ray, method, f64::INFINITY, Search::Closest, &mut tested);
+                assert_eq!(roots.as_slice().first().copied(), least, "ray {k}");
+                if let Some(t) = least {
+                    hits += 1;
+                    assert_eq!(each(roots.face() as usize), Some(t), "ray {k}");
+                }
+                let any = m.roots(&ray, method, f64::INFINITY, Search::Any, &mut tested);
+                assert_eq!(any.as_slice().is_empty(), least.is_none(), "ray {k}");
+            }
+        }
+        assert!(hits > 3000, "{hits} hits");
+    }
+
     #[test]
     fn t_max_cuts_the_search() {
         let m = square();

@@ -109,14 +109,8 @@ impl Bvh {
                     continue;
                 }
                 if n == 2 {
-                    // Two (most often of the rest): the farther onto the stack,
-                    // the lower lane counting as the farther of equals, as in
-                    // `farthest_first`.
-                    let (a, b) = (
-                        mask.trailing_zeros() as usize,
-                        31 - mask.leading_zeros() as usize,
-                    );
-                    let (far, near) = if enter[a] < enter[b] { (b, a) } else { (a, b) };
+                    // Two (most often of the rest): the farther onto the stack.
+                    let (far, near) = farther_of_two(mask, &enter);
                     stack.push((node.children[far], enter[far]));
                     at = node.children[near];
                     continue;
@@ -146,6 +140,17 @@ impl Bvh {
             }
         }
     }
+}
+
+/// The two lanes of `mask`, the farther first, the lower lane counting as the
+/// farther of equals (as in [`farthest_first`]).
+#[inline(always)]
+fn farther_of_two(mask: u32, enter: &[f32; WIDTH]) -> (usize, usize) {
+    let (a, b) = (
+        mask.trailing_zeros() as usize,
+        31 - mask.leading_zeros() as usize,
+    );
+    if enter[a] < enter[b] { (b, a) } else { (a, b) }
 }
 
 /// The lanes of `mask` ordered by where the ray enters them, farthest first,
@@ -299,5 +304,81 @@ fn reciprocal(inv: f64) -> f32 {
         f32::NAN
     } else {
         f
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lanes met, ordered as the stable insertion sort of the hits in lane
+    /// order did before: farthest first, equal entries (a −0 equal to a +0)
+    /// in lane order.
+    fn stable_order(mask: u32, enter: [f32; WIDTH]) -> Vec<usize> {
+        let mut hits: Vec<(f32, usize)> = (0..WIDTH)
+            .filter(|&l| mask & (1 << l) != 0)
+            .map(|l| (enter[l], l))
+            .collect();
+        for i in 1..hits.len() {
+            let mut j = i;
+            while j > 0 && hits[j - 1].0 < hits[j].0 {
+                hits.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        hits.into_iter().map(|(_, l)| l).collect()
+    }
+
+    /// The network, and the shortcut for two lanes, give the old order for
+    /// every mask, with entries drawn from a few values so that ties (and
+    /// zeros of both signs) are common.
+    #[test]
+    fn lanes_come_in_the_order_the_stable_sort_gave() {
+        let mut rng = fastrand::Rng::with_seed(3);
+        let values = [0.0f32, -0.0, 1.0, 1.5, 2.0, f32::INFINITY];
+        for _ in 0..20_000 {
+            let mask = rng.u32(0..16);
+            let enter = [(); WIDTH].map(|_| values[rng.usize(..values.len())]);
+            let want = stable_order(mask, enter);
+            let keys = farthest_first(mask, enter);
+            let got: Vec<usize> = keys[..want.len()]
+                .iter()
+                .map(|k| 3 - ((k - 1) & 3) as usize)
+                .collect();
+            assert_eq!(got, want, "mask {mask:04b}, entries {enter:?}");
+            assert!(keys[want.len()..].iter().all(|&k| k == 0));
+            if want.len() == 2 {
+                let (far, near) = farther_of_two(mask, &enter);
+                assert_eq!([far, near], want[..], "two lanes: {enter:?}");
+            }
+        }
+    }
+
+    /// The one-instruction skip keeps what `f32x4::max` and `min` keep, up to
+    /// the sign of a zero, NaNs included.
+    #[test]
+    fn skipping_nan_matches_max_and_min() {
+        let values = [
+            f32::NAN,
+            0.0,
+            -0.0,
+            1.0,
+            -2.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+        ];
+        for &a in &values[1..] {
+            for &t in &values {
+                let (acc, t4) = (f32x4::splat(a), f32x4::splat(t));
+                let pairs = [
+                    (max_skipping_nan(acc, t4), acc.max(t4)),
+                    (min_skipping_nan(acc, t4), acc.min(t4)),
+                ];
+                for (fast, slow) in pairs {
+                    let (fast, slow) = (fast.to_array()[0], slow.to_array()[0]);
+                    assert!(fast == slow, "{a} with {t}: {fast} against {slow}");
+                }
+            }
+        }
     }
 }
