@@ -47,6 +47,17 @@ pub struct TriangleHit {
     pub bary: DVec3,
 }
 
+/// A watertight hit before its weights are divided out: `t`, the edge
+/// functions and their sum.
+#[derive(Clone, Copy)]
+struct Edges {
+    t: f64,
+    u: f64,
+    v: f64,
+    w: f64,
+    det: f64,
+}
+
 /// A ray prepared for the watertight test: the axis it runs most along becomes z,
 /// and the shear that makes it run along +z (Woop et al., section 3).
 #[derive(Clone, Copy, Debug)]
@@ -115,16 +126,50 @@ impl Triangle {
     /// and, as pbrt-v4 adds, never within its own rounding error of `t = 0`.
     #[inline]
     pub fn watertight(&self, ray: &ShearedRay, t_min: f64, t_max: f64) -> Option<TriangleHit> {
-        let [kx, ky, kz] = ray.k;
+        self.watertight_edges(ray, t_min, t_max)
+            .map(|Edges { t, u, v, w, det }| TriangleHit {
+                t,
+                bary: DVec3::new(u, v, w) / det,
+            })
+    }
+
+    /// [`Triangle::watertight`]'s `t` alone, for a search that needs only the
+    /// nearest hit: the weights wait for [`Triangle::surface`] of the one kept.
+    #[inline(always)]
+    pub fn watertight_t(&self, ray: &ShearedRay, t_min: f64, t_max: f64) -> Option<f64> {
+        self.watertight_edges(ray, t_min, t_max).map(|e| e.t)
+    }
+
+    /// The test for the ray's axis permutation, chosen once here so that the
+    /// test proper reads each coordinate at a fixed place, with no branch.
+    #[inline(always)]
+    fn watertight_edges(&self, ray: &ShearedRay, t_min: f64, t_max: f64) -> Option<Edges> {
+        match ray.k {
+            [1, 2, 0] => self.watertight_in::<1, 2, 0>(ray, t_min, t_max),
+            [2, 1, 0] => self.watertight_in::<2, 1, 0>(ray, t_min, t_max),
+            [2, 0, 1] => self.watertight_in::<2, 0, 1>(ray, t_min, t_max),
+            [0, 2, 1] => self.watertight_in::<0, 2, 1>(ray, t_min, t_max),
+            [0, 1, 2] => self.watertight_in::<0, 1, 2>(ray, t_min, t_max),
+            _ => self.watertight_in::<1, 0, 2>(ray, t_min, t_max),
+        }
+    }
+
+    /// The test proper, with the world axes `KX, KY, KZ` becoming x, y, z.
+    #[inline(always)]
+    fn watertight_in<const KX: usize, const KY: usize, const KZ: usize>(
+        &self,
+        ray: &ShearedRay,
+        t_min: f64,
+        t_max: f64,
+    ) -> Option<Edges> {
         let s = ray.shear;
-        let (a, b, c) = (
-            self.a - ray.origin,
-            self.b - ray.origin,
-            self.c - ray.origin,
-        );
-        let (ax, ay) = (a[kx] - s.x * a[kz], a[ky] - s.y * a[kz]);
-        let (bx, by) = (b[kx] - s.x * b[kz], b[ky] - s.y * b[kz]);
-        let (cx, cy) = (c[kx] - s.x * c[kz], c[ky] - s.y * c[kz]);
+        let o = ray.origin;
+        // Each vertex moved to the ray's origin, only on the axes read.
+        let to_origin = |p: DVec3| (p[KX] - o[KX], p[KY] - o[KY], p[KZ] - o[KZ]);
+        let (a, b, c) = (to_origin(self.a), to_origin(self.b), to_origin(self.c));
+        let (ax, ay) = (a.0 - s.x * a.2, a.1 - s.y * a.2);
+        let (bx, by) = (b.0 - s.x * b.2, b.1 - s.y * b.2);
+        let (cx, cy) = (c.0 - s.x * c.2, c.1 - s.y * c.2);
         // Edge functions: the signed areas of the sheared 2D triangles the origin
         // makes with each edge.
         let u = cx * by - cy * bx;
@@ -139,7 +184,7 @@ impl Triangle {
         }
         // Scaled distance, compared before dividing (the paper's sign trick, here
         // written as a plain division since we keep both sides).
-        let (az, bz, cz) = (s.z * a[kz], s.z * b[kz], s.z * c[kz]);
+        let (az, bz, cz) = (s.z * a.2, s.z * b.2, s.z * c.2);
         let t = (u * az + v * bz + w * cz) / det;
         if !(t > t_min && t < t_max) {
             return None;
@@ -160,10 +205,7 @@ impl Triangle {
         if t.abs() <= delta_t {
             return None;
         }
-        Some(TriangleHit {
-            t,
-            bary: DVec3::new(u, v, w) / det,
-        })
+        Some(Edges { t, u, v, w, det })
     }
 
     /// The textbook Möller–Trumbore test, both sides, within `(t_min, t_max)`: not

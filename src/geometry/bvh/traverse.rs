@@ -2,7 +2,7 @@
 //! each single-precision box test widened by its rounding bound so that a ray
 //! that meets a box in exact arithmetic is never culled ([`RayBox4`]).
 
-use std::ops::ControlFlow;
+use std::ops::{ControlFlow, Range};
 
 use wide::f32x4;
 
@@ -44,8 +44,42 @@ impl Bvh {
         t_min: f64,
         t_max: &mut f64,
         tested: &mut TestCounts,
-        mut seen: impl FnMut(Bounds, bool),
+        seen: impl FnMut(Bounds, bool),
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.walk(ray, t_min, t_max, tested, seen, |leaf, t_max| {
+            for &p in &self.order[leaf] {
+                visit(p as usize, t_max)?;
+            }
+            ControlFlow::Continue(())
+        })
+    }
+
+    /// [`Bvh::traverse`] a leaf at a time: `visit(leaf, t_max)` gets the leaf's
+    /// run of [`Bvh::leaf_order`], so a caller that keeps its primitives in
+    /// that order (a mesh's triangles) reads them side by side, with no index
+    /// per primitive, and may test them together.
+    #[inline]
+    pub fn traverse_leaves(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.walk(ray, t_min, t_max, tested, |_, _| {}, visit)
+    }
+
+    #[inline(always)]
+    fn walk(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        mut seen: impl FnMut(Bounds, bool),
+        mut visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
         if self.nodes.is_empty() {
             return ControlFlow::Continue(());
@@ -59,9 +93,7 @@ impl Bvh {
         let mut reach = RayBox4::reach(*t_max);
         loop {
             if at.is_leaf() {
-                for &p in &self.order[at.primitives()] {
-                    visit(p as usize, t_max)?;
-                }
+                visit(at.primitives(), t_max)?;
                 reach = RayBox4::reach(*t_max);
             } else {
                 let node = &self.nodes[at.0 as usize];
@@ -70,21 +102,30 @@ impl Bvh {
                 for lane in 0..usize::from(node.len) {
                     seen(node.lane(lane), mask & (1 << lane) != 0);
                 }
-                let mut near = [(0.0f32, Child(0)); WIDTH];
-                let mut n = 0;
-                for (lane, entry) in enter.iter().enumerate() {
-                    if mask & (1 << lane) != 0 {
-                        near[n] = (*entry, node.children[lane]);
-                        n += 1;
-                    }
+                let n = mask.count_ones() as usize;
+                if n == 1 {
+                    // One box met (most often): nothing to order.
+                    at = node.children[mask.trailing_zeros() as usize];
+                    continue;
                 }
-                if n > 0 {
+                if n == 2 {
+                    // Two (most often of the rest): the farther onto the stack.
+                    let (far, near) = farther_of_two(mask, &enter);
+                    stack.push((node.children[far], enter[far]));
+                    at = node.children[near];
+                    continue;
+                }
+                if n > 2 {
                     // Farthest first onto the stack; go on with the nearest.
-                    sort_descending(&mut near[..n]);
-                    for &(entry, child) in &near[..n - 1] {
-                        stack.push((child, entry));
+                    let order = farthest_first(mask, enter);
+                    let child = |k: u64| {
+                        let lane = 3 - ((k - 1) & 3) as usize;
+                        (node.children[lane], f32::from_bits(((k - 1) >> 2) as u32))
+                    };
+                    for &k in &order[..n - 1] {
+                        stack.push(child(k));
                     }
-                    at = near[n - 1].1;
+                    at = child(order[n - 1]).0;
                     continue;
                 }
             }
@@ -101,16 +142,43 @@ impl Bvh {
     }
 }
 
-/// Up to four (entry, child) pairs sorted by entry, farthest first (insertion sort).
-#[inline]
-fn sort_descending(hits: &mut [(f32, Child)]) {
-    for i in 1..hits.len() {
-        let mut j = i;
-        while j > 0 && hits[j - 1].0 < hits[j].0 {
-            hits.swap(j - 1, j);
-            j -= 1;
-        }
+/// The two lanes of `mask`, the farther first, the lower lane counting as the
+/// farther of equals (as in [`farthest_first`]).
+#[inline(always)]
+fn farther_of_two(mask: u32, enter: &[f32; WIDTH]) -> (usize, usize) {
+    let (a, b) = (
+        mask.trailing_zeros() as usize,
+        31 - mask.leading_zeros() as usize,
+    );
+    if enter[a] < enter[b] { (b, a) } else { (a, b) }
+}
+
+/// The lanes of `mask` ordered by where the ray enters them, farthest first,
+/// and among equal entries the lower lane first (the order a stable sort of
+/// the hits in lane order gives), each as a key that sorts the same way: the
+/// entry's bits (entries are never negative, and `+ 0.0` makes a −0 a +0, so
+/// the bits order as the numbers do), then three minus the lane, plus one so
+/// that a lane not met (key 0) sorts after every lane met. Five
+/// compare-exchanges with no branch: which boxes a random ray meets, and in
+/// which order, is what a branch predictor cannot guess.
+#[inline(always)]
+fn farthest_first(mask: u32, enter: [f32; WIDTH]) -> [u64; WIDTH] {
+    let mut k = [0u64; WIDTH];
+    for lane in 0..WIDTH {
+        let key = (u64::from((enter[lane] + 0.0).to_bits()) << 2 | (3 - lane) as u64) + 1;
+        k[lane] = if mask & (1 << lane) != 0 { key } else { 0 };
     }
+    let mut exchange = |i: usize, j: usize| {
+        let (a, b) = (k[i], k[j]);
+        k[i] = a.max(b);
+        k[j] = a.min(b);
+    };
+    exchange(0, 1);
+    exchange(2, 3);
+    exchange(0, 2);
+    exchange(1, 3);
+    exchange(1, 2);
+    k
 }
 
 /// A ray prepared for testing four single-precision boxes at once.
@@ -188,12 +256,40 @@ impl RayBox4 {
             let far = node.bounds[1 - self.near[axis]][axis];
             let t0 = (near - self.origin_near[axis]) * self.inv_dir[axis];
             let t1 = (far - self.origin_far[axis]) * self.inv_dir[axis];
-            enter = enter.max(t0);
-            leave = leave.min(t1);
+            enter = max_skipping_nan(enter, t0);
+            leave = min_skipping_nan(leave, t1);
         }
-        let leave = (leave * f32x4::splat(1.0 + 2.0 * GAMMA4)).min(f32x4::splat(reach));
+        // Neither is NaN: `leave` starts at +∞ and skips NaNs, `reach` comes
+        // from a `t_max` that is never NaN.
+        let leave = (leave * f32x4::splat(1.0 + 2.0 * GAMMA4)).fast_min(f32x4::splat(reach));
         (enter.simd_le(leave).to_bitmask(), enter.to_array())
     }
+}
+
+/// `acc` raised to `t` lane by lane, a lane where `t` is NaN left as it was
+/// (`acc` never is NaN). With SSE that is one `maxps` with `t` first: it gives
+/// its second operand when either is NaN, which is the skip itself, where
+/// `f32x4::max` spends four more instructions finding the NaNs. The two differ
+/// only for equal lanes (a zero's sign), which every later comparison treats
+/// alike.
+#[inline(always)]
+fn max_skipping_nan(acc: f32x4, t: f32x4) -> f32x4 {
+    #[cfg(target_feature = "sse")]
+    let m = t.fast_max(acc);
+    #[cfg(not(target_feature = "sse"))]
+    let m = acc.max(t);
+    m
+}
+
+/// `acc` lowered to `t` lane by lane, a lane where `t` is NaN left as it was
+/// (see [`max_skipping_nan`]).
+#[inline(always)]
+fn min_skipping_nan(acc: f32x4, t: f32x4) -> f32x4 {
+    #[cfg(target_feature = "sse")]
+    let m = t.fast_min(acc);
+    #[cfg(not(target_feature = "sse"))]
+    let m = acc.min(t);
+    m
 }
 
 /// A reciprocal direction component in `f32`. One too large for `f32` (the
@@ -208,5 +304,81 @@ fn reciprocal(inv: f64) -> f32 {
         f32::NAN
     } else {
         f
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The lanes met, ordered as the stable insertion sort of the hits in lane
+    /// order did before: farthest first, equal entries (a −0 equal to a +0)
+    /// in lane order.
+    fn stable_order(mask: u32, enter: [f32; WIDTH]) -> Vec<usize> {
+        let mut hits: Vec<(f32, usize)> = (0..WIDTH)
+            .filter(|&l| mask & (1 << l) != 0)
+            .map(|l| (enter[l], l))
+            .collect();
+        for i in 1..hits.len() {
+            let mut j = i;
+            while j > 0 && hits[j - 1].0 < hits[j].0 {
+                hits.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+        hits.into_iter().map(|(_, l)| l).collect()
+    }
+
+    /// The network, and the shortcut for two lanes, give the old order for
+    /// every mask, with entries drawn from a few values so that ties (and
+    /// zeros of both signs) are common.
+    #[test]
+    fn lanes_come_in_the_order_the_stable_sort_gave() {
+        let mut rng = fastrand::Rng::with_seed(3);
+        let values = [0.0f32, -0.0, 1.0, 1.5, 2.0, f32::INFINITY];
+        for _ in 0..20_000 {
+            let mask = rng.u32(0..16);
+            let enter = [(); WIDTH].map(|_| values[rng.usize(..values.len())]);
+            let want = stable_order(mask, enter);
+            let keys = farthest_first(mask, enter);
+            let got: Vec<usize> = keys[..want.len()]
+                .iter()
+                .map(|k| 3 - ((k - 1) & 3) as usize)
+                .collect();
+            assert_eq!(got, want, "mask {mask:04b}, entries {enter:?}");
+            assert!(keys[want.len()..].iter().all(|&k| k == 0));
+            if want.len() == 2 {
+                let (far, near) = farther_of_two(mask, &enter);
+                assert_eq!([far, near], want[..], "two lanes: {enter:?}");
+            }
+        }
+    }
+
+    /// The one-instruction skip keeps what `f32x4::max` and `min` keep, up to
+    /// the sign of a zero, NaNs included.
+    #[test]
+    fn skipping_nan_matches_max_and_min() {
+        let values = [
+            f32::NAN,
+            0.0,
+            -0.0,
+            1.0,
+            -2.0,
+            f32::INFINITY,
+            f32::NEG_INFINITY,
+        ];
+        for &a in &values[1..] {
+            for &t in &values {
+                let (acc, t4) = (f32x4::splat(a), f32x4::splat(t));
+                let pairs = [
+                    (max_skipping_nan(acc, t4), acc.max(t4)),
+                    (min_skipping_nan(acc, t4), acc.min(t4)),
+                ];
+                for (fast, slow) in pairs {
+                    let (fast, slow) = (fast.to_array()[0], slow.to_array()[0]);
+                    assert!(fast == slow, "{a} with {t}: {fast} against {slow}");
+                }
+            }
+        }
     }
 }
