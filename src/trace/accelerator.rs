@@ -35,11 +35,10 @@ pub struct Accelerator {
     always: Vec<u32>,
     /// The structure over the bounded objects.
     structure: Option<Structure>,
-    /// The object index of each of the structure's primitives, where it does
-    /// not hand out object indices itself (all but the BVH).
+    /// The object index of each of the structure's primitives (but the BVH's).
     names: Vec<u32>,
-    /// The hierarchy's objects in the order its leaves list them (the BVH's
-    /// primitives are positions here).
+    /// The hierarchy's objects in the order its leaves list them: a leaf is a
+    /// run of these.
     leaves: Vec<Candidate>,
     /// The corners and vertices of the triangles and polygons in `leaves`.
     vertices: Vec<DVec3>,
@@ -180,7 +179,7 @@ impl Accelerator {
             Level::Auto => None,
             Level::Given(d) => Some(d),
         };
-        let mut structure = match accel {
+        let structure = match accel {
             Accel::Grid => Structure::Grid(match scene.settings.grid_res {
                 Level::Auto => Grid::build(&boxes),
                 Level::Given(side) => Grid::build_with_side(&boxes, side),
@@ -192,19 +191,14 @@ impl Accelerator {
             Accel::Bsp => Structure::Bsp(KdTree::build_to_depth(&boxes, depth)),
             _ => Structure::Bvh(Bvh::build(&boxes)),
         };
-        // The BVH hands out positions in `leaves` (relabelled here); the others
+        // The BVH's leaves are runs of `leaves`; the other structures hand out
         // their own indices, translated through `bounded` as they visit.
         let mut vertices = Vec::new();
-        let (names, leaves) = match &mut structure {
+        let (names, leaves) = match &structure {
             Structure::Bvh(bvh) => {
                 let leaves = (bvh.leaf_order().iter())
                     .map(|&i| Candidate::of(&scene.objects, bounded[i as usize], &mut vertices))
                     .collect();
-                let mut position = vec![0; bounded.len()];
-                for (at, &i) in bvh.leaf_order().iter().enumerate() {
-                    position[i as usize] = at as u32;
-                }
-                bvh.relabel(|i| position[i as usize]);
                 (Vec::new(), leaves)
             }
             _ => (bounded, Vec::new()),
@@ -347,9 +341,12 @@ impl Accelerator {
         let names = &self.names;
         match structure {
             Structure::Bvh(bvh) => {
-                let leaves = &self.leaves;
-                bvh.traverse_seeing(&RayBox::new(ray), t_min, t_max, tested, seen, |p, t| {
-                    visit(&leaves[p], t)
+                let ray = RayBox::new(ray);
+                bvh.traverse_leaves_seeing(&ray, t_min, t_max, tested, seen, |run, t| {
+                    for candidate in &self.leaves[run] {
+                        visit(candidate, t)?;
+                    }
+                    ControlFlow::Continue(())
                 })
             }
             Structure::Grid(g) => g.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {

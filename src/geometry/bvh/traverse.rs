@@ -71,6 +71,21 @@ impl Bvh {
         self.walk(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
+    /// [`Bvh::traverse_leaves`], also calling `seen` for every box tested, as
+    /// [`Bvh::traverse_seeing`] does.
+    #[inline]
+    pub fn traverse_leaves_seeing(
+        &self,
+        ray: &RayBox,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        seen: impl FnMut(Bounds, bool),
+        visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        self.walk(ray, t_min, t_max, tested, seen, visit)
+    }
+
     #[inline(always)]
     fn walk(
         &self,

@@ -10,8 +10,11 @@ use raytree::methods::{Accel, TriangleMethod};
 use raytree::trace::recorder::NoRecorder;
 use raytree::trace::tracer::Tracer;
 
-/// A random scene of every kind of object: spheres, boxes and triangles, some
-/// transformed, two icosphere meshes (one stretched), and a plane.
+/// A random scene of every kind of object: spheres, boxes, triangles and
+/// polygons, some transformed, two icosphere meshes (one stretched), and a
+/// plane. (Under the hierarchy, spheres, triangles and polygons without a
+/// transform are tested as copies kept in its leaf order; the others as
+/// themselves.)
 fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
     let obj = dir.join(format!("ico{seed}.obj"));
     std::fs::write(&obj, raytree::scene::generate::icosphere_obj(2)).unwrap();
@@ -41,7 +44,7 @@ fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
     for i in 0..objects {
         let c = p(10.0);
         let material = ["matte", "mirror", "glass"][i % 3];
-        let shape = match i % 4 {
+        let shape = match i % 6 {
             0 => format!(
                 r#""sphere": {{ "center": {}, "radius": {} }}"#,
                 v(c),
@@ -57,6 +60,21 @@ fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
                 v(c),
                 v(c + p(1.5)),
                 v(c + p(1.5))
+            ),
+            3 => {
+                let (u, w) = (p(1.5), p(1.5));
+                format!(
+                    r#""polygon": {{ "vertices": [{}, {}, {}, {}], "one_sided": {} }}"#,
+                    v(c),
+                    v(c + u),
+                    v(c + u + w),
+                    v(c + w),
+                    i % 12 == 3
+                )
+            }
+            4 => format!(
+                r#""sphere": {{ "center": [0, 0, 0], "radius": 0.4 }}, "transform": [{{ "scale": [1, 0.5, 1.5] }}, {{ "translate": {} }}]"#,
+                v(c)
             ),
             _ => format!(
                 r#""box": {{ "min": [-0.3, -0.3, -0.3], "max": [0.3, 0.3, 0.3] }}, "transform": [{{ "rotate": {{ "axis": {}, "degrees": 40 }} }}, {{ "translate": {} }}]"#,
