@@ -4,7 +4,7 @@
 //!
 //! ```text
 //! closest_hit export DIR [--width W --height H --random N]
-//! closest_hit time DIR [--set primary|random|inside] [--passes P]
+//! closest_hit time DIR [--set primary|random|inside] [--passes P] [--tracer]
 //! closest_hit spheres export DIR N [--width W --height H]
 //! closest_hit spheres time DIR N [--passes P]
 //! ```
@@ -24,6 +24,11 @@
 //! (the watertight test in f64 under the 4-wide single-precision hierarchy, as
 //! the renderer runs it), P passes (default 3). It prints one line:
 //! `seconds=<fastest pass> rays=<n> hits=<n> t_sum=<Σ t over hits>`.
+//! With `--tracer` it times instead the tracer's own search, as the renderer
+//! runs it for every ray: `Tracer::closest_hit` (through the scene's objects,
+//! counting its tests, with the no-op recorder) on a scene of `gaspra.json`
+//! whose one object is that same world-space mesh. The two lines' difference
+//! is the tracer's own work around the loop.
 //!
 //! `spheres export` writes the spheres of `raytree generate spheres N` (seed 1,
 //! the scene `benches/scenes.rs` times; its floor plane left out) as
@@ -34,12 +39,13 @@
 //! the hierarchy (`accel: bvh`), with the no-op recorder; it prints the same line.
 
 use std::path::{Path, PathBuf};
+use std::sync::Arc;
 use std::time::Instant;
 
 use glam::DVec3;
 use raytree::geometry::hit::{Search, TestCounts};
 use raytree::geometry::mesh::Mesh;
-use raytree::geometry::object::Shape;
+use raytree::geometry::object::{Object, Shape};
 use raytree::math::ray::Ray;
 use raytree::methods::{Accel, TriangleMethod};
 use raytree::trace::pixel::sample_points;
@@ -84,7 +90,12 @@ fn main() {
             flag("--height", 480),
             flag("--random", 300_000),
         ),
-        ["time", dir] => time(Path::new(dir), set, flag("--passes", 3)),
+        ["time", dir] => time(
+            Path::new(dir),
+            set,
+            flag("--passes", 3),
+            args.iter().any(|a| a == "--tracer"),
+        ),
         ["spheres", "export", dir, n] => export_spheres(
             Path::new(dir),
             count(n),
@@ -95,7 +106,7 @@ fn main() {
         // `cargo test --benches` runs every bench target once: nothing to do.
         _ if args.is_empty() || args.iter().any(|a| a == "--test") => {}
         _ => fail(
-            "usage: closest_hit export DIR [--width W --height H --random N] | time DIR [--set primary|random|inside] [--passes P] | spheres export DIR N [--width W --height H] | spheres time DIR N [--passes P]",
+            "usage: closest_hit export DIR [--width W --height H --random N] | time DIR [--set primary|random|inside] [--passes P] [--tracer] | spheres export DIR N [--width W --height H] | spheres time DIR N [--passes P]",
         ),
     }
 }
@@ -228,7 +239,7 @@ fn read_rays(path: &Path) -> Vec<Ray> {
         .collect()
 }
 
-fn time(dir: &Path, set: &str, passes: usize) {
+fn time(dir: &Path, set: &str, passes: usize, through_tracer: bool) {
     let floats: Vec<f64> = read::<4>(&dir.join("triangles.f32"))
         .into_iter()
         .map(|b| f64::from(f32::from_le_bytes(b)))
@@ -240,6 +251,9 @@ fn time(dir: &Path, set: &str, passes: usize) {
         .collect();
     let mesh = Mesh::new(positions, vec![], faces, vec![]);
     let rays = read_rays(&dir.join(format!("{set}.f64")));
+    if through_tracer {
+        return time_tracer(mesh, &rays, passes);
+    }
     let mut best = f64::INFINITY;
     let (mut hits, mut t_sum) = (0, 0.0);
     for _ in 0..passes.max(1) {
@@ -261,6 +275,39 @@ fn time(dir: &Path, set: &str, passes: usize) {
         }
         best = best.min(start.elapsed().as_secs_f64());
         std::hint::black_box(tested);
+    }
+    println!(
+        "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",
+        rays.len()
+    );
+}
+
+/// `time --tracer`: the tracer's closest-hit search in a scene whose one
+/// object is `mesh`, as the renderer runs it for each ray.
+fn time_tracer(mesh: Mesh, rays: &[Ray], passes: usize) {
+    let mut scene = gaspra_scene();
+    let rock = (scene.objects.iter())
+        .find(|o| matches!(o.shape, Shape::Mesh(_)))
+        .map_or(0, |o| o.material);
+    scene.objects = vec![Object {
+        name: "gaspra".to_owned(),
+        shape: Shape::Mesh(Arc::new(mesh)),
+        transform: None,
+        material: rock,
+    }];
+    let tracer = Tracer::new(&scene);
+    let mut best = f64::INFINITY;
+    let (mut hits, mut t_sum) = (0, 0.0);
+    for _ in 0..passes.max(1) {
+        let start = Instant::now();
+        (hits, t_sum) = (0, 0.0);
+        for ray in rays {
+            if let Some((_, t, _)) = tracer.closest_hit(ray, 0.0, f64::INFINITY, &mut NoRecorder) {
+                hits += 1;
+                t_sum += t;
+            }
+        }
+        best = best.min(start.elapsed().as_secs_f64());
     }
     println!(
         "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",

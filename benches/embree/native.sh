@@ -30,7 +30,10 @@
 #
 # Usage: benches/embree/native.sh [RUNS] [WxH] [N]   (defaults: 5 640x480 300000)
 # IDLE_WAIT=0 skips waiting for an idle machine (figures then marked busy);
-# SPHERES="1000" times fewer sphere counts (default "1000 1000000"). A quick
+# SPHERES="1000" times fewer sphere counts (default "1000 1000000");
+# BEFORE=path/to/an/older/closest_hit (built from an older commit with this
+# commit's benches/) times that build too, in the same alternation, for a
+# before/after in one session (docs/performance.md). A quick
 # check that everything runs: IDLE_WAIT=0 SPHERES=1000 native.sh 1 64x48 2000
 set -euo pipefail
 
@@ -77,6 +80,12 @@ ours() {
     esac
 }
 theirs() { "$embree" "$lib" "$1" "$data" "$2" "${@:3}"; }
+before() {
+    case $1 in
+    mesh) "$BEFORE" time "$data" --set "$2" "${@:3}" ;;
+    spheres) "$BEFORE" spheres time "$data" "$2" "${@:3}" ;;
+    esac
+}
 
 rows=("mesh primary" "mesh random" "mesh inside")
 for n in "${sphere_counts[@]}"; do rows+=("spheres $n"); done
@@ -101,11 +110,17 @@ done
 wait_for_idle
 echo "raytree closest hit vs native Embree $version (robust, threads=1), one thread," \
     "median of $runs alternating runs (each the fastest of 3 passes)$busy"
-printf '%-18s %9s %12s %12s %8s %14s %14s\n' set rays "raytree ms" "Embree ms" ratio "raytree ns/ray" "Embree ns/ray"
+printf '%-18s %9s %12s %12s %8s %14s %14s' set rays "raytree ms" "Embree ms" ratio "raytree ns/ray" "Embree ns/ray"
+[[ -n ${BEFORE:-} ]] && printf ' %12s %8s' "before ms" "ratio"
+echo
 for row in "${rows[@]}"; do
     read -r kind set <<<"$row"
-    r=() e=()
+    r=() e=() b=()
     for ((i = 0; i < runs; i++)); do
+        if [[ -n ${BEFORE:-} ]]; then
+            line=$(before "$kind" "$set")
+            b+=("$(field seconds <<<"$line")")
+        fi
         line=$(ours "$kind" "$set")
         r+=("$(field seconds <<<"$line")")
         line=$(theirs "$kind" "$set")
@@ -115,8 +130,11 @@ for row in "${rows[@]}"; do
     t_r=$(printf '%s\n' "${r[@]}" | median)
     t_e=$(printf '%s\n' "${e[@]}" | median)
     label=$([[ $kind == mesh ]] && echo "gaspra $set" || echo "spheres $set")
-    awk -v label="$label" -v n="$count" -v a="$t_r" -v b="$t_e" 'BEGIN {
-        printf "%-18s %9d %12.2f %12.2f %7.2fx %14.0f %14.0f\n", label, n, 1e3 * a, 1e3 * b, a / b, 1e9 * a / n, 1e9 * b / n
+    t_b=$([[ -n ${BEFORE:-} ]] && printf '%s\n' "${b[@]}" | median)
+    awk -v label="$label" -v n="$count" -v a="$t_r" -v b="$t_e" -v before="$t_b" 'BEGIN {
+        printf "%-18s %9d %12.2f %12.2f %7.2fx %14.0f %14.0f", label, n, 1e3 * a, 1e3 * b, a / b, 1e9 * a / n, 1e9 * b / n
+        if (before != "") printf " %12.2f %7.2fx", 1e3 * before, before / b
+        printf "\n"
     }'
 done
 echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg)"

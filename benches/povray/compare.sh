@@ -14,6 +14,10 @@
 #     images in the first ratio, not in this one,
 # and how far the images differ in 8-bit.
 #
+# BEFORE=path/to/an/older/raytree renders with that binary too, in the same
+# alternation, and adds its own render time and POV-Ray's ratio to it: a
+# before/after in one session (docs/performance.md).
+#
 # Usage: benches/povray/compare.sh [RUNS] [SIZES]
 #   RUNS defaults to 5; SIZES to "640x480 1280x960" (e.g. "160x120" for a quick check).
 # Installs POV-Ray from the system's package manager (apt-get) if it is missing,
@@ -53,8 +57,13 @@ for scene in whitted spheres; do
     for size in $sizes; do
         w=${size%x*}
         h=${size#*x}
-        ours=() theirs=() ours_own=() theirs_own=()
+        ours=() theirs=() ours_own=() theirs_own=() before_own=()
         for ((i = 0; i < runs; i++)); do
+            if [[ -n ${BEFORE:-} ]]; then
+                wall "$BEFORE" render "$root/scenes/$scene.json" --width "$w" --height "$h" \
+                    --spp 1 --max-depth 8 --threads "$cores" -o "$out/before.png" >/dev/null
+                before_own+=("$(sed -n 's/.* in \([0-9.]*\) s on .*/\1/p' "$out/stderr")")
+            fi
             ours+=("$(wall "$raytree" render "$root/scenes/$scene.json" --width "$w" --height "$h" \
                 --spp 1 --max-depth 8 --threads "$cores" -o "$out/raytree.png")")
             ours_own+=("$(sed -n 's/.* in \([0-9.]*\) s on .*/\1/p' "$out/stderr")")
@@ -67,9 +76,15 @@ for scene in whitted spheres; do
         t_theirs=$(printf '%s\n' "${theirs[@]}" | median)
         o_ours=$(printf '%s\n' "${ours_own[@]}" | median)
         o_theirs=$(printf '%s\n' "${theirs_own[@]}" | median)
-        diff=$("$raytree" diff "$out/raytree.png" "$out/povray.png")
+        # Exit status 1 says the images differ: expected, the figure is what counts.
+        diff=$("$raytree" diff "$out/raytree.png" "$out/povray.png" || true)
         printf '%-8s %-9s | %7.3f s %7.3f s %7s | %7.3f s %7.3f s %7s | %s\n' "$scene" "$size" \
             "$t_ours" "$t_theirs" "$(ratio "$t_theirs" "$t_ours")" \
             "$o_ours" "$o_theirs" "$(ratio "$o_theirs" "$o_ours")" "$diff"
+        if [[ -n ${BEFORE:-} ]]; then
+            o_before=$(printf '%s\n' "${before_own[@]}" | median)
+            printf '%-8s %-9s   before: own render time %.3f s, POV-Ray ÷ before %s\n' "" "" \
+                "$o_before" "$(ratio "$o_theirs" "$o_before")"
+        fi
     done
 done

@@ -159,11 +159,8 @@ impl Shape {
     }
 }
 
-/// A single triangle's roots by `method`, both sides, at any `t` (the tracer
-/// keeps those in its interval); out of line, so it does not bloat the
-/// tracer's loop.
 #[inline(never)]
-pub fn triangle_roots(tri: &Triangle, ray: &Ray, method: TriangleMethod) -> Roots {
+fn triangle_roots(tri: &Triangle, ray: &Ray, method: TriangleMethod) -> Roots {
     let hit = match method {
         TriangleMethod::Watertight => {
             tri.watertight(&ShearedRay::new(ray), f64::NEG_INFINITY, f64::INFINITY)

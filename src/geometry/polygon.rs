@@ -217,13 +217,48 @@ impl Polygon {
     /// module's documentation).
     #[inline]
     pub fn roots(&self, ray: &Ray, t_max: f64) -> Roots {
-        roots_of(&self.vertices, self.normal, self.one_sided, ray, t_max)
+        let n_dot_c = self.normal.dot(ray.dir);
+        if n_dot_c == 0.0 || (self.one_sided && n_dot_c >= 0.0) {
+            return Roots::NONE;
+        }
+        let to_plane = self.vertices[0] - ray.origin;
+        let numerator = self.normal.dot(to_plane);
+        let t = numerator / n_dot_c;
+        if !(t > 0.0 && t < t_max) || numerator.abs() <= numerator_error(self.normal, to_plane) {
+            return Roots::NONE;
+        }
+        if self.crossings(&ShearedRay::new(ray)).inside() {
+            Roots::one(t)
+        } else {
+            Roots::NONE
+        }
     }
 
     /// Haines's crossing-number test of the ray's own point (0, 0) in the
     /// sheared frame of `ray`, edge by edge (see the module's documentation).
     pub fn crossings(&self, ray: &ShearedRay) -> Crossings {
-        crossings_of(&self.vertices, ray)
+        let mut found = Crossings {
+            count: 0,
+            on_edge: false,
+        };
+        let (mut ax, mut ay) = ray.sheared_xy(self.vertices[self.vertices.len() - 1]);
+        for &v in &self.vertices {
+            let (bx, by) = ray.sheared_xy(v);
+            if (ay > 0.0) != (by > 0.0) {
+                let e = ax * by - ay * bx;
+                if e == 0.0 {
+                    found.on_edge = true;
+                } else if (e > 0.0) == (by > 0.0) {
+                    found.count += 1;
+                }
+            } else if by == 0.0 && ay == 0.0 && ax.min(bx) <= 0.0 && ax.max(bx) >= 0.0 {
+                // An edge along the half-line's own line, through (0, 0) or
+                // ending there: the half-open rule counts it on neither side.
+                found.on_edge = true;
+            }
+            (ax, ay) = (bx, by);
+        }
+        found
     }
 
     /// The surface at `ray.at(t)`: the point projected onto the plane (so its
@@ -289,60 +324,6 @@ impl Polygon {
         }
         best.1.normalize_or_zero()
     }
-}
-
-/// [`Polygon::roots`] on a polygon's parts: its vertices, unit normal and
-/// sidedness, wherever a caller keeps them (the scene's hierarchy keeps them
-/// side by side in leaf order, see `trace::accelerator`).
-#[inline]
-pub fn roots_of(
-    vertices: &[DVec3],
-    normal: DVec3,
-    one_sided: bool,
-    ray: &Ray,
-    t_max: f64,
-) -> Roots {
-    let n_dot_c = normal.dot(ray.dir);
-    if n_dot_c == 0.0 || (one_sided && n_dot_c >= 0.0) {
-        return Roots::NONE;
-    }
-    let to_plane = vertices[0] - ray.origin;
-    let numerator = normal.dot(to_plane);
-    let t = numerator / n_dot_c;
-    if !(t > 0.0 && t < t_max) || numerator.abs() <= numerator_error(normal, to_plane) {
-        return Roots::NONE;
-    }
-    if crossings_of(vertices, &ShearedRay::new(ray)).inside() {
-        Roots::one(t)
-    } else {
-        Roots::NONE
-    }
-}
-
-/// [`Polygon::crossings`] on a polygon's vertices.
-fn crossings_of(vertices: &[DVec3], ray: &ShearedRay) -> Crossings {
-    let mut found = Crossings {
-        count: 0,
-        on_edge: false,
-    };
-    let (mut ax, mut ay) = ray.sheared_xy(vertices[vertices.len() - 1]);
-    for &v in vertices {
-        let (bx, by) = ray.sheared_xy(v);
-        if (ay > 0.0) != (by > 0.0) {
-            let e = ax * by - ay * bx;
-            if e == 0.0 {
-                found.on_edge = true;
-            } else if (e > 0.0) == (by > 0.0) {
-                found.count += 1;
-            }
-        } else if by == 0.0 && ay == 0.0 && ax.min(bx) <= 0.0 && ax.max(bx) >= 0.0 {
-            // An edge along the half-line's own line, through (0, 0) or
-            // ending there: the half-open rule counts it on neither side.
-            found.on_edge = true;
-        }
-        (ax, ay) = (bx, by);
-    }
-    found
 }
 
 /// A bound on the rounding error of the numerator `n·(V₀ - S)`: one rounding

@@ -7,17 +7,13 @@
 use std::cell::Cell;
 use std::ops::ControlFlow;
 
-use glam::DVec3;
-
 use crate::geometry::bvh::Bvh;
 use crate::geometry::grid::Grid;
 use crate::geometry::hit::{Roots, Search, TestCounts};
 use crate::geometry::kdtree::KdTree;
-use crate::geometry::object::{Object, Shape, triangle_roots};
+use crate::geometry::object::{Object, Shape};
 use crate::geometry::octree::{self, Octree};
-use crate::geometry::polygon;
 use crate::geometry::sphere::Sphere;
-use crate::geometry::triangle::Triangle;
 use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;
 use crate::methods::{Accel, IntersectionMethods, Level};
@@ -40,17 +36,16 @@ pub struct Accelerator {
     /// The hierarchy's objects in the order its leaves list them: a leaf is a
     /// run of these.
     leaves: Vec<Candidate>,
-    /// The corners and vertices of the triangles and polygons in `leaves`.
-    vertices: Vec<DVec3>,
 }
 
-/// An object as a visit hands it out: its index, and for a sphere, a
-/// triangle or a polygon without a transform under the hierarchy, a copy of
-/// its shape as well, kept in the order of the hierarchy's leaves. A million
-/// random spheres' objects take 120 MB in the order they were read, and a
-/// polygon's vertices are two pointers away from its object, so a ray's walk
-/// waited on memory for each object it tested; side by side, a leaf's shapes
-/// share cache lines and the objects are not read at all.
+/// An object as a visit hands it out: its index, and for a sphere without a
+/// transform under the hierarchy, a copy of the sphere as well, kept in the
+/// order of the hierarchy's leaves. A million random spheres' objects take
+/// 120 MB in the order they were read, so a ray's walk waited on memory for
+/// each sphere it tested; side by side, a leaf's spheres share cache lines
+/// and the objects are not read at all. (Triangles and polygons copied the
+/// same way made no difference: 124 and 148 ns a primary ray on the Gaspra
+/// mesh's triangles as objects, with copies or without.)
 #[derive(Clone, Copy, Debug)]
 pub enum Candidate {
     /// Object `i`, to be tested as itself.
@@ -62,58 +57,20 @@ pub enum Candidate {
         /// The object's index.
         object: u32,
     },
-    /// Object `object`, a triangle in world space whose corners are the
-    /// accelerator's `vertices[first..first + 3]`.
-    Triangle {
-        /// Where its corners start.
-        first: u32,
-        /// The object's index.
-        object: u32,
-    },
-    /// Object `object`, a polygon in world space whose vertices are the
-    /// accelerator's `vertices[first..first + count]`.
-    Polygon {
-        /// The polygon's unit normal.
-        normal: DVec3,
-        /// Where its vertices start.
-        first: u32,
-        /// How many it has.
-        count: u32,
-        /// Whether a ray meeting its back misses.
-        one_sided: bool,
-        /// The object's index.
-        object: u32,
-    },
 }
 
 impl Candidate {
-    /// The candidate for object `i` of `objects`, its corners or vertices
-    /// (if any) pushed onto `vertices`.
-    fn of(objects: &[Object], i: u32, vertices: &mut Vec<DVec3>) -> Candidate {
-        let object = &objects[i as usize];
-        if object.transform.is_some() {
-            return Candidate::Object(i);
-        }
-        let first = vertices.len() as u32;
-        match &object.shape {
-            Shape::Sphere(sphere) => Candidate::Sphere {
+    /// The candidate for object `i` of `objects`.
+    fn of(objects: &[Object], i: u32) -> Candidate {
+        match &objects[i as usize] {
+            Object {
+                shape: Shape::Sphere(sphere),
+                transform: None,
+                ..
+            } => Candidate::Sphere {
                 sphere: *sphere,
                 object: i,
             },
-            Shape::Triangle(t) => {
-                vertices.extend([t.a, t.b, t.c]);
-                Candidate::Triangle { first, object: i }
-            }
-            Shape::Polygon(p) => {
-                vertices.extend_from_slice(p.vertices());
-                Candidate::Polygon {
-                    normal: p.normal(),
-                    first,
-                    count: p.vertices().len() as u32,
-                    one_sided: p.one_sided(),
-                    object: i,
-                }
-            }
             _ => Candidate::Object(i),
         }
     }
@@ -122,10 +79,7 @@ impl Candidate {
     #[inline]
     pub fn object(&self) -> usize {
         match *self {
-            Candidate::Object(i)
-            | Candidate::Sphere { object: i, .. }
-            | Candidate::Triangle { object: i, .. }
-            | Candidate::Polygon { object: i, .. } => i as usize,
+            Candidate::Object(i) | Candidate::Sphere { object: i, .. } => i as usize,
         }
     }
 }
@@ -166,7 +120,6 @@ impl Accelerator {
                 structure: None,
                 names: Vec::new(),
                 leaves: Vec::new(),
-                vertices: Vec::new(),
             };
         }
         let (bounded, always): (Vec<u32>, Vec<u32>) =
@@ -193,11 +146,10 @@ impl Accelerator {
         };
         // The BVH's leaves are runs of `leaves`; the other structures hand out
         // their own indices, translated through `bounded` as they visit.
-        let mut vertices = Vec::new();
         let (names, leaves) = match &structure {
             Structure::Bvh(bvh) => {
                 let leaves = (bvh.leaf_order().iter())
-                    .map(|&i| Candidate::of(&scene.objects, bounded[i as usize], &mut vertices))
+                    .map(|&i| Candidate::of(&scene.objects, bounded[i as usize]))
                     .collect();
                 (Vec::new(), leaves)
             }
@@ -208,7 +160,6 @@ impl Accelerator {
             structure: Some(structure),
             names,
             leaves,
-            vertices,
         }
     }
 
@@ -220,9 +171,8 @@ impl Accelerator {
     }
 
     /// The roots of `ray` with a candidate a visit handed out, as
-    /// [`Object::roots_within`] finds them for its object: a copied shape's
-    /// are the object's own, the same test on the same numbers. Spheres are
-    /// tested in line, triangles and polygons out of line, as objects are.
+    /// [`Object::roots_within`] finds them for its object: a copied sphere's
+    /// are the object's own, the same test on the same numbers.
     #[inline(always)]
     #[allow(clippy::too_many_arguments)]
     pub fn roots(
@@ -242,40 +192,6 @@ impl Accelerator {
             Candidate::Sphere { sphere, .. } => {
                 tested.primitives += 1;
                 sphere.roots_by(ray, methods.sphere)
-            }
-            _ => {
-                tested.primitives += 1;
-                self.copy_roots(candidate, ray, methods, t_max)
-            }
-        }
-    }
-
-    /// The roots of a copied sphere, triangle or polygon.
-    #[inline(never)]
-    fn copy_roots(
-        &self,
-        candidate: &Candidate,
-        ray: &Ray,
-        methods: IntersectionMethods,
-        t_max: f64,
-    ) -> Roots {
-        let vertices = |first: u32, count: u32| &self.vertices[first as usize..][..count as usize];
-        match *candidate {
-            Candidate::Triangle { first, .. } => {
-                let [a, b, c] = *vertices(first, 3) else {
-                    unreachable!("three corners")
-                };
-                triangle_roots(&Triangle { a, b, c }, ray, methods.triangle)
-            }
-            Candidate::Polygon {
-                normal,
-                first,
-                count,
-                one_sided,
-                ..
-            } => polygon::roots_of(vertices(first, count), normal, one_sided, ray, t_max),
-            Candidate::Object(_) | Candidate::Sphere { .. } => {
-                unreachable!("objects and spheres are tested in line")
             }
         }
     }
