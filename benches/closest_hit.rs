@@ -296,6 +296,12 @@ fn time_tracer(mesh: Mesh, rays: &[Ray], passes: usize) {
         material: rock,
     }];
     let tracer = Tracer::new(&scene);
+    time_closest_hits(&tracer, rays, passes);
+}
+
+/// Times `Tracer::closest_hit` on every ray, `passes` times, and prints the
+/// fastest pass's line.
+fn time_closest_hits(tracer: &Tracer, rays: &[Ray], passes: usize) {
     let mut best = f64::INFINITY;
     let (mut hits, mut t_sum) = (0, 0.0);
     for _ in 0..passes.max(1) {
@@ -367,21 +373,5 @@ fn time_spheres(dir: &Path, n: usize, passes: usize) {
     let scene = spheres_scene(n);
     let tracer = Tracer::new(&scene);
     let rays = read_rays(&dir.join(format!("spheres-{n}-rays.f64")));
-    let mut best = f64::INFINITY;
-    let (mut hits, mut t_sum) = (0, 0.0);
-    for _ in 0..passes.max(1) {
-        let start = Instant::now();
-        (hits, t_sum) = (0, 0.0);
-        for ray in &rays {
-            if let Some((_, t, _)) = tracer.closest_hit(ray, 0.0, f64::INFINITY, &mut NoRecorder) {
-                hits += 1;
-                t_sum += t;
-            }
-        }
-        best = best.min(start.elapsed().as_secs_f64());
-    }
-    println!(
-        "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",
-        rays.len()
-    );
+    time_closest_hits(&tracer, &rays, passes);
 }

@@ -30,13 +30,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 source "$here/../idle.sh"
 
-venv="$root/target/embree-venv"
-if [[ ! -x $venv/bin/python ]] || ! "$venv/bin/python" -c "import embreex, numpy" 2>/dev/null; then
-    echo "installing embreex and numpy into $venv" >&2
-    python3 -m venv "$venv"
-    "$venv/bin/pip" install --quiet --upgrade pip >&2
-    "$venv/bin/pip" install --quiet "embreex>=4.3" numpy >&2
-fi
+source "$here/venv.sh"
 embree_version=$("$venv/bin/pip" show embreex 2>/dev/null | sed -n 's/^Version: //p')
 
 cargo build --release --quiet --manifest-path "$root/Cargo.toml" -p raytree-benches --example closest_hit

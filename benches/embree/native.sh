@@ -46,13 +46,7 @@ here=$(cd "$(dirname "$0")" && pwd)
 root=$(cd "$here/../.." && pwd)
 source "$here/../idle.sh"
 
-venv="$root/target/embree-venv"
-if [[ ! -x $venv/bin/python ]] || ! "$venv/bin/python" -c "import embreex" 2>/dev/null; then
-    echo "installing embreex (for its Embree 4 library) into $venv" >&2
-    python3 -m venv "$venv"
-    "$venv/bin/pip" install --quiet --upgrade pip >&2
-    "$venv/bin/pip" install --quiet "embreex>=4.3" numpy >&2
-fi
+source "$here/venv.sh"
 lib=$(ls "$venv"/lib/python3*/site-packages/embreex.libs/libembree4-*.so.4 2>/dev/null | head -n 1)
 [[ -n $lib ]] || { echo "no libembree4 in $venv's embreex" >&2; exit 1; }
 
@@ -130,7 +124,8 @@ for row in "${rows[@]}"; do
     t_r=$(printf '%s\n' "${r[@]}" | median)
     t_e=$(printf '%s\n' "${e[@]}" | median)
     label=$([[ $kind == mesh ]] && echo "gaspra $set" || echo "spheres $set")
-    t_b=$([[ -n ${BEFORE:-} ]] && printf '%s\n' "${b[@]}" | median)
+    t_b=""
+    [[ -z ${BEFORE:-} ]] || t_b=$(printf '%s\n' "${b[@]}" | median)
     awk -v label="$label" -v n="$count" -v a="$t_r" -v b="$t_e" -v before="$t_b" 'BEGIN {
         printf "%-18s %9d %12.2f %12.2f %7.2fx %14.0f %14.0f", label, n, 1e3 * a, 1e3 * b, a / b, 1e9 * a / n, 1e9 * b / n
         if (before != "") printf " %12.2f %7.2fx", 1e3 * before, before / b
