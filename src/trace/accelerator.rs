@@ -237,7 +237,7 @@ impl Accelerator {
     }
 
     /// [`Accelerator::visit`], also calling `seen(bounds, met)` for every box
-    /// of the hierarchy tested (see [`Bvh::traverse_seeing`]).
+    /// of the hierarchy tested (see [`Bvh::traverse_leaves_seeing`]).
     #[inline]
     pub fn visit_seeing(
         &self,

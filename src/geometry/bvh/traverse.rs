@@ -28,31 +28,21 @@ impl Bvh {
         t_min: f64,
         t_max: &mut f64,
         tested: &mut TestCounts,
-        visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
-    ) -> ControlFlow<()> {
-        self.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
-    }
-
-    /// [`Bvh::traverse`], also calling `seen(bounds, met)` for every box tested
-    /// (as stored, rounded outward) and whether the ray met it: what a recorded
-    /// ray keeps so a diagram can draw the boxes it visited. With a `seen` that
-    /// does nothing, this is `traverse` exactly.
-    #[inline]
-    pub fn traverse_seeing(
-        &self,
-        ray: &RayBox,
-        t_min: f64,
-        t_max: &mut f64,
-        tested: &mut TestCounts,
-        seen: impl FnMut(Bounds, bool),
         mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        self.walk(ray, t_min, t_max, tested, seen, |leaf, t_max| {
-            for &p in &self.order[leaf] {
-                visit(p as usize, t_max)?;
-            }
-            ControlFlow::Continue(())
-        })
+        self.walk(
+            ray,
+            t_min,
+            t_max,
+            tested,
+            |_, _| {},
+            |leaf, t_max| {
+                for &p in &self.order[leaf] {
+                    visit(p as usize, t_max)?;
+                }
+                ControlFlow::Continue(())
+            },
+        )
     }
 
     /// [`Bvh::traverse`] a leaf at a time: `visit(leaf, t_max)` gets the leaf's
@@ -71,8 +61,9 @@ impl Bvh {
         self.walk(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
-    /// [`Bvh::traverse_leaves`], also calling `seen` for every box tested, as
-    /// [`Bvh::traverse_seeing`] does.
+    /// [`Bvh::traverse_leaves`], also calling `seen(bounds, met)` for every box
+    /// tested (as stored, rounded outward) and whether the ray met it: what a
+    /// recorded ray keeps so a diagram can draw the boxes it visited.
     #[inline]
     pub fn traverse_leaves_seeing(
         &self,
