@@ -24,7 +24,7 @@ pub struct Mesh {
     pub faces: Vec<[u32; 3]>,
     /// Normal indices of each triangle, if the mesh has normals.
     pub face_normals: Vec<[u32; 3]>,
-    /// The hierarchy over the faces; its leaves name positions in `leaf_triangles`.
+    /// The hierarchy over the faces; a leaf is a run of `leaf_triangles`.
     bvh: Bvh,
     /// Every face's corners, in the order the hierarchy's leaves list them, so a
     /// leaf's triangles lie side by side in memory and a test reads no indices.
@@ -62,11 +62,6 @@ impl Mesh {
         mesh.leaf_triangles = (mesh.leaf_faces.iter())
             .map(|&f| mesh.triangle(f as usize))
             .collect();
-        let mut position = vec![0; mesh.faces.len()];
-        for (i, &f) in mesh.leaf_faces.iter().enumerate() {
-            position[f as usize] = i as u32;
-        }
-        mesh.bvh.relabel(|f| position[f as usize]);
         mesh
     }
 
@@ -107,8 +102,7 @@ impl Mesh {
         let mut sheared = None;
         let mut nearest = None;
         let mut faces = 0;
-        // The leaves list positions in `leaf_triangles` (see `Mesh::new`): a
-        // leaf is a run of it, tested in order, a hit shrinking `t_max` for the
+        // A leaf is a run of `leaf_triangles`, tested in order, a hit shrinking `t_max` for the
         // next, so of equal `t`s the first found is kept.
         let _ =
             self.bvh

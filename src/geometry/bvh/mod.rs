@@ -52,15 +52,6 @@ impl Bvh {
         &self.order
     }
 
-    /// Renames the primitives: leaf entry `i` becomes `name(i)`, so a hierarchy
-    /// built over a subset can hand out the indices the caller uses, with no
-    /// second lookup per visit.
-    pub fn relabel(&mut self, name: impl Fn(u32) -> u32) {
-        for p in &mut self.order {
-            *p = name(*p);
-        }
-    }
-
     /// Bytes the flattened tree occupies.
     pub fn memory(&self) -> usize {
         self.nodes.len() * std::mem::size_of::<Node>() + self.order.len() * 4
