@@ -256,10 +256,11 @@ fn time(dir: &Path, set: &str, passes: usize, through_tracer: bool) {
     }
     let mut best = f64::INFINITY;
     let (mut hits, mut t_sum) = (0, 0.0);
+    let mut tested = TestCounts::default();
     for _ in 0..passes.max(1) {
         let start = Instant::now();
         (hits, t_sum) = (0, 0.0);
-        let mut tested = TestCounts::default();
+        tested = TestCounts::default();
         for ray in &rays {
             let roots = mesh.roots(
                 ray,
@@ -274,11 +275,14 @@ fn time(dir: &Path, set: &str, passes: usize, through_tracer: bool) {
             }
         }
         best = best.min(start.elapsed().as_secs_f64());
-        std::hint::black_box(tested);
+        std::hint::black_box(&mut tested);
     }
+    let per_ray = |n: u32| f64::from(n) / rays.len() as f64;
     println!(
-        "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6}",
-        rays.len()
+        "seconds={best:.6} rays={} hits={hits} t_sum={t_sum:.6} boxes_per_ray={:.2} triangles_per_ray={:.2}",
+        rays.len(),
+        per_ray(tested.boxes),
+        per_ray(tested.primitives),
     );
 }
 
