@@ -52,7 +52,7 @@
 use glam::DVec3;
 
 use crate::geometry::hit::{Roots, Surface};
-use crate::geometry::triangle::ShearedRay;
+use crate::geometry::triangle::{ShearedRay, by_axis_order};
 use crate::math::bounds::Bounds;
 use crate::math::float::gamma;
 use crate::math::ray::Ray;
@@ -236,14 +236,27 @@ impl Polygon {
 
     /// Haines's crossing-number test of the ray's own point (0, 0) in the
     /// sheared frame of `ray`, edge by edge (see the module's documentation).
+    #[inline]
     pub fn crossings(&self, ray: &ShearedRay) -> Crossings {
+        by_axis_order!(ray.axis_order(), |KX, KY, KZ| self
+            .crossings_in::<KX, KY, KZ>(ray))
+    }
+
+    /// [`Polygon::crossings`] for the ray's axis order `KX, KY, KZ`, chosen once
+    /// for all the vertices (reading a coordinate by a run-time axis is a branch).
+    #[inline(always)]
+    fn crossings_in<const KX: usize, const KY: usize, const KZ: usize>(
+        &self,
+        ray: &ShearedRay,
+    ) -> Crossings {
         let mut found = Crossings {
             count: 0,
             on_edge: false,
         };
-        let (mut ax, mut ay) = ray.sheared_xy(self.vertices[self.vertices.len() - 1]);
+        let xy = |p: DVec3| ray.sheared_xy_in::<KX, KY, KZ>(p);
+        let (mut ax, mut ay) = xy(self.vertices[self.vertices.len() - 1]);
         for &v in &self.vertices {
-            let (bx, by) = ray.sheared_xy(v);
+            let (bx, by) = xy(v);
             if (ay > 0.0) != (by > 0.0) {
                 let e = ax * by - ay * bx;
                 if e == 0.0 {

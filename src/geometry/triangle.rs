@@ -70,6 +70,7 @@ pub struct ShearedRay {
 
 impl ShearedRay {
     /// Prepares `ray` (once, for every triangle it is tested against).
+    #[inline]
     pub fn new(ray: &Ray) -> Self {
         let d = ray.dir;
         let a = d.abs();
@@ -98,11 +99,77 @@ impl ShearedRay {
     /// polygon and a triangle sharing a vertex get the same numbers for it.
     #[inline]
     pub fn sheared_xy(&self, p: DVec3) -> (f64, f64) {
-        let [kx, ky, kz] = self.k;
-        let a = p - self.origin;
-        (a[kx] - self.shear.x * a[kz], a[ky] - self.shear.y * a[kz])
+        by_axis_order!(self.k, |KX, KY, KZ| self.sheared_xy_in::<KX, KY, KZ>(p))
+    }
+
+    /// [`ShearedRay::sheared_xy`] for the ray's axis order `KX, KY, KZ` (its
+    /// `k`), read at fixed places: a test of many vertices picks the order once
+    /// with [`by_axis_order!`] instead of once a coordinate.
+    #[inline(always)]
+    pub(crate) fn sheared_xy_in<const KX: usize, const KY: usize, const KZ: usize>(
+        &self,
+        p: DVec3,
+    ) -> (f64, f64) {
+        debug_assert_eq!(self.k, [KX, KY, KZ]);
+        let o = self.origin;
+        let (x, y, z) = (p[KX] - o[KX], p[KY] - o[KY], p[KZ] - o[KZ]);
+        (x - self.shear.x * z, y - self.shear.y * z)
+    }
+
+    /// Which world axes become x, y, z (see [`by_axis_order!`]).
+    #[inline(always)]
+    pub(crate) fn axis_order(&self) -> [usize; 3] {
+        self.k
     }
 }
+
+/// Runs `$body` with the const generics `$kx, $ky, $kz` set to the axis order
+/// `$k` of a [`ShearedRay`] (one of the six the ray's largest direction
+/// component and its sign give), so the code inside reads each coordinate at a
+/// fixed place with no branch.
+macro_rules! by_axis_order {
+    ($k:expr, |$kx:ident, $ky:ident, $kz:ident| $body:expr) => {{
+        match $k {
+            [1, 2, 0] => {
+                const $kx: usize = 1;
+                const $ky: usize = 2;
+                const $kz: usize = 0;
+                $body
+            }
+            [2, 1, 0] => {
+                const $kx: usize = 2;
+                const $ky: usize = 1;
+                const $kz: usize = 0;
+                $body
+            }
+            [2, 0, 1] => {
+                const $kx: usize = 2;
+                const $ky: usize = 0;
+                const $kz: usize = 1;
+                $body
+            }
+            [0, 2, 1] => {
+                const $kx: usize = 0;
+                const $ky: usize = 2;
+                const $kz: usize = 1;
+                $body
+            }
+            [0, 1, 2] => {
+                const $kx: usize = 0;
+                const $ky: usize = 1;
+                const $kz: usize = 2;
+                $body
+            }
+            _ => {
+                const $kx: usize = 1;
+                const $ky: usize = 0;
+                const $kz: usize = 2;
+                $body
+            }
+        }
+    }};
+}
+pub(crate) use by_axis_order;
 
 impl Triangle {
     /// The geometric normal `(b - a) × (c - a)`, unit length; zero if degenerate.
@@ -144,14 +211,8 @@ impl Triangle {
     /// test proper reads each coordinate at a fixed place, with no branch.
     #[inline(always)]
     fn watertight_edges(&self, ray: &ShearedRay, t_min: f64, t_max: f64) -> Option<Edges> {
-        match ray.k {
-            [1, 2, 0] => self.watertight_in::<1, 2, 0>(ray, t_min, t_max),
-            [2, 1, 0] => self.watertight_in::<2, 1, 0>(ray, t_min, t_max),
-            [2, 0, 1] => self.watertight_in::<2, 0, 1>(ray, t_min, t_max),
-            [0, 2, 1] => self.watertight_in::<0, 2, 1>(ray, t_min, t_max),
-            [0, 1, 2] => self.watertight_in::<0, 1, 2>(ray, t_min, t_max),
-            _ => self.watertight_in::<1, 0, 2>(ray, t_min, t_max),
-        }
+        by_axis_order!(ray.k, |KX, KY, KZ| self
+            .watertight_in::<KX, KY, KZ>(ray, t_min, t_max))
     }
 
     /// The test proper, with the world axes `KX, KY, KZ` becoming x, y, z.
