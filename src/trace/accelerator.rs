@@ -27,8 +27,9 @@ pub const AUTO_MIN_OBJECTS: usize = 16;
 /// The objects of one scene, arranged for the rays to come.
 #[derive(Clone, Debug)]
 pub struct Accelerator {
-    /// Objects without bounds (planes), or every object when there is no structure.
-    always: Vec<u32>,
+    /// Objects without bounds (planes), or every object when there is no
+    /// structure, as candidates (a sphere copied, as in `leaves`).
+    always: Vec<Candidate>,
     /// The structure over the bounded objects.
     structure: Option<Structure>,
     /// The object index of each of the structure's primitives (but the BVH's).
@@ -39,8 +40,10 @@ pub struct Accelerator {
 }
 
 /// An object as a visit hands it out: its index, and for a sphere without a
-/// transform under the hierarchy, a copy of the sphere as well, kept in the
-/// order of the hierarchy's leaves. A million random spheres' objects take
+/// transform, a copy of the sphere as well, kept in the order of the
+/// hierarchy's leaves (or of the list every ray tests). Its test is then
+/// inlined into the visit, where an object's goes through two calls and a
+/// jump on its shape. A million random spheres' objects take
 /// 120 MB in the order they were read, so a ray's walk waited on memory for
 /// each sphere it tested; side by side, a leaf's spheres share cache lines
 /// and the objects are not read at all. (Triangles and polygons copied the
@@ -116,7 +119,7 @@ impl Accelerator {
         let all = 0..scene.objects.len() as u32;
         if accel == Accel::None {
             return Accelerator {
-                always: all.collect(),
+                always: all.map(|i| Candidate::of(&scene.objects, i)).collect(),
                 structure: None,
                 names: Vec::new(),
                 leaves: Vec::new(),
@@ -156,7 +159,9 @@ impl Accelerator {
             _ => (bounded, Vec::new()),
         };
         Accelerator {
-            always,
+            always: (always.into_iter())
+                .map(|i| Candidate::of(&scene.objects, i))
+                .collect(),
             structure: Some(structure),
             names,
             leaves,
@@ -248,8 +253,8 @@ impl Accelerator {
         seen: impl FnMut(Bounds, bool),
         mut visit: impl FnMut(&Candidate, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        for &i in &self.always {
-            visit(&Candidate::Object(i), t_max)?;
+        for candidate in &self.always {
+            visit(candidate, t_max)?;
         }
         let Some(structure) = &self.structure else {
             return ControlFlow::Continue(());
