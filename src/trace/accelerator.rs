@@ -241,6 +241,32 @@ impl Accelerator {
         self.visit_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
+    /// [`Accelerator::visit`] in no particular order (see
+    /// [`Bvh::traverse_leaves_any`]), for a shadow ray.
+    #[inline]
+    pub fn visit_any(
+        &self,
+        ray: &Ray,
+        t_min: f64,
+        t_max: &mut f64,
+        tested: &mut TestCounts,
+        mut visit: impl FnMut(&Candidate, &mut f64) -> ControlFlow<()>,
+    ) -> ControlFlow<()> {
+        if let Some(Structure::Bvh(bvh)) = &self.structure {
+            for candidate in &self.always {
+                visit(candidate, t_max)?;
+            }
+            let ray = RayBox::new(ray);
+            return bvh.traverse_leaves_any(&ray, t_min, t_max, tested, |run, t| {
+                for candidate in &self.leaves[run] {
+                    visit(candidate, t)?;
+                }
+                ControlFlow::Continue(())
+            });
+        }
+        self.visit(ray, t_min, t_max, tested, visit)
+    }
+
     /// [`Accelerator::visit`], also calling `seen(bounds, met)` for every box
     /// of the hierarchy tested (see [`Bvh::traverse_leaves_seeing`]).
     #[inline]

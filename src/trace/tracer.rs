@@ -491,7 +491,7 @@ impl<'s> Tracer<'s> {
         let mut transmitted = 1.0;
         let mut blocked = None;
         let mut inner = TestCounts::default();
-        let _ = self.accel.visit(
+        let _ = self.accel.visit_any(
             ray,
             0.0,
             &mut SHADOW_T_MAX.clone(),

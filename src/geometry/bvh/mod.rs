@@ -8,7 +8,8 @@
 //! tree is half as deep as a binary one. It is built with the binned surface
 //! area heuristic, on all cores ([`build`]). Traversal
 //! visits the boxes a ray meets nearest first, so a closest-hit search shrinks
-//! its interval early and skips boxes beyond the hit it has.
+//! its interval early and skips boxes beyond the hit it has; a shadow ray,
+//! which any blocker ends, takes them in their stored order.
 //!
 //! The boxes are stored in single precision, rounded outward, which halves the
 //! memory a ray walks through; primitives stay in double precision. The box test
@@ -19,7 +20,7 @@
 
 pub mod node; // the node layout: four single-precision boxes, packed children
 pub mod build; // building it: the binned surface area heuristic, on all cores
-pub mod traverse; // walking it: nearer boxes first, four at a time
+pub mod traverse; // walking it: nearer boxes first (or any order, for shadow rays), four at a time
 
 use crate::geometry::bvh::node::Node;
 use crate::math::bounds::Bounds;
@@ -237,6 +238,51 @@ mod tests {
             let (mask, _) = RayBox4::new(&ray).hits(&node, 0.0, f32::INFINITY);
             assert_eq!(mask, 0, "{dir}");
         }
+    }
+
+    /// A shadow ray's walk, in the stored order, reaches the same leaves as the
+    /// nearest-first walk when neither stops early (so a blocker one finds,
+    /// the other finds), and on a row of boxes does not take them nearest
+    /// first (so the order really is another).
+    #[test]
+    fn any_order_reaches_the_leaves_the_nearest_first_walk_does() {
+        let boxes = ten_by_ten_by_ten();
+        let bvh = Bvh::build(&boxes);
+        let mut orders_differ = false;
+        for (origin, dir) in [
+            (DVec3::new(-1.0, 4.1, 3.9), DVec3::new(1.0, 0.01, 0.02)),
+            (DVec3::new(10.5, 4.2, 3.9), DVec3::new(-1.0, 0.02, -0.01)),
+            (DVec3::new(4.1, -2.0, 4.1), DVec3::new(0.01, 1.0, 0.02)),
+            (DVec3::new(-1.0, -1.0, -1.0), DVec3::ONE),
+        ] {
+            let ray = RayBox::new(&Ray::new(origin, dir));
+            let walk = |any: bool| {
+                let mut leaves = Vec::new();
+                let visit = |leaf: std::ops::Range<usize>, _: &mut f64| {
+                    leaves.push(leaf.start);
+                    ControlFlow::Continue(())
+                };
+                let (t_max, tested) = (&mut { f64::INFINITY }, &mut TestCounts::default());
+                let _ = if any {
+                    bvh.traverse_leaves_any(&ray, 0.0, t_max, tested, visit)
+                } else {
+                    bvh.traverse_leaves(&ray, 0.0, t_max, tested, visit)
+                };
+                leaves
+            };
+            let (nearest, any) = (walk(false), walk(true));
+            assert!(nearest.len() >= 2, "{origin}: {nearest:?}");
+            orders_differ |= nearest != any;
+            let sorted = |mut v: Vec<usize>| {
+                v.sort_unstable();
+                v
+            };
+            assert_eq!(sorted(nearest), sorted(any), "ray from {origin}");
+        }
+        assert!(
+            orders_differ,
+            "the stored order was the nearest-first one for every ray"
+        );
     }
 
     #[test]
