@@ -64,9 +64,11 @@ impl Bvh {
 
     /// [`Bvh::traverse_leaves`] with the boxes met taken in the node's order,
     /// not nearest first: for a search that stops at any hit and never
-    /// shrinks `t_max` (a shadow ray), which the nearest box is no likelier to
-    /// end than another. Without the sorting the 2,000-sphere render's shadow
-    /// rays made 4 % fewer tests, and the render took 5 % less time.
+    /// shrinks `t_max` (a scene's shadow rays). The nearest box often holds
+    /// only the object the ray leaves: without the sorting the 2,000-sphere
+    /// render made 4 % fewer tests and took 5 % less time. A mesh's shadow
+    /// rays keep the nearest first: a mesh shadows itself close to where they
+    /// start, and the Gaspra render made 2 % more tests without it.
     #[inline]
     pub fn traverse_leaves_any(
         &self,
