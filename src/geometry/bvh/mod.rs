@@ -8,8 +8,9 @@
 //! tree is half as deep as a binary one. It is built with the binned surface
 //! area heuristic, on all cores ([`build`]). Traversal
 //! visits the boxes a ray meets nearest first, so a closest-hit search shrinks
-//! its interval early and skips boxes beyond the hit it has; a shadow ray,
-//! which any blocker ends, takes them in their stored order.
+//! its interval early and skips boxes beyond the hit it has; a shadow ray
+//! through a scene's hierarchy, which any blocker ends, takes them in their
+//! stored order ([`Bvh::traverse_leaves_any`]).
 //!
 //! The boxes are stored in single precision, rounded outward, which halves the
 //! memory a ray walks through; primitives stay in double precision. The box test
