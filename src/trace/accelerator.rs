@@ -241,8 +241,9 @@ impl Accelerator {
         self.visit_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
-    /// [`Accelerator::visit`] in no particular order (see
-    /// [`Bvh::traverse_leaves_any`]), for a shadow ray.
+    /// [`Accelerator::visit`] with the hierarchy's boxes taken in their stored
+    /// order, not nearest first (see [`Bvh::traverse_leaves_any`]): for a
+    /// shadow ray, which any blocker ends.
     #[inline]
     pub fn visit_any(
         &self,
