@@ -31,6 +31,8 @@ sys.path.insert(0, PYTHON)
 import learner_io  # noqa: E402  (the path is set just above)
 
 WHITTED = "scenes/whitted.json"
+# A floor pixel of the Whitted scene whose key light passes through the glass ball.
+GLASS_SHADOW = (440, 376)
 
 # name, the lesson whose "Build it yourself" shows it (or None), the text
 # replaced, its replacement, the scene and pixel, the diagnosis id (None: the
@@ -77,6 +79,26 @@ MUTANTS = [
     ("normal-not-turned", None,
      "n = outward if entering else neg(outward)", "n = outward",
      WHITTED, (416, 209), "normal-not-turned", "primary → refracted d2 → reflected d3"),
+    ("normal-inward", None,
+     "n = outward if entering else neg(outward)", "n = neg(outward) if entering else outward",
+     WHITTED, (416, 209), "normal-inward", "primary"),
+    ("normal-not-unit", None,
+     "return normalize(apply_transpose(inverse, normal))",
+     "return apply_transpose(inverse, normal)",
+     "lessons/06-transforms/ellipsoid.json", (200, 70), "not-normalized", "primary"),
+    ("view-sign", None,
+     "to_viewer = neg(normalize(direction))", "to_viewer = normalize(direction)",
+     "lessons/07-phong/ball.json", (135, 83), "view-sign", "primary"),
+    ("view-not-normalized", None,
+     "to_viewer = neg(normalize(direction))", "to_viewer = neg(direction)",
+     "lessons/07-phong/ball.json", (135, 83), "not-normalized", "primary"),
+    ("light-not-normalized", None,
+     "lit.append((normalize(sub(light.position, point)),",
+     "lit.append((sub(light.position, point),",
+     "lessons/07-phong/ball.json", (135, 83), "not-normalized", "primary"),
+    ("glass-blocks-light", None,
+     "if obj.material.transparent == 0.0:", "if True:",
+     WHITTED, GLASS_SHADOW, "transparent-blocks", "primary"),
     ("direction-not-normalized", None,
      "c = normalize(direction)", "c = direction",
      WHITTED, (416, 209), "not-normalized", "primary → refracted d2"),

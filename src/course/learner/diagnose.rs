@@ -14,7 +14,8 @@ use crate::course::learner::measure::{Context, same_color, same_direction, toler
 use crate::geometry::object::Shape;
 use crate::math::ray::Ray;
 use crate::shading::optics::{reflect, refract};
-use crate::tree::ray_tree::{HitRecord, RayNode};
+use crate::shading::phong::power;
+use crate::tree::ray_tree::{HitRecord, LocalRecord, RayNode, ShadowOutcomeRecord};
 
 /// A classic mistake recognised in the numbers.
 #[derive(Clone, Debug, PartialEq)]
@@ -35,9 +36,12 @@ pub const MISTAKES: &[(&str, &str)] = &[
     ("negative-root", "lessons/05-sphere"),
     ("no-offset", "lessons/08-shadows"),
     ("normal-not-turned", "lessons/10-refraction"),
+    ("normal-inward", "lessons/10-refraction"),
     ("normal-transform", "lessons/06-transforms"),
     ("shadow-beyond-light", "lessons/08-shadows"),
+    ("transparent-blocks", "lessons/08-shadows"),
     ("not-clamped", "lessons/07-phong"),
+    ("view-sign", "lessons/07-phong"),
     ("reflection-sign", "lessons/09-reflection"),
     ("not-normalized", "lessons/09-reflection"),
     ("eta-swapped", "lessons/10-refraction"),
@@ -51,6 +55,13 @@ fn found(id: &'static str, words: String) -> Option<Diagnosis> {
         .iter()
         .find(|(i, _)| *i == id)
         .map_or("", |(_, l)| l);
+    Some(Diagnosis { id, words, lesson })
+}
+
+/// [`found`] in another lesson than the table's: `not-normalized` is taught
+/// wherever the vector is made (a reflected direction in lesson 9, a refracted
+/// one in lesson 10, the Phong vectors in lesson 7).
+fn found_in(id: &'static str, lesson: &'static str, words: String) -> Option<Diagnosis> {
     Some(Diagnosis { id, words, lesson })
 }
 
@@ -88,7 +99,9 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
                 return found(
                     "pixel-corner",
                     format!(
-                        "your primary ray goes through the pixel's {corner} corner; raytree's goes through its center (half a pixel over: P(r, c) at c + ½, r + ½)"
+                        "your primary ray goes half a pixel toward the pixel's {corner} corner (P(r, c) at c {} ½, r {} ½): raytree takes P(r, c) at the whole c and r as the pixel's center, with no half-pixel shift",
+                        if dx < 0.0 { "−" } else { "+" },
+                        if dy > 0.0 { "−" } else { "+" },
                     ),
                 );
             }
@@ -132,8 +145,9 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
             }
             let raw = ctx.tree().nodes[ctx.tree().nodes[i].parent?].direction;
             if (raw.length() - 1.0).abs() > 1e-3 && same(refract(raw, n, n1 / n2)) {
-                return found(
+                return found_in(
                     "not-normalized",
+                    "lessons/10-refraction",
                     format!(
                         "your refracted direction is Snell's formula applied to the incoming direction as it was, of length {:.4}: the formula assumes a unit c (cos θ₁ = −n·c)",
                         raw.length()
@@ -146,8 +160,9 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
             if let Some(r) = radius
                 && same(refract(c, n * r, n1 / n2))
             {
-                return found(
+                return found_in(
                     "not-normalized",
+                    "lessons/10-refraction",
                     format!(
                         "your refracted direction uses n = P − center, of length r = {r}: Snell's formula assumes a unit normal"
                     ),
@@ -281,14 +296,24 @@ pub fn normal(ctx: &Context, n: DVec3, i: usize) -> Option<Diagnosis> {
             }
         }
     }
-    if !h.entering && same_direction(n, -h.shading_normal, tolerance(node.depth)) {
-        return found(
-            "normal-not-turned",
-            format!(
-                "your normal is the outward one, but the ray leaves '{}' from inside: the formulas need n turned to face the ray (n = −N, so that n·c < 0)",
-                h.name
-            ),
-        );
+    if same_direction(n, -h.shading_normal, tol) {
+        return if h.entering {
+            found(
+                "normal-inward",
+                format!(
+                    "your normal points into '{}', away from the ray: a ray arriving from outside meets the outward normal N, which faces it (n·c < 0); only a ray leaving the object needs it turned",
+                    h.name
+                ),
+            )
+        } else {
+            found(
+                "normal-not-turned",
+                format!(
+                    "your normal is the outward one, but the ray leaves '{}' from inside: the formulas need n turned to face the ray (n = −N, so that n·c < 0)",
+                    h.name
+                ),
+            )
+        };
     }
     None
 }
@@ -311,7 +336,8 @@ pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Di
         );
     }
     let ours = &node.shadow_rays[k];
-    let object = ctx.scene.objects.iter().find(|o| o.name == by)?;
+    let index = ctx.scene.objects.iter().position(|o| o.name == by)?;
+    let object = &ctx.scene.objects[index];
     let ray = Ray::new(ours.origin, ours.direction);
     let roots = object.roots(&ray, ctx.scene.settings.sphere);
     let before_light = roots.as_slice().iter().any(|&t| t > 1e-9 && t < 1.0);
@@ -325,10 +351,21 @@ pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Di
             ),
         );
     }
+    let k_rfa = ctx.scene.material_of(index).transparent;
+    if before_light && k_rfa > 0.0 && matches!(ours.outcome, ShadowOutcomeRecord::Reaches { .. }) {
+        return found(
+            "transparent-blocks",
+            format!(
+                "your shadow ray toward '{}' stops at '{by}', which is transparent (k_rfa = {k_rfa}): a transparent object lets its share of the light through (the light arriving is multiplied by k_rfa) and the shadow ray goes on",
+                s.light
+            ),
+        );
+    }
     None
 }
 
-/// A local color off by the negative terms a clamp at 0 removes.
+/// A local color off by the negative terms a clamp at 0 removes, or made with
+/// a Phong vector pointing the wrong way or not of unit length.
 pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
     let node = &ctx.tree().nodes[i];
     let (h, rec, got) = (node.hit.as_ref()?, node.local.as_ref()?, l.local?);
@@ -345,24 +382,115 @@ pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
             specular += rec.k_s * rv.powf(rec.shininess) * light.color;
         }
     }
+    // The learner's number is this mistake's, and the mistake changes it.
+    let matches = |c: DVec3| !same_color(c, rec.total) && same_color(got, c);
+    let view_sign = matches(phong_with(ctx, h, rec, |n, l, v, _| (n, l, -v)));
     for (extra, what) in [
         (diffuse, "N·L"),
         (specular, "R·V"),
         (diffuse + specular, "N·L and R·V"),
     ] {
-        if extra.abs().max_element() > 0.0
-            && !same_color(rec.total + extra, rec.total)
-            && same_color(got, rec.total + extra)
-        {
+        if extra.abs().max_element() > 0.0 && matches(rec.total + extra) {
+            let or = if view_sign {
+                " (or V points along the ray, V = c, where it should point back to the viewer, V = −c: here both give these numbers)"
+            } else {
+                ""
+            };
             return found(
                 "not-clamped",
                 format!(
-                    "your local color adds the terms of negative {what}: clamp them at 0 (max(0, N·L), max(0, R·V)); a light behind the surface, or a highlight pointing away, adds nothing"
+                    "your local color adds the terms of negative {what}: clamp them at 0 (max(0, N·L), max(0, R·V)); a light behind the surface, or a highlight pointing away, adds nothing{or}"
                 ),
             );
         }
     }
+    if view_sign {
+        return found(
+            "view-sign",
+            "your local color is Phong's with V along the ray, V = c: V points from the hit back to the viewer, V = −c, so the highlight is where R, the mirrored light, comes toward the eye".to_owned(),
+        );
+    }
+    let length = l.direction.length();
+    if (length - 1.0).abs() > 1e-3
+        && matches(phong_with(ctx, h, rec, |n, l, v, _| (n, l, v * length)))
+    {
+        return found_in(
+            "not-normalized",
+            "lessons/07-phong",
+            format!(
+                "your local color is Phong's with V = −c where c, your ray's direction, has length {length:.4}: V must be a unit vector, −c/|c|, or R·V is no cosine"
+            ),
+        );
+    }
+    if matches(phong_with(ctx, h, rec, |n, l, v, d| (n, l * d, v))) {
+        return found_in(
+            "not-normalized",
+            "lessons/07-phong",
+            "your local color is Phong's with L = light − P unnormalized: L must be a unit vector, (light − P)/|light − P|, or N·L and R·V are no cosines".to_owned(),
+        );
+    }
+    // The normal the learner wrote, if it is not of unit length: used as it is?
+    let normal = l.hit.as_ref()?.as_ref()?.normal?.length();
+    if (normal - 1.0).abs() > 1e-3
+        && matches(phong_with(ctx, h, rec, |n, l, v, _| (n * normal, l, v)))
+    {
+        let transformed = ctx
+            .scene
+            .objects
+            .get(h.object)
+            .is_some_and(|o| o.transform.is_some());
+        let (lesson, why) = if transformed {
+            (
+                "lessons/06-transforms",
+                "the inverse transpose (M⁻¹)ᵀ changes a normal's length, so normalize it after",
+            )
+        } else {
+            (
+                "lessons/07-phong",
+                "N·L and R·V are cosines only between unit vectors",
+            )
+        };
+        return found_in(
+            "not-normalized",
+            lesson,
+            format!(
+                "your local color is Phong's with your normal at '{}' as it is, of length {normal:.4}: divide it by its length ({why})",
+                h.name
+            ),
+        );
+    }
     None
+}
+
+/// raytree's local color at hit `h` made again with each arriving light's N, L
+/// and V changed by `change(N, L, V, distance to the light)`: the ambient term,
+/// plus for each light k_d·(N·L)·color·light where N·L > 0, and
+/// k_s·max(0, R·V)^shininess·light with R = 2(N·L)N − L (the lecture's Phong,
+/// as [`crate::shading::phong::direct`] computes it).
+fn phong_with(
+    ctx: &Context,
+    h: &HitRecord,
+    rec: &LocalRecord,
+    change: impl Fn(DVec3, DVec3, DVec3, f64) -> (DVec3, DVec3, DVec3),
+) -> DVec3 {
+    let mut total = rec.ambient;
+    for light in &rec.lights {
+        let (Some(p), Some(at)) = (&light.phong, ctx.scene.lights.get(light.light)) else {
+            continue;
+        };
+        let d = (at.position - h.point).length();
+        let (n, l, v) = change(h.shading_normal, p.l, p.v, d);
+        let n_dot_l = n.dot(l);
+        if n_dot_l <= 0.0 {
+            continue;
+        }
+        total += rec.k_d * n_dot_l * rec.color * p.arriving;
+        let r_dot_v = (2.0 * n_dot_l * n - l).dot(v).max(0.0);
+        if rec.k_s > 0.0 && r_dot_v > 0.0 {
+            total += rec.k_s * power(r_dot_v, rec.shininess) * p.arriving;
+        }
+    }
+    total
 }
 
 /// Total internal reflection not handled at node `i`'s hit, where the
@@ -417,6 +545,12 @@ pub fn color(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
         child(&l.refracted, &node.refracted),
     );
     let (k1, k2) = (node.sum.k_rfl, node.sum.k_rfa);
+    // A sum the lecture's way from the learner's own terms is no mistake in the
+    // sum: a wrong local color or child shows there already (and a ray with no
+    // children gives the same sum every way).
+    if same_color(got, local + k1 * rfl + k2 * rfa) {
+        return None;
+    }
     for (sum, what) in [
         (
             local + rfl + rfa,

@@ -139,6 +139,13 @@ impl Report {
                             out,
                             "  diagnosis:  none of the classic mistakes matches these numbers"
                         );
+                        if first.ray == "primary" && first.quantity.starts_with("direction") {
+                            let _ = writeln!(
+                                out,
+                                "  note:       raytree's image is {}×{}: was yours traced at that size (--width, --height)?",
+                                self.size.0, self.size.1
+                            );
+                        }
                     }
                 }
                 let rest: Vec<&Difference> = rest.collect();

@@ -156,6 +156,24 @@ fn rows_flipped_and_pixel_corners() {
     );
 }
 
+/// A primary ray no mistake explains: most often an image of another size.
+#[test]
+fn a_primary_direction_unexplained_asks_about_the_image_size() {
+    let (scene, src, _, mut m) = whitted(416, 209);
+    let camera = scene.camera();
+    // The same pixel of an image a tenth the size, as the camera would aim it.
+    m.ray.direction = camera.pixel_ray(41.6, 20.9).dir * 3.0 + DVec3::new(0.0, 0.1, 0.0);
+    let report = check(&scene, &src, (416, 209), &m);
+    let first = report.divergences().next().unwrap();
+    assert!(first.quantity.starts_with("direction"), "{}", report.text());
+    assert_eq!(first.diagnosis, None, "{}", report.text());
+    assert!(
+        report.text().contains("raytree's image is 640×480"),
+        "{}",
+        report.text()
+    );
+}
+
 #[test]
 fn far_and_negative_roots() {
     let (scene, src, trace, learner) = whitted(416, 209);
@@ -240,6 +258,69 @@ fn the_normal_not_turned_where_the_ray_leaves() {
         "hit.normal",
         "normal-not-turned",
     );
+}
+
+#[test]
+fn a_normal_turned_into_the_object_where_the_ray_enters() {
+    let (scene, src, _, mut m) = whitted(416, 209);
+    assert_eq!(hit(&mut m.ray).entering, Some(true));
+    let n = hit(&mut m.ray).normal.unwrap();
+    hit(&mut m.ray).normal = Some(-n);
+    first_is(
+        &check(&scene, &src, (416, 209), &m),
+        "primary",
+        "hit.normal",
+        "normal-inward",
+    );
+}
+
+/// A change to the Phong vectors N, L, V, given the distance to the light.
+type Change<'a> = dyn Fn(DVec3, DVec3, DVec3, f64) -> (DVec3, DVec3, DVec3) + 'a;
+
+/// The Phong vectors (lesson 7): V along the ray, and N, V or L used at the
+/// length the learner had them, each giving raytree's local color made again
+/// with that one vector changed, from the trace's own N, L, V and light.
+#[test]
+fn phong_with_v_along_the_ray_or_a_vector_not_of_unit_length() {
+    let (scene, src) = load("../lessons/07-phong/ball.json");
+    let px = (135, 83);
+    let trace = report::ours(&scene, src.clone(), px).unwrap();
+    let learner = reduce::reduce(&trace).unwrap();
+    let node = &trace.samples[0].tree.nodes[0];
+    let (h, local) = (node.hit.as_ref().unwrap(), node.local.as_ref().unwrap());
+    let phong = |change: &Change| {
+        let mut total = local.ambient;
+        for light in &local.lights {
+            let p = light.phong.as_ref().unwrap();
+            let d = (scene.lights[light.light].position - h.point).length();
+            let (n, l, v) = change(h.shading_normal, p.l, p.v, d);
+            let n_dot_l = n.dot(l);
+            if n_dot_l > 0.0 {
+                let r_dot_v = (2.0 * n_dot_l * n - l).dot(v).max(0.0);
+                total += local.k_d * n_dot_l * local.color * p.arriving
+                    + local.k_s * r_dot_v.powf(local.shininess) * p.arriving;
+            }
+        }
+        total
+    };
+    // Raytree's own numbers made again: the cases below change one thing only.
+    let same = phong(&|n, l, v, _| (n, l, v));
+    assert!((same - local.total).abs().max_element() < 1e-12, "{same}");
+    let c = learner.ray.direction.length();
+    assert!((c - 1.0).abs() > 1e-3, "the primary direction is unit: {c}");
+    let cases: [(&Change, f64, &str); 4] = [
+        (&|n, l, v, _| (n, l, -v), 1.0, "view-sign"),
+        (&|n, l, v, _| (n, l, v * c), 1.0, "not-normalized"),
+        (&|n, l, v, d| (n, l * d, v), 1.0, "not-normalized"),
+        (&|n, l, v, _| (n * 1.25, l, v), 1.25, "not-normalized"),
+    ];
+    for (change, normal, id) in cases {
+        let mut m = learner.clone();
+        m.ray.local = Some(phong(change));
+        let n = hit(&mut m.ray).normal.unwrap();
+        hit(&mut m.ray).normal = Some(n * normal);
+        first_is(&check(&scene, &src, px, &m), "primary", "local color", id);
+    }
 }
 
 /// The primary ray's hit: the unit incoming direction and the normal.
@@ -357,6 +438,25 @@ fn coefficients_not_applied_or_applied_twice() {
     }
 }
 
+/// A wrong local color on a ray with no children makes its color wrong too,
+/// and the sum is not to blame: the first divergence keeps the diagnosis.
+#[test]
+fn a_wrong_local_color_does_not_blame_the_coefficients() {
+    let (scene, src, trace, mut m) = whitted(120, 420);
+    let node = &trace.samples[0].tree.nodes[0];
+    assert!(node.reflected.as_ref().and_then(|b| b.node).is_none());
+    assert!(node.refracted.as_ref().and_then(|b| b.node).is_none());
+    let wrong = m.ray.local.unwrap() * 0.5;
+    m.ray.local = Some(wrong);
+    m.ray.color = Some(wrong);
+    let report = check(&scene, &src, (120, 420), &m);
+    let color = report
+        .divergences()
+        .find(|d| d.quantity == "color")
+        .unwrap_or_else(|| panic!("{}", report.text()));
+    assert_eq!(color.diagnosis, None, "{}", report.text());
+}
+
 #[test]
 fn n_dot_l_not_clamped() {
     // A ball lit from behind: at the pixel in its middle the light is behind the surface.
@@ -422,6 +522,30 @@ fn shadows_blocked_beyond_the_light() {
         "primary",
         "shadows[0].blocked",
         "shadow-beyond-light",
+    );
+}
+
+/// A shadow ray stopped by the glass ball, which lets its share through.
+#[test]
+fn a_transparent_object_taken_for_a_blocker() {
+    let (scene, src, trace, mut m) = whitted(440, 376);
+    let ours = &trace.samples[0].tree.nodes[0].shadow_rays[0];
+    assert!(
+        matches!(
+            ours.outcome,
+            raytree::tree::ray_tree::ShadowOutcomeRecord::Reaches { transmitted } if transmitted < 1.0
+        ),
+        "{:?}",
+        ours.outcome
+    );
+    let s = &mut m.ray.shadows.as_mut().unwrap()[0];
+    s.blocked = true;
+    s.by = Some(Some("glass".into()));
+    first_is(
+        &check(&scene, &src, (440, 376), &m),
+        "primary",
+        "shadows[0].blocked",
+        "transparent-blocks",
     );
 }
 

@@ -252,19 +252,51 @@ fn scene_format() -> Result<String, String> {
 /// blocks a lesson's text or a readme writes fit as the excerpts do.
 fn fit_code_blocks(markdown: &str) -> String {
     let mut out = String::new();
-    let mut inside = false;
+    let (mut inside, mut shell) = (false, false);
     for line in markdown.split_inclusive('\n') {
         let fence = ["```", "~~~"]
             .iter()
             .any(|f| line.trim_start().starts_with(f));
         if inside && !fence {
-            out.push_str(&raytree::views::wrap::text(line, CODE_WIDTH));
+            // A command (a shell block's line, or a `$ ` line of an output
+            // block) breaks with a backslash, so it still runs when copied.
+            if shell || line.starts_with("$ ") {
+                out.push_str(&wrap_command(line, CODE_WIDTH));
+            } else {
+                out.push_str(&raytree::views::wrap::text(line, CODE_WIDTH));
+            }
         } else {
             out.push_str(line);
+        }
+        if fence {
+            shell = !inside && line.trim_start()[3..].trim() == "sh";
         }
         inside ^= fence;
     }
     out
+}
+
+/// A command line broken between words into lines of at most `width`
+/// characters, each but the last ending in ` \` and the rest indented by two.
+fn wrap_command(line: &str, width: usize) -> String {
+    let (body, end) = line.strip_suffix('\n').map_or((line, ""), |b| (b, "\n"));
+    if body.chars().count() <= width {
+        return line.to_owned();
+    }
+    let mut rows: Vec<String> = vec![String::new()];
+    for word in body.split(' ') {
+        let row = rows.last_mut().expect("one row at least");
+        let wide = row.chars().count() + 1 + word.chars().count() + " \\".len();
+        if !row.trim().is_empty() && wide > width {
+            rows.push(format!("  {word}"));
+        } else {
+            if !row.is_empty() {
+                row.push(' ');
+            }
+            row.push_str(word);
+        }
+    }
+    format!("{}{end}", rows.join(" \\\n"))
 }
 
 /// The table of contents: the preface, the lessons that exist, where next,
@@ -292,4 +324,24 @@ fn summary(entries: &[lesson::Entry]) -> String {
     out.push_str("\n# Appendices\n\n");
     out.push_str("- [Commands](commands.md)\n- [Scene files](scene-format.md)\n- [The trace format](trace-format.md)\n");
     out
+}
+
+/// A command too wide for the book breaks with backslashes: copied, it runs
+/// as written.
+#[test]
+fn a_wide_command_breaks_with_backslashes() {
+    let command = format!(
+        "$ raytree check {} --pixel 200,70 mine.json\n",
+        ["lessons/06-transforms/ellipsoid.json"; 3].join(" ")
+    );
+    let wrapped = wrap_command(&command, 60);
+    let rows: Vec<&str> = wrapped.lines().collect();
+    assert!(rows.len() > 1, "{wrapped}");
+    for (i, row) in rows.iter().enumerate() {
+        assert!(row.chars().count() <= 60, "{row:?}");
+        assert_eq!(row.ends_with(" \\"), i + 1 < rows.len(), "{row:?}");
+    }
+    assert_eq!(wrapped.replace(" \\\n  ", " "), command);
+    let narrow = "$ raytree render\n";
+    assert_eq!(wrap_command(narrow, 60), narrow);
 }
