@@ -652,8 +652,12 @@ REPO = os.path.dirname(LESSONS_DIR)
 
 def vector_files(wanted):
     """The committed vectors.json of lessons 03-11 (those whose number or
-    folder name is in `wanted`, or all)."""
-    found = []
+    folder name is in `wanted`, or all), and any file `wanted` names by its
+    path (the output of `raytree vectors SCENE`)."""
+    found = [w for w in wanted if w.endswith(".json") and os.path.isfile(w)]
+    wanted = [w for w in wanted if w not in found]
+    if found and not wanted:
+        return found
     for name in sorted(os.listdir(LESSONS_DIR)):
         path = os.path.join(LESSONS_DIR, name, "vectors.json")
         if os.path.isfile(path) and (not wanted or name[:2] in wanted or name in wanted):
@@ -666,6 +670,9 @@ def run_vectors(lessons, wanted):
     prints one line per failing case and a summary. Exit 0 all pass, 1 not."""
     wanted = [w.zfill(2) if w.isdigit() else w for w in wanted]
     files = vector_files(wanted)
+    missing = [w for w in wanted if w.endswith(".json") and not os.path.isfile(w)]
+    if missing:
+        raise InputError("%s: no such vectors file" % missing[0])
     if not files:
         raise InputError("no vectors.json found for %s" % (" ".join(wanted) or "any lesson"))
     passed = failed = 0

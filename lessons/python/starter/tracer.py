@@ -8,6 +8,7 @@ lesson, run its test vectors (made by raytree from the lesson's own scene):
 
     python3 lessons/python/starter/tracer.py test 03     # lesson 03's cases
     python3 lessons/python/starter/tracer.py test        # all of them
+    python3 lessons/python/starter/tracer.py test FILE.json   # `raytree vectors SCENE -o FILE.json`
 
 When raytrace() (lesson 11) is written too, render and check a pixel:
 

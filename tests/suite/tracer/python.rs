@@ -63,6 +63,40 @@ fn the_python_solution_passes_every_lessons_vectors() {
     assert!(passed >= 15 && last.ends_with(" 0 failed"), "{stdout}");
 }
 
+/// `raytree vectors SCENE` writes cases of every function from a scene's
+/// pixels; the solution runs that file as it runs a lesson's, and a path
+/// that is no file is one line, exit 2.
+#[test]
+fn the_python_solution_runs_a_scenes_vectors_file() {
+    if !here() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("whitted-vectors.json");
+    let made = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["vectors", "scenes/whitted.json", "-o"])
+        .arg(&file)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .unwrap();
+    assert!(made.status.success(), "{:?}", made);
+    let out = python(&[SOLUTION, "test", file.to_str().unwrap()]);
+    let (stdout, stderr) = text(&out);
+    assert!(out.status.success(), "{stdout}{stderr}");
+    let last = stdout.lines().last().unwrap_or_default();
+    let passed: usize = last.split(' ').next().unwrap_or("0").parse().unwrap_or(0);
+    assert!(passed >= 50 && last.ends_with(" 0 failed"), "{stdout}");
+    let gone = dir.path().join("gone.json");
+    let out = python(&[SOLUTION, "test", gone.to_str().unwrap()]);
+    let (_, stderr) = text(&out);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("gone.json: no such vectors file"),
+        "{stderr}"
+    );
+}
+
 #[test]
 fn the_python_starter_runs_and_fails_its_vectors_until_written() {
     if !here() {
