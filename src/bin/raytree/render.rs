@@ -40,7 +40,7 @@ pub struct Args {
     /// Render a per-pixel quantity instead of the color, as a PNG with its color
     /// bar or key below: local, reflected, refracted, ambient, diffuse, specular,
     /// shadow[=LIGHT], depth, rays[=KIND], tests, normal, t, object,
-    /// discriminant[=SPHERE], tir (see the README's list).
+    /// discriminant[=SPHERE], tir (docs/commands.md says what each shows).
     #[arg(long, value_name = "NAME")]
     pub aov: Option<String>,
     /// With --aov: write the image alone, without the key strip.
@@ -170,6 +170,9 @@ fn stats(r: &RayCounter, t: &Times, structure: Accel) -> String {
             )
         },
         match structure {
+            Accel::None if r.boxes > 0 => {
+                "testing every object (--accel none), the boxes those of the meshes' own hierarchies"
+            }
             Accel::None => "testing every object (--accel none)",
             Accel::Bvh => "through a bounding volume hierarchy (--accel bvh)",
             Accel::Grid => "through a uniform grid (--accel grid)",
