@@ -149,3 +149,48 @@ fn a_mutant_whose_text_no_longer_applies_stops_in_one_line() {
         assert!(text.contains(word), "{text}");
     }
 }
+
+/// Each lesson's own mutant (the one its chapter shows) fails that lesson's
+/// test vectors: the unit tests a learner runs first catch the mistake the
+/// lesson warns of, before a whole pixel is checked.
+#[test]
+fn each_lessons_mutant_fails_its_lessons_test_vectors() {
+    if !available("", &[Need::Python3], "runs the course's Python mutants") {
+        return;
+    }
+    let out = run("python3", &[MUTANTS, "table"]);
+    assert!(out.status.success(), "{}", said(&out));
+    let table: Vec<Value> = serde_json::from_slice(&out.stdout).unwrap();
+    let solution =
+        std::fs::read_to_string(root().join("lessons/python/teacher/solution.py")).unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::create_dir(dir.path().join("teacher")).unwrap();
+    let copy = dir.path().join("teacher/solution.py");
+    let mut tried = 0;
+    for m in &table {
+        let Some(lesson) = m["lesson"].as_str() else {
+            continue;
+        };
+        let (find, replace) = (m["find"].as_str().unwrap(), m["replace"].as_str().unwrap());
+        assert_eq!(solution.matches(find).count(), 1, "{lesson}: {find}");
+        std::fs::write(&copy, solution.replace(find, replace)).unwrap();
+        // The copy finds the course's plumbing (learner_io) by the path.
+        let out = Command::new("python3")
+            .arg(&copy)
+            .args(["test", &lesson[..2]])
+            .env("PYTHONPATH", root().join("lessons/python"))
+            .current_dir(root())
+            .output()
+            .unwrap();
+        assert_eq!(out.status.code(), Some(1), "{lesson}: {}", said(&out));
+        let stdout = String::from_utf8_lossy(&out.stdout);
+        assert!(
+            stdout
+                .lines()
+                .any(|l| l.starts_with(&format!("FAIL {lesson} "))),
+            "{lesson}: {stdout}"
+        );
+        tried += 1;
+    }
+    assert_eq!(tried, 9, "one mutant a lesson, 03–11");
+}
