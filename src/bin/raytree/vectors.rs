@@ -2,10 +2,11 @@
 //! pixels and rays (lessons 03–11) or a scene's. Every error is bad input
 //! (a lesson without vectors, a scene, a folder): one line, exit status 2.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
-use raytree::course::vectors;
+use raytree::course::{lesson, vectors};
+use raytree::scene::source;
 
 use crate::output;
 
@@ -23,6 +24,7 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<()> {
+    let mut inputs: Vec<PathBuf> = Vec::new();
     let text = match args.target.parse::<u32>() {
         Ok(number) => {
             let functions = vectors::LESSON_FUNCTIONS
@@ -38,6 +40,9 @@ pub fn run(args: &Args) -> Result<()> {
             }
             let (name, targets) =
                 vectors::lesson_targets(&args.lessons, number).map_err(anyhow::Error::msg)?;
+            let folder = args.lessons.join(&name);
+            inputs.extend([lesson::SPEC, lesson::TEXT, lesson::STEPS].map(|f| folder.join(f)));
+            inputs.extend(scene_files(&targets));
             vectors::document(&name, &format!("raytree vectors {number}"), functions, &targets)
         }
         Err(_) => {
@@ -47,6 +52,7 @@ pub fn run(args: &Args) -> Result<()> {
                 .flat_map(|(_, f)| f.iter().copied())
                 .collect();
             let targets = vectors::scene_targets(&scene).map_err(anyhow::Error::msg)?;
+            inputs.extend(scene_files(&targets));
             let made_by = format!("raytree vectors {}", args.target);
             vectors::document(&args.target, &made_by, &all, &targets)
         }
@@ -54,11 +60,27 @@ pub fn run(args: &Args) -> Result<()> {
     .map_err(anyhow::Error::msg)?;
     match &args.output {
         Some(path) => {
-            let file = output::create(path, &[])?;
+            let file = output::create(path, &inputs)?;
             file.commit(text.as_bytes())?;
             output::note(&format!("wrote {}", path.display()))?;
         }
         None => output::print(text)?,
     }
     Ok(())
+}
+
+/// The files the targets' scenes are read from: each scene and its meshes.
+fn scene_files(targets: &[vectors::Target]) -> Vec<PathBuf> {
+    let mut files: Vec<PathBuf> = Vec::new();
+    for t in targets {
+        if files.contains(&t.scene) {
+            continue;
+        }
+        files.push(t.scene.clone());
+        // A scene that does not load fails the command below, with its reason.
+        if let Ok((scene, _)) = source::load(Some(Path::new(&t.scene))) {
+            files.extend(scene.mesh_files);
+        }
+    }
+    files
 }

@@ -101,3 +101,62 @@ fn vectors_of_a_scene_hold_every_function_and_bad_targets_are_one_line() {
         assert!(out.stdout.is_empty());
     }
 }
+
+/// `-o` never writes over what the command reads: the scene, its meshes, a
+/// lesson's own files. The input is left as it was, and the legitimate
+/// output beside them is still written.
+#[test]
+fn vectors_never_write_over_their_inputs() {
+    let dir = tempfile::tempdir().unwrap();
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let copy = |from: &str| {
+        let to = dir.path().join(from);
+        std::fs::create_dir_all(to.parent().unwrap()).unwrap();
+        std::fs::copy(root.join(from), &to).unwrap();
+    };
+    for f in [
+        "scenes/whitted.json",
+        "scenes/gaspra.json",
+        "scenes/meshes/gaspra.obj",
+        "lessons/05-sphere/lesson.toml",
+        "lessons/05-sphere/lesson.md",
+        "lessons/05-sphere/steps.toml",
+        "lessons/05-sphere/ball.json",
+        "lessons/05-sphere/behind.json",
+    ] {
+        copy(f);
+    }
+    let run = |args: &[&str]| {
+        std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(args)
+            .current_dir(dir.path())
+            .output()
+            .unwrap()
+    };
+    for (target, output) in [
+        ("scenes/whitted.json", "scenes/whitted.json"),
+        ("scenes/gaspra.json", "scenes/meshes/gaspra.obj"),
+        ("5", "lessons/05-sphere/lesson.toml"),
+        ("5", "lessons/05-sphere/steps.toml"),
+        ("5", "lessons/05-sphere/ball.json"),
+        ("5", "scenes/whitted.json"),
+    ] {
+        let before = std::fs::read(dir.path().join(output)).unwrap();
+        let out = run(&["vectors", target, "-o", output]);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!out.status.success(), "{target} -o {output}");
+        assert_eq!(stderr.lines().count(), 1, "{stderr}");
+        assert!(
+            stderr.contains(&format!("cannot write {output}")),
+            "{stderr}"
+        );
+        assert_eq!(
+            std::fs::read(dir.path().join(output)).unwrap(),
+            before,
+            "{output} changed"
+        );
+    }
+    let out = run(&["vectors", "5", "-o", "lessons/05-sphere/vectors.json"]);
+    assert!(out.status.success(), "{out:?}");
+    assert!(dir.path().join("lessons/05-sphere/vectors.json").is_file());
+}
