@@ -125,7 +125,15 @@ impl Sphere {
     /// origin (pbrt-v4 §6.8.5), and that bound goes with it.
     pub fn surface(&self, ray: &Ray, t: f64) -> Surface {
         let mut local = ray.at(t) - self.center;
-        local *= self.radius / local.length();
+        let mut length = local.length();
+        // A sphere far below the precision of the ray (radius 1e-9 seen from
+        // 1e9 away) can have its hit rounded onto its center, which gives no
+        // direction to project along: take the side that faces the ray.
+        if !(length > 0.0 && length.is_finite()) {
+            local = -ray.dir;
+            length = local.length();
+        }
+        local *= self.radius / length;
         let point = self.center + local;
         Surface {
             point,
@@ -154,6 +162,22 @@ mod tests {
             center: DVec3::ZERO,
             radius: 1.0,
         }
+    }
+
+    /// Seen from 1e9 away, a sphere of radius 1e-9 is met at its center to
+    /// the last bit: the surface is still a point on it, facing the ray.
+    #[test]
+    fn a_hit_rounded_onto_the_center_faces_the_ray() {
+        let s = Sphere {
+            center: DVec3::ZERO,
+            radius: 1e-9,
+        };
+        let ray = Ray::new(DVec3::new(0.0, 0.0, 1e9), DVec3::NEG_Z);
+        assert_eq!(ray.at(1e9), DVec3::ZERO);
+        let surface = s.surface(&ray, 1e9);
+        assert!(surface.point.is_finite() && surface.point_error.is_finite());
+        assert_eq!(surface.normal, DVec3::Z);
+        assert_eq!(surface.point, DVec3::new(0.0, 0.0, 1e-9));
     }
 
     #[test]

@@ -381,6 +381,26 @@ fn the_most_extreme_valid_scene_renders_and_traces_finite_numbers() {
     }
 }
 
+/// Within the limits, yet below the precision of the ray: a sphere of radius
+/// 1e-9 seen from 1e9 away, whose hit rounds onto its very center. It renders
+/// finite and its trace reads back (it was NaN, and the JSON trace refused).
+#[test]
+fn a_sphere_below_the_rays_precision_renders_and_traces_finite_numbers() {
+    let text = r#"{"camera": {"eye": [0, 0, 1e9]}, "render": {"width": 9, "height": 9},
+        "lights": [{"position": [0, 5, 5]}],
+        "objects": [{"sphere": {"center": [0, 0, 0], "radius": 1e-9}}]}"#;
+    let scene = loader::parse(text, "tiny.json").unwrap();
+    let image =
+        raytree::trace::render::render(&scene, &raytree::trace::progress::Progress::QUIET).unwrap();
+    assert!(image.pixels.iter().all(|p| p.is_finite()));
+    let source = raytree::scene::source::SceneSource::new("tiny.json", text);
+    let trace = raytree::tree::record::pixel(&scene, source, 4, 4, None).unwrap();
+    let hit = trace.samples[0].tree.nodes[0].hit.as_ref().expect("a hit");
+    assert_eq!(hit.name, "sphere0");
+    trace.to_checked_json().unwrap();
+    assert_eq!(trace.color, image.get(4, 4));
+}
+
 /// Whether `message` names a Rust type (`struct SceneFile`, `f64`, `usize`)
 /// where a user should read a word of the format.
 pub fn names_a_rust_type(message: &str) -> bool {
