@@ -4,6 +4,7 @@
 //! PostScript program.
 
 pub mod input; // regular files only, size checked before reading
+pub mod headroom; // whether a file will fit in memory once loaded
 pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
 pub mod image_file; // PNG and PPM
 pub mod output; // files written atomically

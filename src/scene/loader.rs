@@ -18,6 +18,7 @@ use std::sync::Arc;
 use glam::DVec3;
 
 use crate::geometry::mesh::Mesh;
+use crate::io::headroom;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::camera_file;
@@ -54,10 +55,20 @@ pub fn parse_file(text: &str, file: &str) -> Result<Scene, SceneError> {
 /// Reads a scene file's text: a regular file of at most
 /// [`MAX_INPUT_BYTES`], checked before reading.
 pub fn read(path: &Path) -> Result<String, SceneError> {
-    input::read_text(path, MAX_INPUT_BYTES).map_err(|reason| SceneError::Read {
+    let error = |reason| SceneError::Read {
         reason,
         file: path.display().to_string(),
-    })
+    };
+    let available = headroom::available();
+    if let Ok(meta) = std::fs::metadata(path) {
+        headroom::check(meta.len(), available).map_err(error)?;
+    }
+    let text = input::read_text(path, MAX_INPUT_BYTES).map_err(error)?;
+    // An NFF file's words are capped well below what memory holds.
+    if !nff::is_nff(&path.display().to_string()) {
+        headroom::check(headroom::json_scene_need(text.as_bytes()), available).map_err(error)?;
+    }
+    Ok(text)
 }
 
 /// The built-in Whitted scene.

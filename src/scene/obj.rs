@@ -10,6 +10,7 @@ use std::path::Path;
 use glam::DVec3;
 
 use crate::geometry::mesh::Mesh;
+use crate::io::headroom;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::limits::MAX_COORDINATE;
 
@@ -30,11 +31,17 @@ pub struct ObjError {
 /// normals, if any.
 pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
     let file = path.display().to_string();
-    let bytes = input::read_bytes(path, MAX_INPUT_BYTES).map_err(|message| ObjError {
+    let error = |message| ObjError {
         file: file.clone(),
         line: None,
         message,
-    })?;
+    };
+    let available = headroom::available();
+    if let Ok(meta) = std::fs::metadata(path) {
+        headroom::check(meta.len(), available).map_err(error)?;
+    }
+    let bytes = input::read_bytes(path, MAX_INPUT_BYTES).map_err(error)?;
+    headroom::check(headroom::obj_need(&bytes), available).map_err(error)?;
     parse(&bytes, &file, smooth)
 }
 

@@ -374,3 +374,36 @@ fn a_scripts_pixel_off_the_image_is_refused_by_inspect_as_by_lesson() {
     );
     assert_eq!(lesson, expected);
 }
+
+/// A scene that would not fit in the memory the process may have is refused
+/// before it is parsed, in one line with the figures, exit 1: not the
+/// allocator's abort and a backtrace halfway (here under `ulimit -v`).
+#[test]
+fn a_scene_too_big_for_the_memory_is_refused_before_it_is_read() {
+    if Command::new("bash").arg("-c").arg("true").status().is_err() {
+        println!("skipped: a_scene_too_big_for_the_memory_is_refused_before_it_is_read: no bash");
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let args = ["generate", "spheres", "--count", "200000", "-o", "big.json"];
+    crate::commands::cli::succeeds(&args, dir.path());
+    let out = Command::new("bash")
+        .arg("-c")
+        .arg("ulimit -v 150000 && exec \"$0\" \"$@\"")
+        .arg(env!("CARGO_BIN_EXE_raytree"))
+        .args(["render", "big.json", "--width", "8", "--height", "8"])
+        .current_dir(dir.path())
+        .env_remove("RUST_BACKTRACE")
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(1), "{stderr}");
+    assert_eq!(stderr.lines().count(), 1, "{stderr}");
+    assert!(
+        stderr.contains("big.json: loading it takes about ")
+            && stderr.contains(" of memory, more than the "),
+        "{stderr}"
+    );
+    assert!(!dir.path().join("big.png").exists());
+}
