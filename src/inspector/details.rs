@@ -100,9 +100,9 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
         if revealed.camera {
             out.extend(camera);
         }
-        for test in node.tests.iter().take(p.tests) {
-            out.extend(explained(explain::test(test, kind_of(test), node)));
-        }
+        out.extend(tests(&node.tests[..p.tests.min(node.tests.len())], |t| {
+            explained(explain::test(t, kind_of(t), node))
+        }));
         if p.hit {
             out.extend(hit_details(node, trace.structure));
         }
@@ -115,10 +115,33 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
     out.extend(color_sum(node, tc));
     out.push(Line::from(""));
     out.extend(camera);
-    for test in &node.tests {
-        out.extend(explained(explain::test(test, kind_of(test), node)));
-    }
+    out.extend(tests(&node.tests, |t| {
+        explained(explain::test(t, kind_of(t), node))
+    }));
     out.extend(working(node, Progress::DONE, tc));
+    out
+}
+
+/// The most object tests the pane writes out for one ray. A ray through a
+/// big scene without a structure tests every object, and writing out 838,000
+/// of them took the pane 14 GB and minutes a key; past a few screenfuls
+/// nobody reads them one by one, and the trace file holds them all.
+const MOST_TESTS_SHOWN: usize = 200;
+
+/// Each test's lines, or for more than [`MOST_TESTS_SHOWN`] the first and
+/// the last half of that (the last are the newest while stepping) around a
+/// line saying how many are left out.
+fn tests<T>(tests: &[T], lines: impl Fn(&T) -> Vec<Line<'static>>) -> Vec<Line<'static>> {
+    if tests.len() <= MOST_TESTS_SHOWN {
+        return tests.iter().flat_map(&lines).collect();
+    }
+    let half = MOST_TESTS_SHOWN / 2;
+    let left_out = tests.len() - 2 * half;
+    let mut out: Vec<Line<'static>> = tests[..half].iter().flat_map(&lines).collect();
+    out.push(Line::from(format!(
+        "… {left_out} more tests here (`raytree trace --json` holds every one)"
+    )));
+    out.extend(tests[tests.len() - half..].iter().flat_map(&lines));
     out
 }
 
@@ -247,4 +270,26 @@ fn color_sum(node: &RayNode, tc: bool) -> Vec<Line<'static>> {
         swatch(s.color, tc),
     ]));
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_ray_of_many_tests_shows_the_first_and_last_and_counts_the_rest() {
+        let one = |k: &usize| vec![Line::from(format!("test {k}"))];
+        let few: Vec<usize> = (0..MOST_TESTS_SHOWN).collect();
+        assert_eq!(tests(&few, one).len(), MOST_TESTS_SHOWN);
+        let many: Vec<usize> = (0..838_000).collect();
+        let shown = tests(&many, one);
+        assert_eq!(shown.len(), MOST_TESTS_SHOWN + 1);
+        let text: Vec<String> = shown.iter().map(|l| l.to_string()).collect();
+        assert_eq!(text[0], "test 0");
+        assert_eq!(
+            text[MOST_TESTS_SHOWN / 2],
+            "… 837800 more tests here (`raytree trace --json` holds every one)"
+        );
+        assert_eq!(text[MOST_TESTS_SHOWN], "test 837999");
+    }
 }

@@ -5,6 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
+use crate::io::headroom;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
 use crate::scene::source::BUILT_IN;
@@ -18,8 +19,12 @@ use crate::tree::trace_check;
 /// naming the file.
 pub fn read(path: &Path) -> anyhow::Result<TraceDocument> {
     let file = path.display();
-    let text = input::read_text(path, MAX_INPUT_BYTES)
-        .map_err(|reason| anyhow::anyhow!("cannot read {file}: {reason}"))?;
+    let refused = |reason| anyhow::anyhow!("cannot read {file}: {reason}");
+    if let Ok(meta) = std::fs::metadata(path) {
+        let need = meta.len().saturating_mul(headroom::TRACE_PER_BYTE);
+        headroom::check(need, headroom::available()).map_err(refused)?;
+    }
+    let text = input::read_text(path, MAX_INPUT_BYTES).map_err(refused)?;
     parse(&text).map_err(|e| anyhow::anyhow!("{file}:{e}"))
 }
 

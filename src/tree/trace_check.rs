@@ -186,8 +186,24 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
             trace.lights.len()
         )),
     };
+    // Every structure tests an object at most once a ray (the grid and the
+    // trees through a mailbox), so a longer list is no trace raytree wrote.
+    if node.tests.len() > trace.objects.len() {
+        return Err(format!(
+            "{here}.tests: {} tests of a scene of {} objects (a ray tests each object at most once)",
+            node.tests.len(),
+            trace.objects.len()
+        ));
+    }
+    let mut seen = vec![false; trace.objects.len()];
     for (k, test) in node.tests.iter().enumerate() {
         object(test.object, &test.name, format!("{here}.tests[{k}].object"))?;
+        if std::mem::replace(&mut seen[test.object], true) {
+            return Err(format!(
+                "{here}.tests[{k}].object: '{}' is tested a second time (a ray tests each object at most once)",
+                test.name.escape_debug()
+            ));
+        }
     }
     // The visits sit among the tests in the order the search made them.
     let mut before = 0;

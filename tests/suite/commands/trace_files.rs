@@ -62,6 +62,23 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             "samples[0].tree.nodes[0].boxes[0].after_tests: 9 is not between 0 (the visit before) and 4 (the ray's tests)",
         ),
         (
+            "an-object-tested-twice",
+            broken(|v| {
+                let first = node(v, 0)["tests"][0].clone();
+                node(v, 0)["tests"].as_array_mut().unwrap()[1] = first;
+            }),
+            "samples[0].tree.nodes[0].tests[1].object: 'floor' is tested a second time (a ray tests each object at most once)",
+        ),
+        (
+            "more-tests-than-objects",
+            broken(|v| {
+                let tests = node(v, 0)["tests"].as_array().unwrap().clone();
+                let many: Vec<Value> = tests.iter().cycle().take(40).cloned().collect();
+                node(v, 0)["tests"] = json!(many);
+            }),
+            "samples[0].tree.nodes[0].tests: 40 tests of a scene of 4 objects",
+        ),
+        (
             "object-index",
             broken(|v| node(v, 0)["hit"]["object"] = json!(99)),
             "samples[0].tree.nodes[0].hit.object: object 99 does not exist (the trace lists 4)",
