@@ -188,6 +188,9 @@ impl Builder<'_> {
     /// however many objects use it.
     fn mesh(&self, i: usize, m: &MeshFile) -> Result<Shape, SceneError> {
         self.check(format_args!("objects[{i}].mesh.file"), &m.file, |f| {
+            if f.trim().is_empty() {
+                return Err("must name an OBJ file, got an empty name".to_owned());
+            }
             name_ok(f)?;
             within(self.dir, f)
         })?;

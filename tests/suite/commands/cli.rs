@@ -320,6 +320,20 @@ fn bad_meshes_name_the_obj_file_and_line() {
             "{file}: {e}"
         );
     }
+    // An empty name is the scene's fault, named by its field (it read as
+    // "error: : no such file").
+    for name in ["", " "] {
+        let scene = format!(r#"{{"objects": [{{"mesh": {{"file": "{name}"}}}}]}}"#);
+        let e = crate::common::refused(
+            "empty-mesh-name",
+            &[("bad.json", scene.as_bytes())],
+            &["render", "bad.json"],
+        );
+        assert_eq!(
+            e,
+            "error: bad.json: objects[0].mesh.file: must name an OBJ file, got an empty name"
+        );
+    }
 }
 
 #[test]
