@@ -18,6 +18,7 @@ use std::ffi::{OsStr, OsString};
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::{Child, ExitStatus, Output};
+use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::{Mutex, MutexGuard};
 
 use anyhow::{Result, bail};
@@ -128,7 +129,10 @@ pub fn clean_up_on_signals() {
                 SIGQUIT => "quit (SIGQUIT)",
                 _ => "hung up (SIGHUP)",
             };
-            let _ = write_all(io::stderr().lock(), "error", b"\n");
+            // Below the bar's line, when a bar may be drawn on it.
+            if BAR_SHOWN.load(Ordering::Relaxed) {
+                let _ = write_all(io::stderr().lock(), "error", b"\n");
+            }
             last_word(&format!("{what}: no output written"));
             std::process::exit(128 + signal);
         }
@@ -235,6 +239,10 @@ pub fn on_bar(bar: &ProgressBar) -> impl Fn(u64, u64) + Sync + '_ {
     }
 }
 
+/// Whether a progress bar may be drawn on standard error (a terminal): a
+/// signal's last word then starts on a line of its own.
+static BAR_SHOWN: AtomicBool = AtomicBool::new(false);
+
 /// A bar on stderr, drawn only when stderr is a terminal (hidden when `quiet`),
 /// with `template` as indicatif writes it. A bar never fails the program:
 /// indicatif hides it when stderr is not a terminal (a pipe, closed or not)
@@ -243,6 +251,9 @@ pub fn on_bar(bar: &ProgressBar) -> impl Fn(u64, u64) + Sync + '_ {
 pub fn progress_bar(quiet: bool, template: &str) -> ProgressBar {
     if quiet {
         return ProgressBar::hidden();
+    }
+    if io::stderr().is_terminal() {
+        BAR_SHOWN.store(true, Ordering::Relaxed);
     }
     let bar = ProgressBar::with_draw_target(None, ProgressDrawTarget::stderr());
     bar.set_style(

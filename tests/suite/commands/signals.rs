@@ -67,6 +67,40 @@ fn each_signal_during_a_render_leaves_no_file() {
     }
 }
 
+/// A signal's word is the one line on standard error: no empty line before
+/// it (which ends a progress bar's line) when no bar was drawn, with `-q` or
+/// with standard error not a terminal.
+#[test]
+fn a_signal_s_word_is_one_line_without_a_bar() {
+    for quiet in [true, false] {
+        let dir = tempfile::tempdir().unwrap();
+        let mut args = vec![
+            "render", "--width", "4000", "--height", "3000", "--spp", "64", "-o", "big.png",
+        ];
+        if quiet {
+            args.push("-q");
+        }
+        let child = Command::new(env!("CARGO_BIN_EXE_raytree"))
+            .args(&args)
+            .current_dir(dir.path())
+            .stderr(Stdio::piped())
+            .spawn()
+            .unwrap();
+        let started = Instant::now();
+        while names_in(dir.path()).is_empty() && started.elapsed() < Duration::from_secs(10) {
+            std::thread::sleep(Duration::from_millis(10));
+        }
+        kill("TERM", child.id());
+        let out = child.wait_with_output().unwrap();
+        assert_eq!(out.status.code(), Some(128 + 15), "quiet {quiet}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr),
+            "terminated (SIGTERM): no output written\n",
+            "quiet {quiet}"
+        );
+    }
+}
+
 /// Runs the inspector in a tmux pane, sends it `signal` once it has drawn, and
 /// returns its exit status and the terminal's settings after it ended.
 fn inspector_after(signal: &str) -> (String, String, String) {
