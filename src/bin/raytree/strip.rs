@@ -4,8 +4,8 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result};
-use raytree::scene::loader;
 use raytree::scene::vary::{self, Variation};
+use raytree::scene::{loader, nff};
 use raytree::trace::frames;
 use raytree::views::filmstrip::{self, Frame};
 
@@ -38,7 +38,11 @@ pub fn run(args: &Args) -> Result<()> {
     // applied to each frame.
     let (base, source) = raytree::scene::source::load(args.scene.scene.as_deref())?;
     args.scene.settings(&base.settings)?;
+    // The scene as JSON, whose fields --vary names: an NFF file read into it.
     let text = match &args.scene.scene {
+        Some(file) if nff::is_nff(&source.file) => {
+            nff::to_json(&loader::read(file)?, &source.file)?
+        }
         Some(file) => loader::read(file)?,
         None => loader::WHITTED.to_owned(),
     };

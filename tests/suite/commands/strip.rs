@@ -61,6 +61,28 @@ fn a_strip_has_a_frame_per_value_and_the_changes_raytree_diff_measures() {
     std::fs::remove_dir_all(&dir).unwrap();
 }
 
+/// An NFF scene is varied by the fields of its scene JSON (what `raytree
+/// convert` writes): the strip read the NFF text as JSON, "expected value at
+/// line 1 column 1".
+#[test]
+fn a_strip_varies_an_nff_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let nff = concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/sampler.nff");
+    let args = [
+        "strip",
+        nff,
+        "--vary",
+        "max_depth=1,2",
+        "--width",
+        "64",
+        "-q",
+        "-o",
+        "s.png",
+    ];
+    succeeds(&args, dir.path());
+    assert!(dir.path().join("s.png").is_file());
+}
+
 #[test]
 fn bad_variations_are_one_line_errors() {
     let e = fails_in(
