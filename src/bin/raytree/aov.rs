@@ -9,12 +9,13 @@ use raytree::trace::aov_render;
 use raytree::trace::progress::Progress;
 use raytree::views::aov_figure;
 
+use crate::args::usage;
 use crate::output;
 use crate::render::{Args, thread_pool};
 
 pub fn run(args: &Args, name: &str) -> Result<()> {
     let (scene, source) = args.scene.load()?;
-    let aov = Aov::parse(name, &scene).map_err(|e| anyhow!("--aov: {e}"))?;
+    let aov = Aov::parse(name, &scene).map_err(|e| usage(format_args!("--aov: {e}")))?;
     let label = aov.name(&scene).replace(['=', '/', ' '], "-");
     let path = output::name_or(&args.output, || {
         output::stem_and(args.scene.stem(), &format!("-{label}.png"))

@@ -1,9 +1,10 @@
 //! Argument groups several commands share (the scene with its overrides, the
-//! pixel or ray to trace) and the parsers of their values.
+//! pixel or ray to trace), the parsers of their values, and [`Usage`], the
+//! error of a command line that parses but asks for what cannot be.
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::Result;
 use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
@@ -11,7 +12,34 @@ use raytree::scene::overrides::{Overrides, Protocol};
 use raytree::scene::settings::RenderSettings;
 use raytree::scene::source::{self, SceneSource};
 use raytree::tree::document::TraceDocument;
-use raytree::tree::record;
+use raytree::tree::record::{self, TraceError};
+
+/// A refusal of the command line itself, found after it parsed: a flag's
+/// value out of its range (one the scene sets, as a pixel outside the image),
+/// two flags that do not go together, an output name of the wrong kind.
+/// `main` reports it as it reports clap's own usage errors: one line ending
+/// with the `--help` to read, exit status 2. Everything else (a file's
+/// content, reading or writing) stays exit status 1.
+#[derive(Debug)]
+pub struct Usage(pub String);
+
+impl std::fmt::Display for Usage {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for Usage {}
+
+/// `message` as a [`Usage`] error.
+pub fn usage(message: impl std::fmt::Display) -> anyhow::Error {
+    Usage(message.to_string()).into()
+}
+
+/// Whether `e` is, or was caused by, a [`Usage`] error.
+pub fn is_usage(e: &anyhow::Error) -> bool {
+    e.chain().any(|cause| cause.is::<Usage>())
+}
 
 /// A scene and the settings that override its `render` block.
 #[derive(clap::Args)]
@@ -34,12 +62,17 @@ impl SceneArgs {
         Ok((scene, source))
     }
 
-    /// `own` (a scene's settings) with the flags given put in place, checked.
+    /// `own` (a scene's settings, already checked when it was read) with the
+    /// flags given put in place, checked: settings the flags make impossible
+    /// are a [`Usage`] error naming the flag.
     pub fn settings(&self, own: &RenderSettings) -> Result<RenderSettings> {
         let own = self.protocol.map_or(*own, |p| p.overrides().apply(own));
         let settings = self.overrides.apply(&own);
         if let Err((field, message)) = settings.validate() {
-            bail!("--{}: {message}", field.replace('_', "-"));
+            return Err(usage(format_args!(
+                "--{}: {message}",
+                field.replace('_', "-")
+            )));
         }
         Ok(settings)
     }
@@ -80,12 +113,21 @@ pub struct TargetArgs {
 }
 
 impl TargetArgs {
-    /// Records the pixel's or the ray's trees.
+    /// Records the pixel's or the ray's trees. A pixel outside the image, a
+    /// sample the pixel does not have, or settings whose trees a trace cannot
+    /// hold (lowering --spp or --max-depth is the remedy) is a [`Usage`]
+    /// error; the ray was checked when parsed.
     pub fn record(&self, scene: &Scene, source: SceneSource) -> Result<TraceDocument> {
-        Ok(match (self.pixel, self.ray) {
-            (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample.map(|k| k - 1))?,
-            (_, Some(ray)) => record::ray(scene, source, ray)?,
+        let recorded = match (self.pixel, self.ray) {
+            (Some((x, y)), _) => record::pixel(scene, source, x, y, self.sample.map(|k| k - 1)),
+            (_, Some(ray)) => record::ray(scene, source, ray),
             _ => unreachable!("clap requires --pixel or --ray"),
+        };
+        recorded.map_err(|e| match e {
+            TraceError::PixelOutside { .. }
+            | TraceError::SampleOutside { .. }
+            | TraceError::TooManyRays { .. } => usage(e),
+            TraceError::BadRay => e.into(),
         })
     }
 }

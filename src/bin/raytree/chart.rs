@@ -2,14 +2,14 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use raytree::io::output::same_file;
 use raytree::trace::progress::Progress;
 use raytree::trace::sweep::{self, Cost};
 use raytree::views::chart;
 use raytree::views::numbers::num;
 
-use crate::args::{SceneArgs, parse_size};
+use crate::args::{SceneArgs, parse_size, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -51,10 +51,10 @@ pub fn run(args: &Args) -> Result<()> {
     output::require_png(&path, "a chart")?;
     let inputs = args.scene.inputs(&scene);
     if let Some(csv) = args.csv.as_deref().filter(|c| same_file(c, &path)) {
-        bail!(
+        return Err(usage(format_args!(
             "cannot write {}: the CSV figures and the chart need two files",
             csv.display()
-        );
+        )));
     }
     let png = output::create(&path, &inputs)?;
     let csv = (args.csv.as_deref())

@@ -4,9 +4,10 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Result, bail};
+use anyhow::Result;
 use raytree::scene::{loader, nff};
 
+use crate::args::usage;
 use crate::output;
 
 #[derive(clap::Args)]
@@ -21,21 +22,18 @@ pub struct Args {
 pub fn run(args: &Args) -> Result<()> {
     let name = args.input.display().to_string();
     if !nff::is_nff(&name) {
-        bail!(
+        return Err(usage(format_args!(
             "cannot convert {name}: raytree converts NFF files (.nff) to scene JSON; a .json scene is already one"
-        );
+        )));
     }
     let path = output::name_or(&args.output, || {
         output::stem_and(args.input.file_stem().unwrap_or("scene".as_ref()), ".json")
     });
-    if path
-        .extension()
-        .is_none_or(|e| !e.eq_ignore_ascii_case("json"))
-    {
-        bail!(
+    if !output::has_extension(&path, "json") {
+        return Err(usage(format_args!(
             "cannot write {}: a scene is written as a .json file",
             path.display()
-        );
+        )));
     }
     let json = nff::to_json(&loader::read(&args.input)?, &name)?;
     // Read back as any scene file is: what is written must load.

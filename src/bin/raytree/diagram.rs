@@ -2,14 +2,14 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use glam::DVec2;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
 use raytree::views::{hit_vectors, tree_graph};
 
-use crate::args::{SceneArgs, TargetArgs, parse_size};
+use crate::args::{SceneArgs, TargetArgs, parse_size, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -112,10 +112,21 @@ pub fn run(args: &Args) -> Result<()> {
     let extension = path.extension().map(|e| e.to_ascii_lowercase());
     let svg = extension.as_ref().is_some_and(|e| e == "svg");
     if !svg && extension.as_ref().is_none_or(|e| e != "png") {
-        bail!(
+        return Err(usage(format_args!(
             "cannot write {}: a diagram is a .png or an .svg",
             path.display()
-        );
+        )));
+    }
+    if svg && (args.vectors.is_some() || args.graph) {
+        return Err(usage(format_args!(
+            "cannot write {}: {} drawn as PNG only",
+            path.display(),
+            if args.graph {
+                "the tree graph is"
+            } else {
+                "the hit's vectors are"
+            }
+        )));
     }
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
     let trace = args.target.record(&scene, source)?;
@@ -144,12 +155,6 @@ pub fn run(args: &Args) -> Result<()> {
         svg,
     };
     if let Some(k) = args.vectors {
-        if svg {
-            bail!(
-                "cannot write {}: the hit's vectors are drawn as PNG only",
-                path.display()
-            );
-        }
         let sample = trace.samples.first().context("the trace has no sample")?;
         let hits: Vec<_> = sample
             .tree
@@ -157,9 +162,12 @@ pub fn run(args: &Args) -> Result<()> {
             .iter()
             .filter_map(|n| n.hit.as_ref())
             .collect();
-        let hit = hits
-            .get(k as usize - 1)
-            .with_context(|| format!("no hit P{k}: the tree has {} hits", hits.len()))?;
+        let hit = hits.get(k as usize - 1).ok_or_else(|| {
+            usage(format_args!(
+                "--vectors {k}: no hit P{k}: the tree has {} hits",
+                hits.len()
+            ))
+        })?;
         let name = format!("P{k} on '{}'", hit.name);
         let title = match &trace.pixel {
             Some(p) => format!("{}, pixel {},{}, {name}", trace.scene.file, p.x, p.y),
@@ -174,12 +182,6 @@ pub fn run(args: &Args) -> Result<()> {
         return Ok(());
     }
     if args.graph {
-        if svg {
-            bail!(
-                "cannot write {}: the tree graph is drawn as PNG only",
-                path.display()
-            );
-        }
         let sample = trace.samples.first().context("the trace has no sample")?;
         let title = match &trace.pixel {
             Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),

@@ -37,16 +37,15 @@ pub const TROUBLE: u8 = 2;
 /// [`DIFFERENT`]; an error is [`TROUBLE`] (`main` reports it). A reader
 /// that goes away leaves the answer as it is: it is known before printing.
 pub fn run(args: &Args) -> Result<ExitCode> {
+    if let Some(path) = &args.output {
+        output::require_png(path, "a difference figure")?;
+    }
     let a = image_file::read_rgb8(&args.a)?;
     let b = image_file::read_rgb8(&args.b)?;
     let d = image_diff::difference(&a, &b)?;
-    let pending = match &args.output {
-        Some(path) => {
-            output::require_png(path, "a difference figure")?;
-            Some(output::create(path, &[args.a.clone(), args.b.clone()])?)
-        }
-        None => None,
-    };
+    let pending = (args.output.as_deref())
+        .map(|path| output::create(path, &[args.a.clone(), args.b.clone()]))
+        .transpose()?;
     if let (Some(pending), Some(path)) = (pending, &args.output) {
         let name = |p: &Path| {
             p.file_name().map_or_else(

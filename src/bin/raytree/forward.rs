@@ -5,6 +5,7 @@
 use std::path::PathBuf;
 
 use anyhow::{Context, Result, anyhow, bail};
+use raytree::scene::limits;
 use raytree::trace::forward;
 use raytree::trace::progress::Progress;
 use raytree::trace::render;
@@ -12,7 +13,7 @@ use raytree::views::forward_figure;
 
 use crate::args::SceneArgs;
 use crate::output;
-use crate::render::thread_pool;
+use crate::render::{parse_threads, thread_pool};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -24,9 +25,9 @@ pub struct Args {
     /// Seed of the random directions: the same seed gives the same rays.
     #[arg(long, value_name = "S", default_value_t = 1)]
     seed: u64,
-    /// Radius of the eye's pupil in scene units (a point eye is never met)
+    /// Radius of the eye's pupil in scene units, 1e-9 to 1e9 as a scene's lengths (a point eye is never met)
     /// [default: 1/10 of the image plane's half-width, taken at the look-at distance].
-    #[arg(long, value_name = "R")]
+    #[arg(long, value_name = "R", value_parser = parse_pupil)]
     pupil: Option<f64>,
     /// Output figure (.png) [default: the scene's name with -forward.png].
     #[arg(short, long, value_name = "OUT.png")]
@@ -34,12 +35,21 @@ pub struct Args {
     /// Write the sparse image alone, pixel for pixel, without the backward render and the figures.
     #[arg(long)]
     no_key: bool,
-    /// Worker threads [default: one per core].
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 256 [default: one per core].
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     threads: Option<usize>,
     /// Print nothing but errors.
     #[arg(short, long)]
     quiet: bool,
+}
+
+/// `--pupil R`: a length within a scene's limits.
+fn parse_pupil(s: &str) -> Result<f64, String> {
+    let r = s
+        .trim()
+        .parse::<f64>()
+        .map_err(|_| format!("'{s}' is not a number"))?;
+    limits::length(r)
 }
 
 pub fn run(args: &Args) -> Result<()> {
@@ -50,10 +60,8 @@ pub fn run(args: &Args) -> Result<()> {
             source.file
         );
     }
+    // The default is a length within the scene's limits, as the camera's are.
     let pupil = args.pupil.unwrap_or_else(|| forward::default_pupil(&scene));
-    if !(pupil.is_finite() && pupil > 0.0) {
-        bail!("--pupil: must be a number > 0, got {pupil}");
-    }
     let path = output::name_or(&args.output, || {
         output::stem_and(args.scene.stem(), "-forward.png")
     });

@@ -6,6 +6,7 @@ use anyhow::{Context, Result, bail};
 use raytree::io::input::{MAX_INPUT_BYTES, bytes_in_words};
 use raytree::scene::generate;
 
+use crate::args::usage;
 use crate::{memory, output};
 
 #[derive(clap::Args)]
@@ -93,11 +94,8 @@ pub fn run(args: &Args) -> Result<()> {
             )
         }
     };
-    if path
-        .extension()
-        .is_none_or(|e| !e.eq_ignore_ascii_case("json"))
-    {
-        bail!(
+    if !output::has_extension(path, "json") {
+        return Err(usage(format_args!(
             "cannot write {}: a generated scene is a .json file{}",
             path.display(),
             if matches!(args.what, Generated::Icosphere { .. }) {
@@ -105,7 +103,7 @@ pub fn run(args: &Args) -> Result<()> {
             } else {
                 ""
             }
-        );
+        )));
     }
     if let Generated::Icosphere { triangles, .. } = &args.what {
         let levels = generate::icosphere_levels(*triangles);
@@ -115,7 +113,7 @@ pub fn run(args: &Args) -> Result<()> {
                 .rev()
                 .find(|&l| generate::icosphere_obj_bytes(l) <= MAX_INPUT_BYTES)
                 .unwrap_or(0);
-            bail!(
+            return Err(usage(format_args!(
                 "an icosphere of {} triangles would be an OBJ file of about {}, more than the {} raytree reads; the most it makes is {} triangles (--triangles {} or fewer)",
                 20u64 << (2 * levels),
                 bytes_in_words(size),
@@ -123,7 +121,7 @@ pub fn run(args: &Args) -> Result<()> {
                 20u64 << (2 * most),
                 // The nearest level is made: up to halfway to the next.
                 ((20u64 << (2 * most)) + (20u64 << (2 * most + 2))) / 2
-            );
+            )));
         }
     }
     if let Some(available) = memory::available().filter(|&a| need > a) {

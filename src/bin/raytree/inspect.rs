@@ -8,7 +8,7 @@ use raytree::inspector::{self, App};
 use raytree::scene::source;
 use raytree::tree::reading;
 
-use crate::args::{SceneArgs, parse_pixel};
+use crate::args::{SceneArgs, parse_pixel, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -63,11 +63,10 @@ pub fn run(args: &Args) -> Result<()> {
             if let Some((x, y)) = args.pixel {
                 let s = &scene.settings;
                 if x >= s.width || y >= s.height {
-                    bail!(
+                    return Err(usage(format_args!(
                         "--pixel {x},{y} is outside the {}×{} image",
-                        s.width,
-                        s.height
-                    );
+                        s.width, s.height
+                    )));
                 }
             }
             App::new(scene, source, args.pixel, true)

@@ -3,10 +3,10 @@
 
 use std::path::PathBuf;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use raytree::views::lobe;
 
-use crate::args::parse_size;
+use crate::args::{parse_size, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -32,7 +32,9 @@ fn parse_shininess(s: &str) -> Result<f64, String> {
 
 pub fn run(args: &Args) -> Result<()> {
     if args.shininess.len() > 3 {
-        bail!("at most three exponents: more curves than that cannot be told apart");
+        return Err(usage(
+            "--shininess: at most three exponents: more curves than that cannot be told apart",
+        ));
     }
     output::require_png(&args.output, "a lobe figure")?;
     let pending = output::create(&args.output, &[])?;

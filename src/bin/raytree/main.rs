@@ -125,17 +125,30 @@ fn finish(result: anyhow::Result<()>) -> ExitCode {
     finish_or(result, ExitCode::FAILURE)
 }
 
-/// [`finish`], with `failure` the exit code of an error.
+/// [`finish`], with `failure` the exit code of an error. A refusal of the
+/// command line itself ([`args::Usage`]) is reported as clap's are: ending
+/// with the `--help` to read, exit code 2.
 fn finish_or(result: anyhow::Result<()>, failure: ExitCode) -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) if output::closed_pipe(&e) => ExitCode::SUCCESS,
+        Err(e) if args::is_usage(&e) => {
+            output::last_word(&format!(
+                "error: {} (see {} --help)",
+                printable(&format!("{e:#}")),
+                command_words()
+            ));
+            ExitCode::from(USAGE)
+        }
         Err(e) => {
             output::last_word(&format!("error: {}", printable(&format!("{e:#}"))));
             failure
         }
     }
 }
+
+/// Exit code 2: the command line is at fault.
+const USAGE: u8 = 2;
 
 /// The command line's grammar, where an option's value may be a negative
 /// number (`--pupil -1` is then refused for its value, not taken for a flag).
@@ -167,7 +180,7 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         let printed = output::clap_text(e);
         if e.use_stderr() {
             // The help of a command line that names no command: a usage error.
-            return ExitCode::from(2);
+            return ExitCode::from(USAGE);
         }
         return finish(printed.map_err(anyhow::Error::from));
     }
@@ -193,7 +206,17 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         }
         message.push_str(line);
     }
-    // The subcommands named first on the command line, e.g. `raytree generate grid`.
+    output::last_word(&format!(
+        "error: {} (see {} --help)",
+        printable(&message),
+        command_words()
+    ));
+    ExitCode::from(USAGE)
+}
+
+/// The subcommands named first on the command line, e.g. `raytree generate
+/// grid`: whose `--help` a usage error points to.
+fn command_words() -> String {
     let mut command = vec!["raytree".to_owned()];
     let mut level = grammar();
     for arg in std::env::args().skip(1) {
@@ -203,10 +226,5 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         command.push(arg);
         level = sub;
     }
-    let command = command.join(" ");
-    output::last_word(&format!(
-        "error: {} (see {command} --help)",
-        printable(&message)
-    ));
-    ExitCode::from(2)
+    command.join(" ")
 }

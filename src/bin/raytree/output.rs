@@ -28,6 +28,8 @@ pub use raytree::io::output::commit_all;
 use raytree::io::output::{self, PendingFile};
 use raytree::scene::strict::printable;
 
+use crate::args::usage;
+
 /// Writes `text` to standard output, all of it, and flushes it: a table, a
 /// trace, a line of figures.
 pub fn print(text: impl AsRef<[u8]>) -> io::Result<()> {
@@ -223,12 +225,28 @@ pub fn stem_and(stem: &OsStr, ending: &str) -> OsString {
     name
 }
 
-/// Refuses an output that is not a `.png`; `what` names the figure.
+/// Refuses an output that is not a `.png` (a usage error); `what` names the
+/// figure.
 pub fn require_png(path: &Path, what: &str) -> Result<()> {
-    if image_file::format_of(path)? != Format::Png {
-        bail!("cannot write {}: {what} is a .png", path.display());
+    if !has_extension(path, "png") {
+        return Err(usage(format_args!(
+            "cannot write {}: {what} is a .png",
+            path.display()
+        )));
     }
     Ok(())
+}
+
+/// The image format an output's name asks for (.png or .ppm); any other
+/// name is a usage error.
+pub fn image_format(path: &Path) -> Result<Format> {
+    image_file::format_of(path).map_err(|e| usage(format_args!("{e:#}")))
+}
+
+/// Whether `path` ends in `.extension` (in any case).
+pub fn has_extension(path: &Path, extension: &str) -> bool {
+    path.extension()
+        .is_some_and(|e| e.eq_ignore_ascii_case(extension))
 }
 
 /// The library's `(done, total)` reports, drawn on `bar`.

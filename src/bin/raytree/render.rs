@@ -3,7 +3,7 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use raytree::io::image_file;
 use raytree::methods::Accel;
 use raytree::trace::accelerator::Structure;
@@ -28,7 +28,7 @@ pub struct Args {
     #[arg(short, long, value_name = "OUT")]
     pub output: Option<PathBuf>,
     /// Worker threads, 1 to 256 [default: one per core].
-    #[arg(long, value_name = "N")]
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     pub threads: Option<usize>,
     /// Print nothing but errors.
     #[arg(short, long)]
@@ -57,7 +57,7 @@ pub fn run(args: &Args) -> Result<()> {
     let (scene, _) = args.scene.load()?;
     let read_seconds = reading.elapsed().as_secs_f64();
     let path = output::name_or(&args.output, || output::stem_and(args.scene.stem(), ".png"));
-    let format = image_file::format_of(&path)?;
+    let format = output::image_format(&path)?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
     // The clock starts before the threads do: their start-up is part of the time.
     let started = Instant::now();
@@ -201,16 +201,20 @@ pub fn threads_word(threads: usize) -> String {
     }
 }
 
-/// A pool of `threads` workers (one per core by default, at most
-/// [`MAX_THREADS`]), and how many.
+/// `--threads N`: 1 to [`MAX_THREADS`].
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    s.trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|n| (1..=MAX_THREADS).contains(n))
+        .ok_or_else(|| format!("must be a whole number from 1 to {MAX_THREADS}"))
+}
+
+/// A pool of `threads` workers ([`parse_threads`] checked the number; one
+/// per core by default), and how many.
 pub fn thread_pool(threads: Option<usize>) -> Result<(rayon::ThreadPool, usize)> {
-    let threads = match threads {
-        Some(n) if !(1..=MAX_THREADS).contains(&n) => {
-            bail!("--threads: must be 1 to {MAX_THREADS}, got {n}")
-        }
-        Some(n) => n,
-        None => std::thread::available_parallelism().map_or(1, |n| n.get()),
-    };
+    let threads =
+        threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
     let pool = rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()

@@ -9,9 +9,9 @@ use raytree::scene::{loader, nff};
 use raytree::trace::frames;
 use raytree::views::filmstrip::{self, Frame};
 
-use crate::args::SceneArgs;
+use crate::args::{SceneArgs, usage};
 use crate::output;
-use crate::render::thread_pool;
+use crate::render::{parse_threads, thread_pool};
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -25,8 +25,8 @@ pub struct Args {
     /// Output figure (.png) [default: the scene's name with -strip- and the field].
     #[arg(short, long, value_name = "OUT.png")]
     output: Option<PathBuf>,
-    /// Worker threads [default: one per core].
-    #[arg(long, value_name = "N")]
+    /// Worker threads, 1 to 256 [default: one per core].
+    #[arg(long, value_name = "N", value_parser = parse_threads)]
     threads: Option<usize>,
     /// Print nothing but errors.
     #[arg(short, long)]
@@ -47,6 +47,7 @@ pub fn run(args: &Args) -> Result<()> {
         None => loader::WHITTED.to_owned(),
     };
     let Variation { path, values } = &args.vary;
+    // The scene read as it is; what fails now is the variation --vary asks for.
     let scenes = vary::frames(
         &text,
         &source.file,
@@ -54,7 +55,7 @@ pub fn run(args: &Args) -> Result<()> {
         &args.scene.overrides,
         &args.vary,
     )
-    .map_err(anyhow::Error::msg)?;
+    .map_err(usage)?;
     let out = output::name_or(&args.output, || {
         output::stem_and(
             args.scene.stem(),

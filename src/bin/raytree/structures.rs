@@ -5,7 +5,7 @@
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Context, Result, bail};
+use anyhow::{Context, Result};
 use raytree::io::output::same_file;
 use raytree::scene::Scene;
 use raytree::scene::overrides::{Overrides, Protocol};
@@ -14,7 +14,7 @@ use raytree::trace::structure_sweep::{
 };
 use raytree::views::structures_chart;
 
-use crate::args::{SceneArgs, parse_size};
+use crate::args::{SceneArgs, parse_size, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -68,7 +68,10 @@ pub fn run(args: &Args) -> Result<()> {
 /// The comparison a CSV holds, refused in one line naming the line and field.
 fn read(path: &Path, out: &Path) -> Result<Comparison> {
     if same_file(path, out) {
-        bail!("cannot write {}: it is the CSV --from reads", out.display());
+        return Err(usage(format_args!(
+            "cannot write {}: it is the CSV --from reads",
+            out.display()
+        )));
     }
     let text =
         std::fs::read_to_string(path).with_context(|| format!("cannot read {}", path.display()))?;
@@ -78,27 +81,32 @@ fn read(path: &Path, out: &Path) -> Result<Comparison> {
 /// Loads the scenes, measures them, writes the chart and the CSV.
 fn measure(args: &Args) -> Result<Comparison> {
     if args.scenes.len() > MAX_SCENES {
-        bail!(
+        return Err(usage(format_args!(
             "{} scenes given: at most {MAX_SCENES} (each takes minutes at the SPD's size)",
             args.scenes.len()
-        );
+        )));
     }
     if args.overrides.accel.is_some() {
-        bail!("--accel: structures measures every structure itself; leave it out");
+        return Err(usage(
+            "--accel: structures measures every structure itself; leave it out",
+        ));
     }
     if args.grid_sweep {
         if args.scenes.len() != 1 {
-            bail!("--grid-sweep: sweeps one scene, got {}", args.scenes.len());
+            return Err(usage(format_args!(
+                "--grid-sweep: sweeps one scene, got {}",
+                args.scenes.len()
+            )));
         }
         if args.overrides.grid_res.is_some() {
-            bail!("--grid-res: --grid-sweep sweeps it; leave it out");
+            return Err(usage("--grid-res: --grid-sweep sweeps it; leave it out"));
         }
     }
     if let Some(csv) = args.csv.as_deref().filter(|c| same_file(c, &args.output)) {
-        bail!(
+        return Err(usage(format_args!(
             "cannot write {}: the CSV figures and the chart need two files",
             csv.display()
-        );
+        )));
     }
     let mut loaded: Vec<(String, Scene)> = Vec::new();
     let mut inputs = Vec::new();
@@ -114,10 +122,10 @@ fn measure(args: &Args) -> Result<Comparison> {
             |n| n.to_string_lossy().into_owned(),
         );
         if loaded.iter().any(|(n, _)| *n == name) {
-            bail!(
+            return Err(usage(format_args!(
                 "{}: a second scene named {name}; give each scene once",
                 path.display()
-            );
+            )));
         }
         inputs.extend(scene_args.inputs(&scene));
         loaded.push((name, scene));

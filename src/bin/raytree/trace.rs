@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use raytree::views::text;
 
-use crate::args::{SceneArgs, TargetArgs};
+use crate::args::{SceneArgs, TargetArgs, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -23,19 +23,14 @@ pub struct Args {
     /// Number the steps, in the order the algorithm runs them.
     #[arg(long, conflicts_with = "json")]
     steps: bool,
-    /// Write to this file (atomically) instead of standard output; a .json name implies --json.
+    /// Write to this file (atomically) instead of standard output: a .json name writes the JSON trace (implies --json; with --learner, the learner trace), a .txt name the text.
     #[arg(short, long, value_name = "FILE")]
     output: Option<PathBuf>,
 }
 
 pub fn run(args: &Args) -> Result<()> {
+    let json = json_by_name(args)?;
     let (scene, source) = args.scene.load()?;
-    let json = args.json
-        || !args.learner
-            && args.output.as_ref().is_some_and(|p| {
-                p.extension()
-                    .is_some_and(|e| e.eq_ignore_ascii_case("json"))
-            });
     let inputs = args.scene.inputs(&scene);
     let pending = (args.output.as_deref())
         .map(|p| output::create(p, &inputs))
@@ -61,4 +56,41 @@ pub fn run(args: &Args) -> Result<()> {
             Ok(())
         }
     }
+}
+
+/// Whether the JSON trace is written: asked by --json, or by an output name
+/// ending in .json (unless --learner asks for the learner trace). An output
+/// name that is neither .json nor .txt (the text), or one at odds with
+/// --json, --learner or --steps, is a usage error.
+fn json_by_name(args: &Args) -> Result<bool> {
+    let Some(path) = &args.output else {
+        return Ok(args.json);
+    };
+    let (json, text) = (
+        output::has_extension(path, "json"),
+        output::has_extension(path, "txt"),
+    );
+    let refuse = |why: &str| {
+        Err(usage(format_args!(
+            "cannot write {}: {why}",
+            path.display()
+        )))
+    };
+    if !json && !text {
+        return refuse(
+            "a trace is written as .json (the JSON trace, or the learner trace with --learner) or .txt (the text)",
+        );
+    }
+    if text && args.learner {
+        return refuse("the learner trace is JSON, a .json");
+    }
+    if text && args.json {
+        return refuse("--json writes the JSON trace, a .json");
+    }
+    if json && args.steps {
+        return refuse(
+            "--steps numbers the text trace, a .txt; a .json name writes the JSON trace",
+        );
+    }
+    Ok(args.json || json && !args.learner)
 }

@@ -48,9 +48,10 @@ fn refused_at_once(code: i32, files: &[(&str, &[u8])], args: &[&str]) -> String 
 #[test]
 fn settings_that_could_not_finish_are_refused_up_front() {
     // Rays double a level where a glass surface reflects and refracts: 2^1000.
+    // Asked by the flags, it is a usage error (2); by a scene file, the file's (1).
     assert_eq!(
-        refused_at_once(1, &[], &["render", "--max-depth", "1000", "--cutoff", "0"]),
-        "error: --max-depth: 1000 with cutoff 0 may trace up to 1.1e301 rays a sample (2^max_depth - 1: each hit may spawn a reflected and a refracted ray), more than the 4294967296 (2^32) raytree traces; lower max_depth to 32 or raise the cutoff"
+        refused_at_once(2, &[], &["render", "--max-depth", "1000", "--cutoff", "0"]),
+        "error: --max-depth: 1000 with cutoff 0 may trace up to 1.1e301 rays a sample (2^max_depth - 1: each hit may spawn a reflected and a refracted ray), more than the 4294967296 (2^32) raytree traces; lower max_depth to 32 or raise the cutoff (see raytree render --help)"
     );
     let scene = br#"{"render": {"max_depth": 40, "cutoff": 0}, "objects": [{"sphere": {}}]}"#;
     let e = refused_at_once(1, &[("deep.json", scene)], &["render", "deep.json"]);
@@ -62,7 +63,7 @@ fn settings_that_could_not_finish_are_refused_up_front() {
     );
     // The trace that needed 9.4 GB: refused by the same rule.
     let e = refused_at_once(
-        1,
+        2,
         &[],
         &[
             "trace",
@@ -81,10 +82,11 @@ fn settings_that_could_not_finish_are_refused_up_front() {
         e.starts_with("error: --max-depth: 300 with cutoff 0"),
         "{e}"
     );
-    // Within the render's bound, beyond what a trace holds and is read back.
+    // Within the render's bound, beyond what a trace holds and is read back:
+    // the settings asked are too many for a trace, a usage error too.
     assert_eq!(
         refused_at_once(
-            1,
+            2,
             &[],
             &[
                 "trace",
@@ -97,11 +99,11 @@ fn settings_that_could_not_finish_are_refused_up_front() {
                 "--json"
             ]
         ),
-        "error: pixel 416,209 may record up to 2097151 rays, more than the 1048576 a trace holds (and raytree reads back); lower max_depth, or raise the cutoff"
+        "error: pixel 416,209 may record up to 2097151 rays, more than the 1048576 a trace holds (and raytree reads back); lower max_depth, or raise the cutoff (see raytree trace --help)"
     );
     assert_eq!(
         refused_at_once(
-            1,
+            2,
             &[],
             &[
                 "trace",
@@ -117,10 +119,10 @@ fn settings_that_could_not_finish_are_refused_up_front() {
                 "t.json",
             ]
         ),
-        "error: pixel 1,1 may record up to 4193280 rays (1024 samples of up to 4095), more than the 1048576 a trace holds (and raytree reads back); lower spp or max_depth, or raise the cutoff"
+        "error: pixel 1,1 may record up to 4193280 rays (1024 samples of up to 4095), more than the 1048576 a trace holds (and raytree reads back); lower spp or max_depth, or raise the cutoff (see raytree trace --help)"
     );
     let e = refused_at_once(
-        1,
+        2,
         &[],
         &[
             "trace",
@@ -152,7 +154,7 @@ fn generate_refuses_an_icosphere_the_mesh_reader_would_refuse() {
     // 20·4^10 triangles: about 2.4 GB of OBJ; 20·4^11: about 10 GB.
     assert_eq!(
         refused_at_once(
-            1,
+            2,
             &[],
             &[
                 "generate",
@@ -163,10 +165,10 @@ fn generate_refuses_an_icosphere_the_mesh_reader_would_refuse() {
                 "big.json"
             ]
         ),
-        "error: an icosphere of 20971520 triangles would be an OBJ file of about 2.7 GB, more than the 1 GiB raytree reads; the most it makes is 5242880 triangles (--triangles 13107200 or fewer)"
+        "error: an icosphere of 20971520 triangles would be an OBJ file of about 2.7 GB, more than the 1 GiB raytree reads; the most it makes is 5242880 triangles (--triangles 13107200 or fewer) (see raytree generate icosphere --help)"
     );
     let e = refused_at_once(
-        1,
+        2,
         &[],
         &[
             "generate",

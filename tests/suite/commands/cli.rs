@@ -56,6 +56,16 @@ pub fn fails_in(command: &str, name: &str, scene_text: Option<&str>, extra: &[&s
     crate::common::refused(name, &files, &args)
 }
 
+/// Runs `command` with `extra` in a fresh folder and expects a usage error:
+/// [`crate::common::refused_with`] exit code 2, the line ending with the
+/// command's `--help`; returns the line without that ending.
+pub fn usage_in(command: &str, name: &str, extra: &[&str]) -> String {
+    let e = crate::common::refused_with(2, name, &[], &[&[command][..], extra].concat());
+    e.strip_suffix(&format!(" (see raytree {command} --help)"))
+        .unwrap_or_else(|| panic!("{name}: {e}"))
+        .to_owned()
+}
+
 const GOOD_OBJECTS: &str = r#""objects": [{"sphere": {"radius": 1}}]"#;
 
 #[test]
@@ -340,20 +350,26 @@ fn bad_meshes_name_the_obj_file_and_line() {
 fn bad_command_line_settings() {
     let scene = scenes().join("whitted.json");
     let scene = scene.to_str().unwrap();
+    // Settings the flags make impossible are the command line's fault: exit 2,
+    // ending with the help to read.
+    let usage = |name: &str, extra: &[&str]| {
+        let args = [&["render", scene][..], extra].concat();
+        let e = crate::common::refused_with(2, name, &[], &args);
+        e.strip_suffix(" (see raytree render --help)")
+            .unwrap_or_else(|| panic!("{name}: {e}"))
+            .to_owned()
+    };
     assert_eq!(
-        fails("cli-spp", None, &[scene, "--spp", "5"]),
+        usage("cli-spp", &["--spp", "5"]),
         "error: --spp: must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got 5"
     );
+    assert!(usage("cli-size", &["--width", "0"]).starts_with("error: --width: must be 1 to 32768"));
     assert!(
-        fails("cli-size", None, &[scene, "--width", "0"])
-            .starts_with("error: --width: must be 1 to 32768")
-    );
-    assert!(
-        fails("cli-cutoff", None, &[scene, "--cutoff", "NaN"])
+        usage("cli-cutoff", &["--cutoff", "NaN"])
             .starts_with("error: --cutoff: must be a number from 0")
     );
     assert!(
-        fails("cli-depth", None, &[scene, "--max-depth", "0"])
+        usage("cli-depth", &["--max-depth", "0"])
             .starts_with("error: --max-depth: must be 1 to 1000")
     );
     // The structures' sizes (issue 28): 0 or 10⁹ grid cells, a depth of 10⁶.
@@ -377,8 +393,9 @@ fn bad_command_line_settings() {
             "error: --tree-depth: must be auto or 0 to 48 levels, got 1000000",
         ),
     ] {
-        assert_eq!(fails(name, None, &[scene, flag, value]), said);
+        assert_eq!(usage(name, &[flag, value]), said);
     }
+    // The same settings in the scene file are the file's fault: exit 1.
     let in_file = std::fs::read_to_string(scenes().join("whitted.json")).unwrap();
     let bad = in_file.replacen(
         "\"max_depth\": 8",
@@ -391,9 +408,16 @@ fn bad_command_line_settings() {
         e.contains("bad.json") && e.contains("expected auto or a whole number, got 'fine'"),
         "{e}"
     );
+    let bad = in_file.replacen("\"spp\": 1", "\"spp\": 3", 1);
+    assert_ne!(bad, in_file, "the scene's render block moved");
+    let e = fails("cli-spp-file", Some(&bad), &[]);
+    assert!(
+        e.starts_with("error: bad.json: ") && e.contains("spp") && !e.contains("--help"),
+        "{e}"
+    );
     assert_eq!(
-        fails("cli-threads", None, &[scene, "--threads", "0"]),
-        "error: --threads: must be 1 to 256, got 0"
+        usage("cli-threads", &["--threads", "0"]),
+        "error: invalid value '0' for '--threads <N>': must be a whole number from 1 to 256"
     );
 }
 
@@ -404,10 +428,10 @@ fn unwritable_or_unsupported_output() {
         e,
         "error: cannot write no/such/folder/out.png: No such file or directory"
     );
-    let e = fails("jpeg", None, &["-o", "out.jpg"]);
+    let e = crate::common::refused_with(2, "jpeg", &[], &["render", "-o", "out.jpg"]);
     assert_eq!(
         e,
-        "error: cannot write out.jpg: the output must end in .png or .ppm"
+        "error: cannot write out.jpg: the output must end in .png or .ppm (see raytree render --help)"
     );
 }
 
@@ -587,27 +611,28 @@ fn trace_json_reads_back_and_output_file_matches_stdout() {
 
 #[test]
 fn trace_refuses_pixels_and_samples_that_do_not_exist() {
+    // A pixel or sample the image does not have is the command line's fault:
+    // exit 2, the help to read.
+    let usage = |name: &str, extra: &[&str]| {
+        crate::common::refused_with(2, name, &[], &[&["trace"][..], extra].concat())
+    };
     assert_eq!(
-        fails_in("trace", "trace-x", None, &["--pixel", "640,0"]),
-        "error: pixel 640,0 is outside the 640×480 image (x is 0 to 639, y is 0 to 479)"
+        usage("trace-x", &["--pixel", "640,0"]),
+        "error: pixel 640,0 is outside the 640×480 image (x is 0 to 639, y is 0 to 479) (see raytree trace --help)"
     );
     assert_eq!(
-        fails_in(
-            "trace",
+        usage(
             "trace-y",
-            None,
             &["--pixel", "0,480", "--width", "100", "--height", "480"]
         ),
-        "error: pixel 0,480 is outside the 100×480 image (x is 0 to 99, y is 0 to 479)"
+        "error: pixel 0,480 is outside the 100×480 image (x is 0 to 99, y is 0 to 479) (see raytree trace --help)"
     );
     assert_eq!(
-        fails_in(
-            "trace",
+        usage(
             "trace-sample",
-            None,
             &["--pixel", "1,1", "--spp", "4", "--sample", "5"]
         ),
-        "error: sample 5 does not exist: a pixel has 4 samples (1 to 4)"
+        "error: sample 5 does not exist: a pixel has 4 samples (1 to 4) (see raytree trace --help)"
     );
     assert_eq!(
         fails_in(
@@ -696,32 +721,20 @@ fn diagram_writes_a_png_of_the_asked_size() {
 
 #[test]
 fn diagram_refuses_bad_requests() {
+    let usage = |name: &str, extra: &[&str]| {
+        crate::common::refused_with(2, name, &[], &[&["diagram"][..], extra].concat())
+    };
     assert_eq!(
-        fails_in(
-            "diagram",
-            "diagram-jpg",
-            None,
-            &["--pixel", "1,1", "-o", "fig.jpg"]
-        ),
-        "error: cannot write fig.jpg: a diagram is a .png or an .svg"
+        usage("diagram-jpg", &["--pixel", "1,1", "-o", "fig.jpg"]),
+        "error: cannot write fig.jpg: a diagram is a .png or an .svg (see raytree diagram --help)"
     );
     assert_eq!(
-        fails_in(
-            "diagram",
-            "diagram-ppm",
-            None,
-            &["--pixel", "1,1", "-o", "fig.ppm"]
-        ),
-        "error: cannot write fig.ppm: a diagram is a .png or an .svg"
+        usage("diagram-ppm", &["--pixel", "1,1", "-o", "fig.ppm"]),
+        "error: cannot write fig.ppm: a diagram is a .png or an .svg (see raytree diagram --help)"
     );
     assert_eq!(
-        fails_in(
-            "diagram",
-            "diagram-px",
-            None,
-            &["--pixel", "9999,1", "-o", "fig.png"]
-        ),
-        "error: pixel 9999,1 is outside the 640×480 image (x is 0 to 639, y is 0 to 479)"
+        usage("diagram-px", &["--pixel", "9999,1", "-o", "fig.png"]),
+        "error: pixel 9999,1 is outside the 640×480 image (x is 0 to 639, y is 0 to 479) (see raytree diagram --help)"
     );
     let dir = workdir("diagram-usage");
     for args in [

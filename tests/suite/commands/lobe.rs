@@ -1,7 +1,7 @@
 //! `raytree lobe` and the diagram's two drawings that leave the scene out
 //! (`--graph`, `--vectors`): what they refuse, in one line, writing nothing.
 
-use crate::common::{refused, refused_with};
+use crate::common::refused_with;
 
 #[test]
 fn lobe_refuses_a_bad_shininess_and_too_many_curves() {
@@ -13,9 +13,9 @@ fn lobe_refuses_a_bad_shininess_and_too_many_curves() {
         let e = refused_with(2, name, &[], &["lobe", "--shininess", value]);
         assert!(e.contains("not a shininess"), "{e}");
     }
-    let e = refused("lobe-four", &[], &["lobe", "--shininess", "1,2,3,4"]);
+    let e = refused_with(2, "lobe-four", &[], &["lobe", "--shininess", "1,2,3,4"]);
     assert!(e.contains("at most three"), "{e}");
-    let e = refused("lobe-svg", &[], &["lobe", "-o", "lobe.svg"]);
+    let e = refused_with(2, "lobe-svg", &[], &["lobe", "-o", "lobe.svg"]);
     assert!(e.contains("lobe.svg"), "{e}");
 }
 
@@ -24,7 +24,8 @@ fn the_graph_and_a_hits_vectors_refuse_what_they_cannot_draw() {
     let scene = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/scenes/whitted.json")).unwrap();
     let files: &[(&str, &[u8])] = &[("w.json", &scene)];
     // Pixel 200,280 has two hits (the mirror ball, the floor): no P5.
-    let e = refused(
+    let e = refused_with(
+        2,
         "vectors-p5",
         files,
         &[
@@ -39,7 +40,8 @@ fn the_graph_and_a_hits_vectors_refuse_what_they_cannot_draw() {
         ],
     );
     assert!(e.contains("no hit P5"), "{e}");
-    let e = refused(
+    let e = refused_with(
+        2,
         "graph-svg",
         files,
         &[

@@ -17,3 +17,4 @@ mod signals;
 mod strip;
 mod structures;
 mod trace_files;
+mod usage;

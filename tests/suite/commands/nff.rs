@@ -227,13 +227,19 @@ fn convert_writes_the_scene_render_reads() {
         "the NFF file and its conversion render alike"
     );
     // Never over its input, never from a JSON scene.
-    let refusal = refused(
+    let refusal = crate::common::refused_with(
+        2,
         "convert-over-input",
         &[("t.nff", SCENE.as_bytes())],
         &["convert", "t.nff", "-o", "t.nff"],
     );
     assert!(refusal.contains(".json"), "{refusal}");
-    let refusal = refused("convert-json", &[("t.json", b"{}")], &["convert", "t.json"]);
+    let refusal = crate::common::refused_with(
+        2,
+        "convert-json",
+        &[("t.json", b"{}")],
+        &["convert", "t.json"],
+    );
     assert!(refusal.contains("NFF"), "{refusal}");
 }
 

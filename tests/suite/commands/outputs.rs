@@ -21,23 +21,34 @@ fn an_output_that_is_an_input_is_refused() {
         e,
         "error: cannot write s.json: it is an input, which this command reads (choose another output name)"
     );
+    // A text trace (.txt) over a mesh whose file is named .txt.
     let e = refused(
         "trace-over-mesh",
-        &files,
-        &["trace", "s.json", "--pixel", "1,1", "-o", "./m.obj"],
+        &[
+            (
+                "s.json",
+                &String::from_utf8_lossy(SCENE)
+                    .replace("m.obj", "m.txt")
+                    .into_bytes(),
+            ),
+            ("m.txt", MESH),
+        ],
+        &["trace", "s.json", "--pixel", "1,1", "-o", "./m.txt"],
     );
     assert!(
-        e.starts_with("error: cannot write ./m.obj: it is the same file as the input"),
+        e.starts_with("error: cannot write ./m.txt: it is the same file as the input"),
         "{e}"
     );
-    let e = refused(
+    // Two of the command's own names for one file: the command line's fault.
+    let e = refused_with(
+        2,
         "chart-csv-over-png",
         &files,
         &["chart", "s.json", "-o", "c.png", "--csv", "c.png"],
     );
     assert_eq!(
         e,
-        "error: cannot write c.png: the CSV figures and the chart need two files"
+        "error: cannot write c.png: the CSV figures and the chart need two files (see raytree chart --help)"
     );
     let mut png = Vec::new();
     image::RgbImage::new(2, 2)
@@ -53,23 +64,25 @@ fn an_output_that_is_an_input_is_refused() {
         e,
         "error: cannot write b.png: it is an input, which this command reads (choose another output name)"
     );
-    let e = refused(
+    let e = refused_with(
+        2,
         "icosphere-over-its-mesh",
         &[],
         &["generate", "icosphere", "--triangles", "20", "-o", "x.obj"],
     );
     assert_eq!(
         e,
-        "error: cannot write x.obj: a generated scene is a .json file (its mesh goes beside it, as .obj)"
+        "error: cannot write x.obj: a generated scene is a .json file (its mesh goes beside it, as .obj) (see raytree generate icosphere --help)"
     );
-    let e = refused(
+    let e = refused_with(
+        2,
         "spheres-as-png",
         &[],
         &["generate", "spheres", "--count", "3", "-o", "x.png"],
     );
     assert_eq!(
         e,
-        "error: cannot write x.png: a generated scene is a .json file"
+        "error: cannot write x.png: a generated scene is a .json file (see raytree generate spheres --help)"
     );
 }
 
@@ -108,10 +121,16 @@ fn a_read_only_output_is_refused_not_replaced() {
 
 #[test]
 fn threads_and_generators_are_bounded() {
-    let e = refused("threads-huge", &[], &["render", "--threads", "10000"]);
-    assert_eq!(e, "error: --threads: must be 1 to 256, got 10000");
-    let e = refused("threads-zero", &[], &["render", "--threads", "0"]);
-    assert_eq!(e, "error: --threads: must be 1 to 256, got 0");
+    let e = refused_with(2, "threads-huge", &[], &["render", "--threads", "10000"]);
+    assert_eq!(
+        e,
+        "error: invalid value '10000' for '--threads <N>': must be a whole number from 1 to 256 (see raytree render --help)"
+    );
+    let e = refused_with(2, "threads-zero", &[], &["render", "--threads", "0"]);
+    assert_eq!(
+        e,
+        "error: invalid value '0' for '--threads <N>': must be a whole number from 1 to 256 (see raytree render --help)"
+    );
     // The generator estimates first; a 2 GB address-space limit is what it may take.
     let dir = tempfile::tempdir().unwrap();
     let run = std::process::Command::new("sh")
@@ -234,8 +253,11 @@ fn small_promises_hold() {
          schlick, fresnel]; tip: a similar value exists: 'fresnel' (see raytree render --help)"
     );
     // A negative number is a value, refused for what it is.
-    let e = refused_with(1, "usage-negative", &[], &["forward", "--pupil", "-1"]);
-    assert_eq!(e, "error: --pupil: must be a number > 0, got -1");
+    let e = refused_with(2, "usage-negative", &[], &["forward", "--pupil", "-1"]);
+    assert_eq!(
+        e,
+        "error: invalid value '-1' for '--pupil <R>': must be from 1e-9 to 1e9, got -1 (see raytree forward --help)"
+    );
     let e = refused_with(
         2,
         "usage-generate",

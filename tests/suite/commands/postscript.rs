@@ -74,14 +74,15 @@ fn failures_are_one_line() {
         e.starts_with("error: no lecture: shared/lecture-raytracing.md is not beside"),
         "{e}"
     );
-    let e = refused(
+    let e = crate::common::refused_with(
+        2,
         "ps-to-ppm",
         &[("r.ps", RECTANGLE)],
         &["postscript", "r.ps", "-o", "r.ppm"],
     );
     assert_eq!(
         e,
-        "error: cannot write r.ppm: a Ghostscript image is a .png"
+        "error: cannot write r.ppm: a Ghostscript image is a .png (see raytree postscript --help)"
     );
     // A program in a file called .png is still an input, never replaced.
     let e = refused(

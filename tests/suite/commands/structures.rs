@@ -204,7 +204,7 @@ fn structures_refuses_what_it_cannot_do_in_one_line() {
     let seventeen: Vec<&str> = std::iter::once("structures")
         .chain(std::iter::repeat_n(scene, 17))
         .collect();
-    let e = refused("structures-17", &[], &seventeen);
+    let e = refused_with(2, "structures-17", &[], &seventeen);
     assert!(e.contains("17 scenes given: at most 16"), "{e}");
     let e = refused_with(
         2,
@@ -213,13 +213,15 @@ fn structures_refuses_what_it_cannot_do_in_one_line() {
         &["structures", scene, "--runs", "21"],
     );
     assert!(e.contains("--runs"), "{e}");
-    let e = refused(
+    let e = refused_with(
+        2,
         "structures-accel",
         &[],
         &["structures", scene, "--accel", "bvh"],
     );
     assert!(e.contains("--accel"), "{e}");
-    let e = refused(
+    let e = refused_with(
+        2,
         "structures-sweep-two",
         &[],
         &["structures", scene, scene, "--grid-sweep"],

@@ -212,30 +212,21 @@ fn golden_figures() {
 
 #[test]
 fn bad_names_are_one_line_errors() {
-    use crate::commands::cli::fails_in;
-    let e = fails_in("render", "aov-name", None, &["--aov", "colour"]);
+    // A name the scene does not have is the flag's fault: exit 2.
+    use crate::commands::cli::usage_in;
+    let e = usage_in("render", "aov-name", &["--aov", "colour"]);
     assert!(
         e.starts_with("error: --aov: unknown quantity 'colour' (known: local"),
         "{e}"
     );
-    let e = fails_in("render", "aov-light", None, &["--aov", "shadow=sun"]);
+    let e = usage_in("render", "aov-light", &["--aov", "shadow=sun"]);
     assert_eq!(
         e,
         "error: --aov: unknown light 'sun' (the scene's lights: key, fill)"
     );
-    let e = fails_in(
-        "render",
-        "aov-sphere",
-        None,
-        &["--aov", "discriminant=floor"],
-    );
+    let e = usage_in("render", "aov-sphere", &["--aov", "discriminant=floor"]);
     assert!(e.contains("'floor' is not a sphere"), "{e}");
-    let e = fails_in(
-        "render",
-        "aov-ppm",
-        None,
-        &["--aov", "depth", "-o", "d.ppm"],
-    );
+    let e = usage_in("render", "aov-ppm", &["--aov", "depth", "-o", "d.ppm"]);
     assert!(e.contains("is a .png"), "{e}");
 }
 

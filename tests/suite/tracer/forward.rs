@@ -89,13 +89,15 @@ fn the_report_adds_up_and_the_figure_is_written() {
 
 #[test]
 fn a_bad_pupil_is_a_one_line_error() {
-    let e = crate::commands::cli::fails_in(
+    let e = crate::commands::cli::usage_in(
         "forward",
         "forward-pupil",
-        None,
         &["--photons", "10", "--pupil=-1"],
     );
-    assert_eq!(e, "error: --pupil: must be a number > 0, got -1");
+    assert_eq!(
+        e,
+        "error: invalid value '-1' for '--pupil <R>': must be from 1e-9 to 1e9, got -1"
+    );
 }
 
 /// Lesson 1's wider pupil: arrivals from outside the image grow by less than

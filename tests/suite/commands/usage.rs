@@ -1,0 +1,268 @@
+//! The line between exit status 2 and 1: a refusal of the command line itself
+//! (a flag's value out of its range, flags that do not go together, an output
+//! name of the wrong kind, a lesson that is not there) is a usage error, one
+//! line ending with the `--help` to read and exit status 2, as clap's own parse
+//! errors are; a file's content or a failure to read or write one is exit
+//! status 1 (`diff` and `check` answer with 1, so all their errors are 2).
+
+use crate::common::refused_with;
+
+/// Runs each of `cases` (a name, the arguments, a part of the message) in a
+/// fresh folder and holds it to exit status 2, one line naming the problem and
+/// ending with its command's `--help`, and nothing written.
+fn usage_errors(cases: &[(&str, &[&str], &str)]) {
+    for (name, args, said) in cases {
+        let e = refused_with(2, name, &[], args);
+        assert!(e.contains(said), "{name}: {e}");
+        // `generate` names what it makes: `raytree generate icosphere --help`.
+        let words = if args[0] == "generate" { 2 } else { 1 };
+        let command = args[..words].join(" ");
+        assert!(
+            e.ends_with(&format!("(see raytree {command} --help)")),
+            "{name}: {e}"
+        );
+    }
+}
+
+/// A flag's value out of its range exits 2, as the same flag's parse error
+/// does: `--width -1` and `--width 0`, `--photons 0` and `--pupil 0`.
+#[test]
+fn a_flag_out_of_its_range_is_a_usage_error() {
+    usage_errors(&[
+        (
+            "width-0",
+            &["render", "--width", "0"],
+            "--width: must be 1 to 32768, got 0",
+        ),
+        (
+            "width-negative",
+            &["render", "--width", "-1"],
+            "'--width <W>'",
+        ),
+        (
+            "spp-3",
+            &["render", "--spp", "3"],
+            "--spp: must be a square number of samples",
+        ),
+        (
+            "pixels",
+            &["render", "--width", "32768", "--height", "32768"],
+            "more than the",
+        ),
+        (
+            "depth-with-cutoff",
+            &[
+                "trace",
+                "--pixel",
+                "1,1",
+                "--max-depth",
+                "64",
+                "--cutoff",
+                "0",
+            ],
+            "--max-depth: 64 with cutoff 0",
+        ),
+        (
+            "threads-0",
+            &["render", "--threads", "0"],
+            "'--threads <N>': must be a whole number from 1 to 256",
+        ),
+        (
+            "threads-forward",
+            &["forward", "--threads", "257"],
+            "'--threads <N>': must be a whole number from 1 to 256",
+        ),
+        (
+            "pupil-0",
+            &["forward", "--pupil", "0"],
+            "'--pupil <R>': must be from 1e-9 to 1e9, got 0",
+        ),
+        (
+            "pupil-huge",
+            &["forward", "--pupil", "1e300"],
+            "'--pupil <R>': must be from 1e-9 to 1e9, got 1e300",
+        ),
+        (
+            "photons-0",
+            &["forward", "--photons", "0"],
+            "'--photons <N>'",
+        ),
+        (
+            "vary-unknown",
+            &["strip", "--vary", "bogus=1,2"],
+            "--vary bogus=1: bogus: unknown field `bogus`",
+        ),
+        (
+            "vary-empty",
+            &["strip", "--vary", "spp="],
+            "'--vary <PATH=VALUES>'",
+        ),
+        (
+            "pixel-outside",
+            &["trace", "--pixel", "700,1"],
+            "pixel 700,1 is outside the 640×480 image",
+        ),
+        (
+            "sample-outside",
+            &["trace", "--pixel", "1,1", "--spp", "4", "--sample", "5"],
+            "sample 5 does not exist: a pixel has 4 samples (1 to 4)",
+        ),
+        (
+            "diagram-pixel",
+            &["diagram", "--pixel", "9999,1", "-o", "d.png"],
+            "pixel 9999,1 is outside the 640×480 image",
+        ),
+        (
+            "inspect-pixel",
+            &["inspect", "--pixel", "9999,1"],
+            "--pixel 9999,1 is outside the 640×480 image",
+        ),
+        (
+            "aov-unknown",
+            &["render", "--aov", "colour"],
+            "--aov: unknown quantity 'colour'",
+        ),
+        (
+            "lobe-four",
+            &["lobe", "--shininess", "1,2,3,4"],
+            "--shininess: at most three exponents",
+        ),
+        (
+            "icosphere-too-big",
+            &[
+                "generate",
+                "icosphere",
+                "--triangles",
+                "20000000",
+                "-o",
+                "i.json",
+            ],
+            "--triangles 13107200 or fewer",
+        ),
+        (
+            "vectors-hit",
+            &["diagram", "--pixel", "1,1", "--vectors", "9", "-o", "v.png"],
+            "--vectors 9: no hit P9",
+        ),
+    ]);
+}
+
+/// An output name of the wrong kind is a usage error, before anything is
+/// read or traced; the message names the kind the command writes.
+#[test]
+fn an_output_name_of_the_wrong_kind_is_a_usage_error() {
+    usage_errors(&[
+        (
+            "render-txt",
+            &["render", "-o", "foo.txt"],
+            "cannot write foo.txt: the output must end in .png or .ppm",
+        ),
+        (
+            "aov-ppm",
+            &["render", "--aov", "depth", "-o", "d.ppm"],
+            "cannot write d.ppm: a per-pixel quantity is a .png",
+        ),
+        (
+            "convert-txt",
+            &["convert", "x.nff", "-o", "x.txt"],
+            "cannot write x.txt: a scene is written as a .json file",
+        ),
+        (
+            "convert-json",
+            &["convert", "x.json"],
+            "cannot convert x.json: raytree converts NFF files (.nff)",
+        ),
+        (
+            "trace-png",
+            &["trace", "--pixel", "1,1", "-o", "x.png"],
+            "cannot write x.png: a trace is written as .json (the JSON trace, or the learner trace with --learner) or .txt (the text)",
+        ),
+        (
+            "trace-json-as-text",
+            &["trace", "--pixel", "1,1", "--json", "-o", "x.txt"],
+            "cannot write x.txt: --json writes the JSON trace, a .json",
+        ),
+        (
+            "trace-learner-as-text",
+            &["trace", "--pixel", "1,1", "--learner", "-o", "x.txt"],
+            "cannot write x.txt: the learner trace is JSON, a .json",
+        ),
+        (
+            "trace-steps-as-json",
+            &["trace", "--pixel", "1,1", "--steps", "-o", "x.json"],
+            "cannot write x.json: --steps numbers the text trace",
+        ),
+        (
+            "diagram-jpg",
+            &["diagram", "--pixel", "1,1", "-o", "fig.jpg"],
+            "cannot write fig.jpg: a diagram is a .png or an .svg",
+        ),
+        (
+            "graph-svg",
+            &["diagram", "--pixel", "1,1", "--graph", "-o", "g.svg"],
+            "cannot write g.svg: the tree graph is drawn as PNG only",
+        ),
+        (
+            "strip-ppm",
+            &["strip", "--vary", "spp=1,4", "-o", "s.ppm"],
+            "cannot write s.ppm: a strip is a .png",
+        ),
+        (
+            "forward-ppm",
+            &["forward", "-o", "f.ppm"],
+            "cannot write f.ppm: a forward trace is a .png",
+        ),
+        (
+            "chart-csv-is-png",
+            &["chart", "-o", "c.png", "--csv", "c.png"],
+            "cannot write c.png: the CSV figures and the chart need two files",
+        ),
+        (
+            "generate-png",
+            &["generate", "spheres", "--count", "3", "-o", "x.png"],
+            "cannot write x.png: a generated scene is a .json file",
+        ),
+        // The figure of diff and check is a .png: the message says so, not
+        // ".png or .ppm" (a .ppm is refused as well).
+        (
+            "diff-dot",
+            &["diff", "a.png", "b.png", "-o", "."],
+            "cannot write .: a difference figure is a .png",
+        ),
+        (
+            "diff-ppm",
+            &["diff", "a.png", "b.png", "-o", "d.ppm"],
+            "cannot write d.ppm: a difference figure is a .png",
+        ),
+    ]);
+    // A text trace is written to a .txt name, the JSON trace to a .json one.
+    let dir = tempfile::tempdir().unwrap();
+    crate::commands::cli::succeeds(&["trace", "--pixel", "1,1", "-o", "t.txt"], dir.path());
+    crate::commands::cli::succeeds(&["trace", "--pixel", "1,1", "-o", "t.json"], dir.path());
+    let text = std::fs::read_to_string(dir.path().join("t.txt")).unwrap();
+    assert!(text.starts_with("pixel 1,1 of "), "{text}");
+    let json = std::fs::read_to_string(dir.path().join("t.json")).unwrap();
+    assert!(json.starts_with('{'), "{json}");
+}
+
+/// Flags that do not go together: usage errors.
+#[test]
+fn flag_combinations_are_usage_errors() {
+    usage_errors(&[
+        (
+            "structures-accel",
+            &["structures", "a.json", "--accel", "bvh"],
+            "--accel: structures measures every structure itself",
+        ),
+        (
+            "structures-sweep-two",
+            &["structures", "a.json", "b.json", "--grid-sweep"],
+            "--grid-sweep: sweeps one scene, got 2",
+        ),
+        (
+            "vary-and-flag",
+            &["strip", "--vary", "max_depth=1..3", "--max-depth", "3"],
+            "--vary max_depth and --max-depth both set max_depth: give one",
+        ),
+    ]);
+}
