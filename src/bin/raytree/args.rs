@@ -8,6 +8,7 @@ use anyhow::Result;
 use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::scene::Scene;
+use raytree::scene::limits;
 use raytree::scene::overrides::{Overrides, Protocol};
 use raytree::scene::settings::RenderSettings;
 use raytree::scene::source::{self, SceneSource};
@@ -104,7 +105,7 @@ pub struct TargetArgs {
     /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
     pub pixel: Option<(u32, u32)>,
-    /// Trace one ray instead of a pixel: its origin and direction in world coordinates. It starts in the media around its origin: from inside a glass ball, in glass.
+    /// Trace one ray instead of a pixel: its origin and direction in world coordinates, each number within ±1e9 as a scene's are. It starts in the media around its origin: from inside a glass ball, in glass.
     #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
     pub ray: Option<Ray>,
     /// With several samples per pixel, keep only sample K (1 is the first; row by row from the top-left).
@@ -158,17 +159,25 @@ pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     Ok((coord(x)?, coord(y)?))
 }
 
-/// `OX,OY,OZ:DX,DY,DZ`, finite numbers, a direction that is not zero.
+/// `OX,OY,OZ:DX,DY,DZ`: an origin and a direction that is not zero, every
+/// coordinate within a scene's limits (±[`limits::MAX_COORDINATE`]), so that
+/// every number of the trace stays finite, as it does for a scene's rays.
 fn parse_ray(s: &str) -> Result<Ray, String> {
     let (o, d) = s
         .split_once(':')
         .ok_or("expected OX,OY,OZ:DX,DY,DZ, e.g. 0,1,5:0,0,-1")?;
-    let [ox, oy, oz] = parse_numbers::<3>(o)?;
-    let [dx, dy, dz] = parse_numbers::<3>(d)?;
-    if dx == 0.0 && dy == 0.0 && dz == 0.0 {
+    let origin = DVec3::from(parse_numbers::<3>(o)?);
+    let dir = DVec3::from(parse_numbers::<3>(d)?);
+    limits::point(origin).map_err(|e| format!("the origin: {e}"))?;
+    limits::point(dir).map_err(|e| format!("the direction: {e}"))?;
+    if dir == DVec3::ZERO {
         return Err("the direction must not be zero".to_owned());
     }
-    Ok(Ray::new(DVec3::new(ox, oy, oz), DVec3::new(dx, dy, dz)))
+    // Checked, not normalized: t counts along the direction as given.
+    if dir.try_normalize().is_none() {
+        return Err("the direction is too short to normalize (its length underflows)".to_owned());
+    }
+    Ok(Ray::new(origin, dir))
 }
 
 fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {

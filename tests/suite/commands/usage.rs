@@ -147,6 +147,54 @@ fn a_flag_out_of_its_range_is_a_usage_error() {
     ]);
 }
 
+/// A ray outside a scene's limits (±1e9) is refused naming --ray: traced, it
+/// gave NaN and infinities in the text, and a JSON trace that would not read
+/// back.
+#[test]
+fn a_ray_beyond_the_scenes_limits_is_a_usage_error() {
+    usage_errors(&[
+        (
+            "ray-origin",
+            &["trace", "--ray", "1e308,0,0:-1,0,0"],
+            "'--ray <OX,OY,OZ:DX,DY,DZ>': the origin: every coordinate must be within ±1e9, got [1e308, 0, 0]",
+        ),
+        (
+            "ray-origin-json",
+            &["trace", "--ray", "0,0,1e10:0,0,-1", "--json"],
+            "the origin: every coordinate must be within ±1e9",
+        ),
+        (
+            "ray-direction",
+            &["trace", "--ray", "0,0,0:1e308,1e308,1e308"],
+            "'--ray <OX,OY,OZ:DX,DY,DZ>': the direction: every coordinate must be within ±1e9",
+        ),
+        (
+            "ray-tiny",
+            &["trace", "--ray", "0,0,0:1e-300,0,0"],
+            "the direction is too short to normalize",
+        ),
+        (
+            "ray-zero",
+            &["diagram", "--ray", "0,0,0:0,0,0"],
+            "the direction must not be zero",
+        ),
+    ]);
+    // At the limits every number stays finite, and the JSON reads back.
+    let dir = tempfile::tempdir().unwrap();
+    for ray in [
+        "1e9,1e9,1e9:-1e9,-1e9,-1e9",
+        "0,1.6,7:1e-150,-1e-150,-1e-149",
+    ] {
+        let out = crate::commands::cli::succeeds(&["trace", "--ray", ray], dir.path());
+        let text = String::from_utf8(out.stdout).unwrap();
+        assert!(
+            !text.contains("NaN") && !text.contains("inf"),
+            "{ray}: {text}"
+        );
+        crate::commands::cli::succeeds(&["trace", "--ray", ray, "--json"], dir.path());
+    }
+}
+
 /// An output name of the wrong kind is a usage error, before anything is
 /// read or traced; the message names the kind the command writes.
 #[test]
