@@ -179,11 +179,10 @@ pub struct Lesson {
 pub fn load(dir: &Path, number: u32) -> Result<Lesson, String> {
     let entries = list(dir)?;
     let Some(entry) = entries.iter().find(|e| e.number == number).cloned() else {
-        let have: Vec<String> = entries.iter().map(|e| e.number.to_string()).collect();
         return Err(format!(
-            "{}: no lesson {number} (there are: {})",
+            "{}: no lesson {number} ({})",
             dir.display(),
-            have.join(", ")
+            lessons_held(&entries)
         ));
     };
     let mut script = guide::load(&entry.folder.join(STEPS))?;
@@ -197,6 +196,17 @@ pub fn load(dir: &Path, number: u32) -> Result<Lesson, String> {
         scene,
         source,
     })
+}
+
+/// Which lessons a folder holds, in words: "there are: 1, 2, 3", or that it
+/// holds none.
+pub fn lessons_held(entries: &[Entry]) -> String {
+    if entries.is_empty() {
+        return "the folder holds no lessons: a lesson is a folder NN-topic with a lesson.toml"
+            .to_owned();
+    }
+    let have: Vec<String> = entries.iter().map(|e| e.number.to_string()).collect();
+    format!("there are: {}", have.join(", "))
 }
 
 /// `a/b/../c` → `a/c`, without asking the file system, so traces name a lesson's

@@ -12,7 +12,8 @@ const MAX_BYTES: u64 = 1 << 20;
 /// names the kind of file in the message.
 pub fn read(path: &Path, what: &str) -> Result<String, String> {
     let at = path.display();
-    let meta = std::fs::metadata(path).map_err(|e| format!("{at}: {e}"))?;
+    let cannot = |e: std::io::Error| format!("cannot read {at}: {}", crate::io::input::reason(&e));
+    let meta = std::fs::metadata(path).map_err(cannot)?;
     if !meta.is_file() {
         return Err(format!("{at}: not a regular file"));
     }
@@ -22,7 +23,7 @@ pub fn read(path: &Path, what: &str) -> Result<String, String> {
             meta.len()
         ));
     }
-    std::fs::read_to_string(path).map_err(|e| format!("{at}: {e}"))
+    std::fs::read_to_string(path).map_err(cannot)
 }
 
 /// The 1-based line of byte offset `at` in `text`.

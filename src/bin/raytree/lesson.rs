@@ -1,12 +1,13 @@
 //! `raytree lesson`: the lessons, and one lesson's guided step-through, in
 //! the inspector when standard output is a terminal, else as text.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
 use raytree::course::{lesson, vectors};
 use raytree::inspector::{self, App};
 
+use crate::args::usage;
 use crate::output;
 
 #[derive(clap::Args)]
@@ -23,21 +24,16 @@ pub struct Args {
 }
 
 pub fn run(args: &Args) -> Result<()> {
-    if !args.lessons.is_dir() {
-        return Err(anyhow!(
-            "{}: no such folder; run raytree lesson from the repository, or give --lessons DIR",
-            args.lessons.display()
-        ));
-    }
+    let entries = lessons_in(&args.lessons, "lesson")?;
     let text = match args.number {
         None => {
-            let entries = lesson::list(&args.lessons).map_err(anyhow::Error::msg)?;
             format!(
                 "{}\n`raytree lesson N` steps through lesson N; the book (book/) has their text; lessons 3 to 11 end with Build it yourself:\nwrite their functions in the Python tracer of lessons/python/ and check it with `raytree check`.\n",
                 lesson::list_text(&entries).trim_end()
             )
         }
         Some(n) => {
+            held(&args.lessons, &entries, n)?;
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
             if !args.text && output::stdout_is_terminal() {
@@ -52,6 +48,47 @@ pub fn run(args: &Args) -> Result<()> {
     };
     output::print(text)?;
     Ok(())
+}
+
+/// The lessons of `dir`, the folder `--lessons` names (`command` is the
+/// command that reads it). A name that is no folder, or a folder that holds
+/// no lesson, is a usage error; a lesson folder that cannot be read is not.
+pub fn lessons_in(dir: &Path, command: &str) -> Result<Vec<lesson::Entry>> {
+    let fix = format!("run raytree {command} from the repository, or give --lessons DIR");
+    if !dir.exists() {
+        return Err(usage(format_args!(
+            "{}: no such folder; {fix}",
+            dir.display()
+        )));
+    }
+    if !dir.is_dir() {
+        return Err(usage(format_args!(
+            "{}: not a folder; {fix}",
+            dir.display()
+        )));
+    }
+    let entries = lesson::list(dir).map_err(anyhow::Error::msg)?;
+    if entries.is_empty() {
+        return Err(usage(format_args!(
+            "{}: {}; {fix}",
+            dir.display(),
+            lesson::lessons_held(&entries)
+        )));
+    }
+    Ok(entries)
+}
+
+/// Refuses lesson `n` when `entries`, the lessons of `dir`, do not hold it:
+/// a usage error.
+pub fn held(dir: &Path, entries: &[lesson::Entry], n: u32) -> Result<()> {
+    if entries.iter().any(|e| e.number == n) {
+        return Ok(());
+    }
+    Err(usage(format_args!(
+        "{}: no lesson {n} ({})",
+        dir.display(),
+        lesson::lessons_held(entries)
+    )))
 }
 
 /// Opens the lesson's step-through in the inspector, at its first stop.

@@ -110,10 +110,7 @@ fn main() -> ExitCode {
         Command::Postscript(args) => postscript::run(&args),
         Command::Generate(args) => generate::run(&args),
         Command::Convert(args) => convert::run(&args),
-        // Every error of vectors is bad input (a lesson, a scene, a folder): 2.
-        Command::Vectors(args) => {
-            return finish_or(vectors::run(&args), ExitCode::from(diff::TROUBLE));
-        }
+        Command::Vectors(args) => vectors::run(&args),
     };
     finish(result)
 }

@@ -1,13 +1,17 @@
 //! `raytree vectors`: test vectors for a learner's tracer, from a lesson's
-//! pixels and rays (lessons 03–11) or a scene's. Every error is bad input
-//! (a lesson without vectors, a scene, a folder): one line, exit status 2.
+//! pixels and rays (lessons 03–11) or a scene's. A lesson without vectors
+//! and a `--lessons` that is no lesson folder are usage errors (exit status
+//! 2); a scene or a lesson's file that cannot be read or used is bad input
+//! (exit status 1), as for every command.
 
 use std::path::{Path, PathBuf};
 
-use anyhow::{Result, anyhow};
+use anyhow::Result;
 use raytree::course::{lesson, vectors};
 use raytree::scene::source;
 
+use crate::args::usage;
+use crate::lesson::{held, lessons_in};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -31,19 +35,27 @@ pub fn run(args: &Args) -> Result<()> {
                 .iter()
                 .find(|(n, _)| *n == number)
                 .map(|(_, f)| *f)
-                .ok_or_else(|| anyhow!("lesson {number}: vectors exist for lessons 3 to 11"))?;
-            if !args.lessons.is_dir() {
-                return Err(anyhow!(
-                    "{}: no such folder; run raytree vectors from the repository, or give --lessons DIR",
-                    args.lessons.display()
-                ));
-            }
+                .ok_or_else(|| {
+                    usage(format_args!(
+                        "lesson {number}: vectors exist for lessons 3 to 11"
+                    ))
+                })?;
+            held(
+                &args.lessons,
+                &lessons_in(&args.lessons, "vectors")?,
+                number,
+            )?;
             let (name, targets) =
                 vectors::lesson_targets(&args.lessons, number).map_err(anyhow::Error::msg)?;
             let folder = args.lessons.join(&name);
             inputs.extend([lesson::SPEC, lesson::TEXT, lesson::STEPS].map(|f| folder.join(f)));
             inputs.extend(scene_files(&targets));
-            vectors::document(&name, &format!("raytree vectors {number}"), functions, &targets)
+            vectors::document(
+                &name,
+                &format!("raytree vectors {number}"),
+                functions,
+                &targets,
+            )
         }
         Err(_) => {
             let scene = PathBuf::from(&args.target);

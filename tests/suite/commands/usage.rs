@@ -5,7 +5,12 @@
 //! errors are; a file's content or a failure to read or write one is exit
 //! status 1 (`diff` and `check` answer with 1, so all their errors are 2).
 
-use crate::common::refused_with;
+use crate::common::{refused, refused_with};
+
+/// The repository's lessons, for `--lessons` from a fresh folder.
+fn lessons() -> String {
+    concat!(env!("CARGO_MANIFEST_DIR"), "/lessons").to_owned()
+}
 
 /// Runs each of `cases` (a name, the arguments, a part of the message) in a
 /// fresh folder and holds it to exit status 2, one line naming the problem and
@@ -293,9 +298,11 @@ fn an_output_name_of_the_wrong_kind_is_a_usage_error() {
     assert!(json.starts_with('{'), "{json}");
 }
 
-/// Flags that do not go together: usage errors.
+/// Flags that do not go together, and the lesson that is not there: usage
+/// errors, in the lesson's folder or out of it.
 #[test]
-fn flag_combinations_are_usage_errors() {
+fn flag_combinations_and_missing_lessons_are_usage_errors() {
+    let lessons = lessons();
     usage_errors(&[
         (
             "structures-accel",
@@ -312,5 +319,61 @@ fn flag_combinations_are_usage_errors() {
             &["strip", "--vary", "max_depth=1..3", "--max-depth", "3"],
             "--vary max_depth and --max-depth both set max_depth: give one",
         ),
+        (
+            "lesson-99",
+            &["lesson", "99", "--lessons", &lessons],
+            "no lesson 99 (there are: 1, 2,",
+        ),
+        (
+            "vectors-99",
+            &["vectors", "99", "--lessons", &lessons],
+            "lesson 99: vectors exist for lessons 3 to 11",
+        ),
+        (
+            "lesson-no-folder",
+            &["lesson", "5", "--lessons", "nosuch"],
+            "nosuch: no such folder",
+        ),
+        (
+            "lesson-not-a-folder",
+            &["lesson", "5", "--lessons", "/dev/null"],
+            "/dev/null: not a folder",
+        ),
+        (
+            "lesson-no-lessons",
+            &["lesson", "5", "--lessons", "/etc"],
+            "/etc: the folder holds no lessons",
+        ),
+        (
+            "lessons-listed-no-lessons",
+            &["lesson", "--lessons", "/etc"],
+            "/etc: the folder holds no lessons",
+        ),
     ]);
+}
+
+/// What is wrong in a file stays exit status 1, named in one line: a lesson
+/// folder without its steps.toml names the file, in words (not "os error 2").
+#[test]
+fn a_lesson_without_its_steps_is_a_file_error_naming_the_file() {
+    let dir = tempfile::tempdir().unwrap();
+    let from = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons/05-sphere");
+    let to = dir.path().join("05-sphere");
+    std::fs::create_dir(&to).unwrap();
+    for f in ["lesson.toml", "lesson.md"] {
+        std::fs::copy(from.join(f), to.join(f)).unwrap();
+    }
+    let folder = dir.path().display().to_string();
+    for command in ["lesson", "vectors"] {
+        let e = refused(
+            &format!("{command}-no-steps"),
+            &[],
+            &[command, "5", "--lessons", &folder],
+        );
+        assert_eq!(
+            e,
+            format!("error: cannot read {folder}/05-sphere/steps.toml: no such file"),
+            "{command}"
+        );
+    }
 }

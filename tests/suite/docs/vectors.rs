@@ -78,21 +78,45 @@ fn vectors_of_a_scene_hold_every_function_and_bad_targets_are_one_line() {
             assert!(found.iter().any(|g| g == f), "no case of {f}: {found:?}");
         }
     }
-    for (args, said) in [
+    // A lesson without vectors and a folder that holds no lessons are the
+    // command line's fault (exit 2, ending with the help); a scene file that
+    // cannot be read or used is the file's (exit 1), as for every command.
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.json");
+    std::fs::write(&bad, r#"{"objects": [{"sphere": {"radius": -2}}]}"#).unwrap();
+    let bad = bad.to_str().unwrap();
+    for (args, code, said) in [
         (
             &["vectors", "2"][..],
-            "lesson 2: vectors exist for lessons 3 to 11",
+            2,
+            "lesson 2: vectors exist for lessons 3 to 11 (see raytree vectors --help)",
         ),
-        (&["vectors", "12"][..], "lesson 12"),
-        (&["vectors", "nosuch.json"][..], "nosuch.json"),
+        (&["vectors", "12"][..], 2, "lesson 12"),
         (
             &["vectors", "5", "--lessons", "nosuch"][..],
+            2,
             "nosuch: no such folder",
+        ),
+        (
+            &["vectors", "nosuch.json"][..],
+            1,
+            "nosuch.json: no such file",
+        ),
+        (
+            &["vectors", bad][..],
+            1,
+            "objects[0].sphere.radius: must be from 1e-9 to 1e9, got -2",
+        ),
+        (
+            &["vectors", "/dev/zero"][..],
+            1,
+            "cannot read /dev/zero: not a regular file",
         ),
     ] {
         let out = run(args);
         let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert_eq!(out.status.code(), Some(code), "{args:?}: {stderr}");
+        assert_eq!(stderr.contains("--help"), code == 2, "{args:?}: {stderr}");
         assert_eq!(stderr.lines().count(), 1, "{args:?}: {stderr}");
         assert!(
             stderr.starts_with("error: ") && stderr.contains(said),

@@ -158,7 +158,7 @@ fn raytree_lesson_lists_the_lessons_and_steps_through_one() {
     assert!(!ok);
     let numbers: Vec<String> = entries.iter().map(|e| e.number.to_string()).collect();
     let want = format!(
-        "error: lessons: no lesson 99 (there are: {})\n",
+        "error: lessons: no lesson 99 (there are: {}) (see raytree lesson --help)\n",
         numbers.join(", ")
     );
     assert_eq!(err, want);
