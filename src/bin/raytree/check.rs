@@ -16,12 +16,16 @@ use raytree::trace::progress::Progress;
 use raytree::trace::render;
 use raytree::views::difference::{self, Side};
 
-use crate::args::{SceneArgs, parse_pixel};
+use crate::args::{SceneArgs, parse_pixel, usage};
 use crate::output;
 
+// A check traces what a learner's tracer traces, one ray through each pixel's
+// center: --spp and --aa (of the shared settings) would change nothing, so
+// the help leaves them out and `run` refuses them.
 #[derive(clap::Args)]
+#[command(mut_arg("spp", |a| a.hide(true)), mut_arg("aa", |a| a.hide(true)))]
 pub struct Args {
-    /// The scene the learner's tracer rendered (JSON, see scenes/README.md, or NFF).
+    /// The scene the learner's tracer rendered (JSON, see scenes/README.md, or NFF). The settings flags below change it as render's do; with --image, the image sets the width and height.
     scene: PathBuf,
     /// The pixel the learner traced, in image coordinates: x to the right, y down from the top-left.
     #[arg(long, value_name = "X,Y", value_parser = parse_pixel, requires = "learner", required_unless_present = "image")]
@@ -32,14 +36,16 @@ pub struct Args {
     #[arg(long, value_name = "YOURS.png", conflicts_with_all = ["pixel", "learner"])]
     image: Option<PathBuf>,
     /// With --image: also draw yours, raytree's and where they differ side by side (.png).
-    #[arg(short, long, value_name = "WHERE.png", requires = "image")]
+    // clap does not enforce `requires` on an argument that conflicts with one
+    // given (clap-rs/clap#4520): `run` refuses these three without --image.
+    #[arg(short, long, value_name = "WHERE.png")]
     output: Option<PathBuf>,
-    /// With --image: a pixel is off when a channel differs by more than this many 8-bit levels (1 forgives a color that agrees to many digits but rounds the other way).
-    #[arg(long, value_name = "LEVELS", default_value_t = 1, requires = "image")]
-    tolerance: u8,
-    /// With --image: how many of the worst pixels to list.
-    #[arg(long, value_name = "N", default_value_t = 10, requires = "image")]
-    worst: usize,
+    /// With --image: a pixel is off when a channel differs by more than this many 8-bit levels (1 forgives a color that agrees to many digits but rounds the other way) [default: 1].
+    #[arg(long, value_name = "LEVELS")]
+    tolerance: Option<u8>,
+    /// With --image: how many of the worst pixels to list [default: 10].
+    #[arg(long, value_name = "N")]
+    worst: Option<usize>,
     /// Print a machine-readable report (format raytree-check-report, or raytree-image-check with --image; docs/learner-trace.md) instead of the text.
     #[arg(long)]
     json: bool,
@@ -53,6 +59,7 @@ const DIVERGES: u8 = 1;
 /// Checks and prints; the answer is the exit status. An error is bad input:
 /// `main` reports it with exit status 2.
 pub fn run(args: &Args) -> Result<ExitCode> {
+    refuse_bad_flags(args)?;
     let scene_args = SceneArgs {
         scene: Some(args.scene.clone()),
         protocol: None,
@@ -76,17 +83,50 @@ pub fn run(args: &Args) -> Result<ExitCode> {
     Ok(ExitCode::from(if report.agrees() { 0 } else { DIVERGES }))
 }
 
+/// Refuses the flags that would change nothing (a usage error): the
+/// sampling (a check traces one ray through each pixel's center), the size
+/// with --image (the image's own), and --image's own flags without it; and a
+/// figure's name that is not a .png.
+fn refuse_bad_flags(args: &Args) -> Result<()> {
+    let o = &args.overrides;
+    if o.spp.is_some() || o.aa.is_some() {
+        return Err(usage(format_args!(
+            "--{}: a check traces one ray through each pixel's center, as a learner's tracer does; leave it out",
+            if o.spp.is_some() { "spp" } else { "aa" }
+        )));
+    }
+    if args.image.is_some() {
+        if o.width.is_some() || o.height.is_some() {
+            return Err(usage(
+                "--width and --height: with --image the size is your image's; leave them out",
+            ));
+        }
+        if let Some(path) = &args.output {
+            output::require_png(path, "a difference figure")?;
+        }
+        return Ok(());
+    }
+    let given = [
+        ("-o", args.output.is_some()),
+        ("--tolerance", args.tolerance.is_some()),
+        ("--worst", args.worst.is_some()),
+    ];
+    if let Some((flag, _)) = given.iter().find(|(_, given)| *given) {
+        return Err(usage(format_args!(
+            "{flag} goes with --image only (a check of one pixel's rays draws and lists no pixels)"
+        )));
+    }
+    Ok(())
+}
+
 /// `--image`: the whole image, its pixels off and the worst of them, and with
 /// `-o` the figure of where.
 fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result<ExitCode> {
     let pending = match &args.output {
-        Some(path) => {
-            output::require_png(path, "a difference figure")?;
-            Some(output::create(
-                path,
-                &[args.scene.clone(), yours.to_owned()],
-            )?)
-        }
+        Some(path) => Some(output::create(
+            path,
+            &[args.scene.clone(), yours.to_owned()],
+        )?),
         None => None,
     };
     let theirs = image_file::read_rgb8(yours)?;
@@ -103,8 +143,8 @@ fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result
         (&names.0, &names.1),
         &theirs,
         to_rgb8(&ours),
-        args.tolerance,
-        args.worst,
+        args.tolerance.unwrap_or(1),
+        args.worst.unwrap_or(10),
     );
     if let (Some(pending), Some(path)) = (pending, &args.output) {
         let ours = ::image::RgbImage::from_raw(check.width, check.height, check.ours.clone())

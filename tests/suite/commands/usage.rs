@@ -287,6 +287,11 @@ fn an_output_name_of_the_wrong_kind_is_a_usage_error() {
             &["diff", "a.png", "b.png", "-o", "d.ppm"],
             "cannot write d.ppm: a difference figure is a .png",
         ),
+        (
+            "check-dot",
+            &["check", "s.json", "--image", "y.png", "-o", "."],
+            "cannot write .: a difference figure is a .png",
+        ),
     ]);
     // A text trace is written to a .txt name, the JSON trace to a .json one.
     let dir = tempfile::tempdir().unwrap();
@@ -296,6 +301,67 @@ fn an_output_name_of_the_wrong_kind_is_a_usage_error() {
     assert!(text.starts_with("pixel 1,1 of "), "{text}");
     let json = std::fs::read_to_string(dir.path().join("t.json")).unwrap();
     assert!(json.starts_with('{'), "{json}");
+}
+
+/// `check`'s flags that would change nothing are refused: -o, --tolerance and
+/// --worst without --image (clap's `requires` let them pass), --spp and --aa
+/// (a check traces one ray through each pixel's center), and the size with
+/// --image (the image's own).
+#[test]
+fn check_refuses_the_flags_that_would_change_nothing() {
+    usage_errors(&[
+        (
+            "check-o-pixel",
+            &[
+                "check", "s.json", "--pixel", "1,1", "l.json", "-o", "out.png",
+            ],
+            "-o goes with --image only",
+        ),
+        (
+            "check-tolerance-pixel",
+            &[
+                "check",
+                "s.json",
+                "--pixel",
+                "1,1",
+                "l.json",
+                "--tolerance",
+                "3",
+            ],
+            "--tolerance goes with --image only",
+        ),
+        (
+            "check-worst-pixel",
+            &[
+                "check", "s.json", "--pixel", "1,1", "l.json", "--worst", "3",
+            ],
+            "--worst goes with --image only",
+        ),
+        (
+            "check-spp-image",
+            &["check", "s.json", "--image", "y.png", "--spp", "4"],
+            "--spp: a check traces one ray through each pixel's center",
+        ),
+        (
+            "check-aa-pixel",
+            &[
+                "check", "s.json", "--pixel", "1,1", "l.json", "--aa", "corners",
+            ],
+            "--aa: a check traces one ray through each pixel's center",
+        ),
+        (
+            "check-width-image",
+            &["check", "s.json", "--image", "y.png", "--width", "40"],
+            "--width and --height: with --image the size is your image's",
+        ),
+    ]);
+    // The help lists neither --spp nor --aa.
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(["check", "--help"])
+        .output()
+        .unwrap();
+    let help = String::from_utf8(out.stdout).unwrap();
+    assert!(!help.contains("--spp") && !help.contains("--aa"), "{help}");
 }
 
 /// Flags that do not go together, and the lesson that is not there: usage
