@@ -71,8 +71,28 @@ pub fn is_nff(file: &str) -> bool {
 /// The NFF text `text` of file `file` as raytree scene JSON, one object to
 /// a line; errors name `file` and the line.
 pub fn to_json(text: &str, file: &str) -> Result<String, SceneError> {
-    let scene = Reader::new(text, file).read()?;
+    let reader = Reader::new(text, file);
+    if let Some(line) = past_word_limit(text) {
+        let limit = format!(
+            "the file holds more than {MAX_WORDS} words (keywords and numbers), more than raytree reads from an NFF file"
+        );
+        return Err(reader.error(line, 1, limit));
+    }
+    let scene = reader.read()?;
     Ok(scene.json(file))
+}
+
+/// The line on which the words (keywords and numbers) pass [`MAX_WORDS`],
+/// counted before anything is built: the scene made of them would take some
+/// hundred times their bytes.
+fn past_word_limit(text: &str) -> Option<usize> {
+    let mut words = 0;
+    let mut lines = text.lines().map(|l| l.split('#').next().unwrap_or(""));
+    let past = lines.position(|l| {
+        words += l.split_whitespace().count();
+        words > MAX_WORDS
+    });
+    past.map(|i| i + 1)
 }
 
 /// A line of the file: its number and its words with their columns.
@@ -83,11 +103,9 @@ struct Line<'t> {
 
 struct Reader<'t> {
     file: &'t str,
-    lines: std::iter::Peekable<Box<dyn Iterator<Item = Line<'t>> + 't>>,
+    lines: Box<dyn Iterator<Item = Line<'t>> + 't>,
     /// The line the file ended after, for "ends early" errors.
     last: usize,
-    /// Words read so far: bounded by [`MAX_WORDS`].
-    words: usize,
 }
 
 impl<'t> Reader<'t> {
@@ -110,9 +128,8 @@ impl<'t> Reader<'t> {
         });
         let last = text.lines().count();
         Reader {
-            words: 0,
             file,
-            lines: (Box::new(lines) as Box<dyn Iterator<Item = Line<'t>>>).peekable(),
+            lines: Box::new(lines),
             last,
         }
     }
@@ -126,27 +143,9 @@ impl<'t> Reader<'t> {
         }
     }
 
-    /// The next line, counted against [`MAX_WORDS`].
-    fn next_line(&mut self) -> Result<Option<Line<'t>>, SceneError> {
-        let Some(line) = self.lines.next() else {
-            return Ok(None);
-        };
-        self.words += line.words.len();
-        if self.words > MAX_WORDS {
-            return Err(self.error(
-                line.number,
-                1,
-                format!(
-                    "the file holds more than {MAX_WORDS} words (keywords and numbers), more than raytree reads from an NFF file"
-                ),
-            ));
-        }
-        Ok(Some(line))
-    }
-
     /// The next line, which entity `what` (begun on line `from`) needs.
     fn next_for(&mut self, what: &str, from: usize) -> Result<Line<'t>, SceneError> {
-        self.next_line()?.ok_or_else(|| {
+        self.lines.next().ok_or_else(|| {
             self.error(
                 self.last.max(1),
                 1,
@@ -160,7 +159,7 @@ impl<'t> Reader<'t> {
         // The current material's name, and whether it transmits.
         let mut material: Option<(String, bool)> = None;
         let mut known: HashMap<[u64; 8], String> = HashMap::new();
-        while let Some(line) = self.next_line()? {
+        while let Some(line) = self.lines.next() {
             let (column, keyword) = line.words[0];
             let n = line.number;
             match keyword {

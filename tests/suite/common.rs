@@ -130,6 +130,23 @@ pub fn refused_with(code: i32, name: &str, files: &[(&str, &[u8])], args: &[&str
     lines[0].to_owned()
 }
 
+/// Runs `raytree ARGS` in `dir` with its address space limited to `mib`
+/// MiB: a reader that would fill the memory fails instead of passing.
+#[cfg(target_os = "linux")]
+pub fn within_memory(dir: &std::path::Path, mib: u64, args: &[&str]) -> (Option<i32>, String, f64) {
+    let start = std::time::Instant::now();
+    let out = std::process::Command::new("sh")
+        .arg("-c")
+        .arg(format!("ulimit -v {}; exec \"$0\" \"$@\"", mib << 10))
+        .arg(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .unwrap();
+    let err = String::from_utf8_lossy(&out.stderr).into_owned();
+    (out.status.code(), err, start.elapsed().as_secs_f64())
+}
+
 /// [`refused_with`] exit code 1: a bad input, not a malformed command line.
 pub fn refused(name: &str, files: &[(&str, &[u8])], args: &[&str]) -> String {
     refused_with(1, name, files, args)

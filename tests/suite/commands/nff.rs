@@ -364,3 +364,21 @@ fn a_file_of_too_many_words_is_refused_as_the_limit_is_reached() {
     let line: usize = e.split(':').nth(1).unwrap().parse().unwrap();
     assert_eq!(line, 8 + (nff::MAX_WORDS - 29) / 5 + 1, "{e}");
 }
+
+#[test]
+#[cfg(target_os = "linux")]
+fn a_file_past_the_word_limit_is_refused_before_its_scene_is_built() {
+    // 8.4 MB of spheres, just past the limit: counted before any is built,
+    // it is refused within 128 MiB (built first, its objects took 1.4 GB).
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = String::from(
+        "v\nfrom 0 -5 1\nat 0 0 0\nup 0 0 1\nangle 40\nhither 1\nresolution 6 4\nf 1 1 1 1 0 1 0 0\n",
+    );
+    text.push_str(&"s 0 0 0 1\n".repeat(nff::MAX_WORDS / 5 + 10));
+    std::fs::write(dir.path().join("big.nff"), text).unwrap();
+    let args = ["render", "big.nff", "-o", "o.png"];
+    let (code, err, _) = crate::common::within_memory(dir.path(), 128, &args);
+    assert_eq!(code, Some(1), "{err}");
+    assert_eq!(err.lines().count(), 1, "{err}");
+    assert!(err.contains("more than 4194304 words"), "{err}");
+}
