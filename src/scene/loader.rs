@@ -28,6 +28,7 @@ use crate::scene::limits;
 use crate::scene::names::name_ok;
 use crate::scene::nff;
 use crate::scene::overrides::Overrides;
+use crate::scene::quote;
 use crate::scene::settings::RenderSettings;
 use crate::scene::strict;
 use crate::shading::material::{Material, Pattern};
@@ -82,16 +83,17 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         let text = e.to_string();
         let message = text
             .rfind(" at line ")
-            .map_or(text.as_str(), |i| &text[..i])
-            .to_owned();
-        let message = if path == "." || path.is_empty() {
+            .map_or(text.as_str(), |i| &text[..i]);
+        // serde quotes an unknown key as written: a newline or an escape in it
+        // would break the one-line message or reach the terminal, and ten
+        // million characters of it would fill the terminal.
+        let message = quote::shorten_serde(&strict::in_users_words(message));
+        let message = if path.is_empty() {
             message
         } else {
             format!("{path}: {message}")
         };
-        // serde quotes an unknown key as written: a newline or an escape in it
-        // would break the one-line message or reach the terminal.
-        let message = strict::printable(&strict::in_users_words(&message));
+        let message = strict::printable(&message);
         SceneError::Syntax {
             file: file.to_owned(),
             line: e.line(),
@@ -101,7 +103,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
     };
     let de = &mut serde_json::Deserializer::from_str(text);
     let Root(raw) = serde_path_to_error::deserialize(&mut *de)
-        .map_err(|e| syntax(e.path().to_string(), e.into_inner()))?;
+        .map_err(|e| syntax(field_path(e.path()), e.into_inner()))?;
     de.end().map_err(|e| syntax(String::new(), e))?;
     let dir = Path::new(file).parent().unwrap_or(Path::new(""));
     let builder = Builder {
@@ -110,6 +112,41 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         meshes: RefCell::default(),
     };
     builder.scene(raw)
+}
+
+/// The path serde_path_to_error names (`objects[2].sphere.radius`), each key
+/// the file gave cut as [`quote::quote`] cuts it; empty for the whole document.
+fn field_path(path: &serde_path_to_error::Path) -> String {
+    use serde_path_to_error::Segment;
+    let mut out = String::new();
+    for segment in path.iter() {
+        match segment {
+            Segment::Seq { index } => out.push_str(&format!("[{index}]")),
+            Segment::Map { key } | Segment::Enum { variant: key } => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(&quote::quote(key, ""));
+            }
+            Segment::Unknown => out.push_str(if out.is_empty() { "?" } else { ".?" }),
+        }
+    }
+    out
+}
+
+/// The materials a scene defines, as an error lists them: the first few,
+/// each cut as [`quote::quote`] cuts it.
+fn defined<'n>(names: impl ExactSizeIterator<Item = &'n String>) -> String {
+    const SHOWN: usize = 10;
+    let n = names.len();
+    if n == 0 {
+        return "none are defined".to_owned();
+    }
+    let mut list: Vec<String> = names.take(SHOWN).map(|m| quote::quote(m, "")).collect();
+    if n > SHOWN {
+        list.push(format!("and {} more", n - SHOWN));
+    }
+    format!("defined: {}", list.join(", "))
 }
 
 /// The material objects get when they name none.
@@ -151,7 +188,8 @@ impl Builder<'_> {
         let background = self.color("background", raw.background.unwrap_or(DVec3::ZERO))?;
         let ambient_light = self.color("ambient_light", raw.ambient_light.unwrap_or(DVec3::ONE))?;
         for name in raw.materials.keys() {
-            self.check(format_args!("materials.{name}"), name.as_str(), name_ok)?;
+            let field = format_args!("materials.{}", quote::quote(name, ""));
+            self.check(field, name.as_str(), name_ok)?;
         }
         let mut materials = raw
             .materials
@@ -174,15 +212,13 @@ impl Builder<'_> {
                     materials.len() - 1
                 }
                 None => {
-                    let known: Vec<&str> = raw.materials.keys().map(String::as_str).collect();
-                    let known = if known.is_empty() {
-                        "none are defined".to_owned()
-                    } else {
-                        format!("defined: {}", known.join(", "))
-                    };
                     return Err(self.invalid(
                         format_args!("objects[{i}].material"),
-                        format_args!("no material named '{wanted}' ({known})"),
+                        format_args!(
+                            "no material named {} ({})",
+                            quote::quote(wanted, "'"),
+                            defined(raw.materials.keys())
+                        ),
                     ));
                 }
             };
@@ -234,7 +270,7 @@ impl Builder<'_> {
             if let Some(first) = seen.insert(name, i) {
                 return Err(self.invalid(
                     format_args!("{list}[{i}].name"),
-                    format_args!("'{name}' is already the name of {list}[{first}] (names must differ; one left out is its kind and place, e.g. sphere3 or light0)"),
+                    format_args!("{} is already the name of {list}[{first}] (names must differ; one left out is its kind and place, e.g. sphere3 or light0)", quote::quote(name, "'")),
                 ));
             }
         }
@@ -242,11 +278,12 @@ impl Builder<'_> {
     }
 
     fn material(&self, name: &str, m: &MaterialFile) -> Result<Material, SceneError> {
-        let at = |f: &str| format!("materials.{name}.{f}");
+        let shown = quote::quote(name, "");
+        let at = |f: &str| format!("materials.{shown}.{f}");
         let pattern = match (&m.color, &m.checker) {
             (Some(_), Some(_)) => {
                 return Err(self.invalid(
-                    format_args!("materials.{name}"),
+                    format_args!("materials.{shown}"),
                     "give color or checker, not both",
                 ));
             }
@@ -292,7 +329,7 @@ impl Builder<'_> {
         let transparent = coefficient(m.transparent, "transparent", 0.0, 1.0)?;
         if reflective + transparent > 1.0 {
             return Err(self.invalid(
-                format_args!("materials.{name}"),
+                format_args!("materials.{shown}"),
                 format_args!("reflective + transparent must be at most 1 (a surface passes on no more light than arrives), got {} + {}", limits::num(reflective), limits::num(transparent)),
             ));
         }

@@ -6,6 +6,7 @@ pub mod light; // point lights
 pub mod settings; // image size, sampling, recursion limits, methods
 pub mod overrides; // the settings a scene file or the command line changes
 pub mod format; // the scene file's shape, as serde reads it
+pub mod quote; // the user's words in an error: printable, and cut when long
 pub mod strict; // JSON objects only, each name once
 pub mod limits; // the ranges that keep every computed number finite
 pub mod camera_file; // the camera block, checked (right-handed frames only)

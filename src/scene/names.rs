@@ -3,6 +3,8 @@
 
 use std::path::Path;
 
+use crate::scene::quote::quote;
+
 /// A mesh's `file` stays in the scene's folder `dir` or below it: no `..`
 /// above the folder, no absolute path or symlink that resolves out of it (the
 /// deepest part of the path that exists is resolved). A path out is refused whether or not
@@ -11,7 +13,8 @@ pub fn within(dir: &Path, file: &str) -> Result<(), String> {
     use std::path::Component;
     let leaves = || {
         Err(format!(
-            "'{file}' leaves the scene's folder (a mesh is read from the scene's folder or one below it)"
+            "{} leaves the scene's folder (a mesh is read from the scene's folder or one below it)",
+            quote(file, "'")
         ))
     };
     // A relative path climbing above the folder, by its words alone (an
@@ -55,8 +58,8 @@ pub fn within(dir: &Path, file: &str) -> Result<(), String> {
 pub fn name_ok(name: &str) -> Result<(), String> {
     match name.chars().find(|c| c.is_control()) {
         Some(c) => Err(format!(
-            "'{}' holds a control character ({}); names must be printable",
-            name.escape_debug(),
+            "{} holds a control character ({}); names must be printable",
+            quote(name, "'"),
             c.escape_unicode()
         )),
         None => Ok(()),

@@ -49,6 +49,7 @@ use crate::geometry::polygon::Polygon;
 use crate::io::image::srgb_to_linear;
 use crate::scene::limits;
 use crate::scene::nff_json::{NffScene, View, material_json, xyz};
+use crate::scene::quote::{printable, quote};
 use crate::scene::scene_error::SceneError;
 use crate::scene::settings::RenderSettings;
 
@@ -139,7 +140,7 @@ impl<'t> Reader<'t> {
             file: self.file.to_owned(),
             line,
             column,
-            message: crate::scene::strict::printable(&message.into()),
+            message: printable(&message.into()),
         }
     }
 
@@ -181,8 +182,7 @@ impl<'t> Reader<'t> {
                     let (position, color) = match line.words.len() {
                         4 => (self.point(&line, 1)?, None),
                         7 => {
-                            let [x, y, z, r, g, b] = self.numbers(&line)?;
-                            let _ = (x, y, z);
+                            let [_, _, _, r, g, b] = self.numbers(&line)?;
                             let color = self.color(&line, DVec3::new(r, g, b))?;
                             (self.point(&line, 1)?, Some(color))
                         }
@@ -237,8 +237,8 @@ impl<'t> Reader<'t> {
                         n,
                         column,
                         format!(
-                            "'{}' is not an NFF keyword (expected v, b, l, f, s, c, p or pp)",
-                            other.escape_debug()
+                            "{} is not an NFF keyword (expected v, b, l, f, s, c, p or pp)",
+                            quote(other, "'")
                         ),
                     ));
                 }
@@ -290,14 +290,14 @@ impl<'t> Reader<'t> {
                     return Err(self.error(
                         line.number,
                         column,
-                        format!("'{word}' is not a finite number"),
+                        format!("{} is not a finite number", quote(word, "'")),
                     ));
                 }
                 Err(_) => {
                     return Err(self.error(
                         line.number,
                         column,
-                        format!("'{}' is not a number", word.escape_debug()),
+                        format!("{} is not a number", quote(word, "'")),
                     ));
                 }
             };
@@ -333,8 +333,8 @@ impl<'t> Reader<'t> {
                     line.number,
                     column,
                     format!(
-                        "the view (v) begun on line {start} expects '{key}' here (from, at, up, angle, hither, resolution, in that order), got '{}'",
-                        word.escape_debug()
+                        "the view (v) begun on line {start} expects '{key}' here (from, at, up, angle, hither, resolution, in that order), got {}",
+                        quote(word, "'")
                     ),
                 ));
             }
@@ -387,8 +387,8 @@ impl<'t> Reader<'t> {
                         resolution_line.number,
                         column,
                         format!(
-                            "'{}' is not an image side (a whole number from 1 to {})",
-                            word.escape_debug(),
+                            "{} is not an image side (a whole number from 1 to {})",
+                            quote(word, "'"),
                             RenderSettings::MAX_SIDE
                         ),
                     )
@@ -544,8 +544,8 @@ impl<'t> Reader<'t> {
                     line.number,
                     column,
                     format!(
-                        "'{}' is not a vertex count for '{keyword}' (a whole number from 3 to {MAX_POLYGON_VERTICES})",
-                        word.escape_debug()
+                        "{} is not a vertex count for '{keyword}' (a whole number from 3 to {MAX_POLYGON_VERTICES})",
+                        quote(word, "'")
                     ),
                 )
             })?;

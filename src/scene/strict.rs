@@ -11,16 +11,8 @@ use std::marker::PhantomData;
 use serde::de::{DeserializeSeed, Deserializer, Error, MapAccess, SeqAccess, Visitor};
 use serde::{Deserialize, forward_to_deserialize_any};
 
-/// `text` with its control characters escaped (`\u{1b}`, `\n`): a message
-/// quoting a key or a name stays one line and never instructs the terminal.
-pub fn printable(text: &str) -> String {
-    text.chars()
-        .map(|c| match c.is_control() {
-            true => c.escape_default().to_string(),
-            false => c.to_string(),
-        })
-        .collect()
-}
+pub use crate::scene::quote::printable;
+use crate::scene::quote::quote;
 
 /// serde's message with the Rust type it expected (`f64`, `u32`, `struct
 /// SceneFile`, `a sequence of 3 f64 values`) said in the format's words (`a
@@ -163,7 +155,8 @@ impl<'de, T: Deserialize<'de>> Visitor<'de> for Named<T> {
         while let Some(name) = map.next_key::<String>()? {
             if out.contains_key(&name) {
                 return Err(A::Error::custom(format_args!(
-                    "the name `{name}` is given twice"
+                    "the name {} is given twice",
+                    quote(&name, "`")
                 )));
             }
             let value = map.next_value_seed(AsObject(PhantomData))?;

@@ -8,8 +8,9 @@ use std::path::{Path, PathBuf};
 use crate::io::headroom;
 use crate::io::input::{self, MAX_INPUT_BYTES};
 use crate::scene::Scene;
+use crate::scene::quote::{printable, quote, shorten_serde};
 use crate::scene::source::BUILT_IN;
-use crate::scene::strict::{in_users_words, printable};
+use crate::scene::strict::in_users_words;
 use crate::tree::document::{FORMAT, TraceDocument, VERSION};
 use crate::tree::trace_check;
 
@@ -40,7 +41,7 @@ pub fn parse(text: &str) -> Result<TraceDocument, String> {
     {
         return Err(format!(
             " a {} version {version} document; this raytree reads {FORMAT} version {VERSION}",
-            format.escape_debug(),
+            quote(&format, ""),
         ));
     }
     let trace: TraceDocument = serde_json::from_str(text).map_err(|e| {
@@ -48,7 +49,9 @@ pub fn parse(text: &str) -> Result<TraceDocument, String> {
             "{}:{}: not a raytree trace: {}",
             e.line(),
             e.column(),
-            printable(&in_users_words(without_position(&e.to_string())))
+            printable(&shorten_serde(&in_users_words(without_position(
+                &e.to_string()
+            ))))
         )
     })?;
     trace_check::structure(&trace).map_err(|e| format!(" {e}"))?;

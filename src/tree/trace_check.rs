@@ -10,6 +10,7 @@
 //! `samples[0].tree.nodes[3].reflected.node: 99 is not a node (the tree has 11)`.
 
 use crate::scene::Scene;
+use crate::scene::quote::quote;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
 use crate::tree::ray_tree::{BranchRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
@@ -24,6 +25,11 @@ use crate::tree::ray_tree::{BranchRecord, RayKind, RayNode, RayTree, ShadowOutco
 /// ([`crate::tree::record::worst_case_rays`]): the same constant, so what
 /// raytree records it can read back.
 pub const MAX_TRACE_RAYS: u64 = 1 << 20;
+
+/// A name from the trace quoted in an error: printable, and cut when long.
+fn q(name: &str) -> String {
+    quote(name, "'")
+}
 
 /// Checks that `trace` holds together on its own.
 pub fn structure(trace: &TraceDocument) -> Result<(), String> {
@@ -167,8 +173,9 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
     let object = |i: usize, name: &str, at: String| match trace.objects.get(i) {
         Some(o) if o.name == name => Ok(o),
         Some(o) => Err(format!(
-            "{at}: object {i} is '{}', not '{name}'",
-            o.name.escape_debug()
+            "{at}: object {i} is {}, not {}",
+            q(&o.name),
+            q(name)
         )),
         None => Err(format!(
             "{at}: object {i} does not exist (the trace lists {})",
@@ -178,8 +185,9 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
     let light = |i: usize, name: &str, at: String| match trace.lights.get(i) {
         Some(l) if l.name == name => Ok(()),
         Some(l) => Err(format!(
-            "{at}: light {i} is '{}', not '{name}'",
-            l.name.escape_debug()
+            "{at}: light {i} is {}, not {}",
+            q(&l.name),
+            q(name)
         )),
         None => Err(format!(
             "{at}: light {i} does not exist (the trace lists {})",
@@ -221,9 +229,9 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
         let o = object(hit.object, &hit.name, format!("{here}.hit.object"))?;
         if o.material != hit.material {
             return Err(format!(
-                "{here}.hit.material: object {} is made of '{}'",
+                "{here}.hit.material: object {} is made of {}",
                 hit.object,
-                o.material.escape_debug()
+                q(&o.material)
             ));
         }
     }
@@ -253,10 +261,7 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
 /// A name without control characters, which a terminal would obey.
 fn printable(at: &str, name: &str) -> Result<(), String> {
     match name.chars().any(char::is_control) {
-        true => Err(format!(
-            "{at}: '{}' holds a control character",
-            name.escape_debug()
-        )),
+        true => Err(format!("{at}: {} holds a control character", q(name))),
         false => Ok(()),
     }
 }
@@ -282,19 +287,19 @@ pub fn against_scene(trace: &TraceDocument, scene: &Scene) -> Result<(), String>
     }
     if let Some(i) = (0..now.objects.len()).find(|&i| now.objects[i] != trace.objects[i]) {
         return Err(format!(
-            "object {i} is '{}' ({} of '{}') in the trace, '{}' ({} of '{}') in the scene",
-            trace.objects[i].name.escape_debug(),
-            trace.objects[i].kind,
-            trace.objects[i].material.escape_debug(),
-            now.objects[i].name.escape_debug(),
-            now.objects[i].kind,
-            now.objects[i].material.escape_debug()
+            "object {i} is {} ({} of {}) in the trace, {} ({} of {}) in the scene",
+            q(&trace.objects[i].name),
+            quote(&trace.objects[i].kind, ""),
+            q(&trace.objects[i].material),
+            q(&now.objects[i].name),
+            quote(&now.objects[i].kind, ""),
+            q(&now.objects[i].material)
         ));
     }
     if let Some(i) = (0..now.lights.len()).find(|&i| now.lights[i] != trace.lights[i]) {
         return Err(format!(
-            "light {i} ('{}') is not where, or not the color, the scene has it",
-            trace.lights[i].name.escape_debug()
+            "light {i} ({}) is not where, or not the color, the scene has it",
+            q(&trace.lights[i].name)
         ));
     }
     for sample in &trace.samples {
@@ -305,8 +310,8 @@ pub fn against_scene(trace: &TraceDocument, scene: &Scene) -> Result<(), String>
             };
             if hit.face.is_some_and(|f| f as usize >= faces) {
                 return Err(format!(
-                    "a hit on '{}' names a face the mesh does not have",
-                    hit.name.escape_debug()
+                    "a hit on {} names a face the mesh does not have",
+                    q(&hit.name)
                 ));
             }
         }

@@ -17,7 +17,7 @@ use crate::course::learner::format::{
     MAX_BYTES, MAX_DEPTH, MAX_RAYS, RAY_KEYS, SHADOW_KEYS, TRACE_KEYS, VERSION,
 };
 use crate::io::input;
-use crate::scene::strict::printable;
+use crate::scene::quote::{printable, quote};
 
 /// Reads the learner trace at `path`; the error is one line naming the file.
 pub fn read(path: &Path) -> Result<LearnerTrace, String> {
@@ -117,7 +117,7 @@ fn object<'v>(v: &'v Value, path: &str, keys: &[Key]) -> Result<&'v Map<String, 
     if let Some(unknown) = m.keys().find(|k| !keys.iter().any(|(name, _)| name == k)) {
         let known: Vec<&str> = keys.iter().map(|(k, _)| *k).collect();
         return fail(
-            &at(path, unknown),
+            &at(path, &quote(unknown, "")),
             format!("unknown field (known: {})", known.join(", ")),
         );
     }
@@ -228,7 +228,8 @@ impl Walk {
         let m = object(v, "", TRACE_KEYS)?;
         let format = string(&m["format"], "format")?;
         if format != FORMAT {
-            return fail("format", format!("expected \"{FORMAT}\", found {format:?}"));
+            let found = quote(&format, "\"");
+            return fail("format", format!("expected \"{FORMAT}\", found {found}"));
         }
         if m["version"].as_u64() != Some(VERSION) {
             return fail(
@@ -287,7 +288,11 @@ impl Walk {
             other => {
                 return fail(
                     &kind_path,
-                    format!("expected one of {}, found {other:?}", KINDS.join(", ")),
+                    format!(
+                        "expected one of {}, found {}",
+                        KINDS.join(", "),
+                        quote(other, "\"")
+                    ),
                 );
             }
         };

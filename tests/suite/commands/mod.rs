@@ -13,6 +13,7 @@ mod nff;
 mod outputs;
 mod pipes;
 mod postscript;
+mod readers;
 mod signals;
 mod strip;
 mod structures;
