@@ -5,12 +5,22 @@ use std::path::Path;
 
 use crate::scene::quote::quote;
 
+/// The longest path a mesh's `file` may be, Linux's `PATH_MAX`: no longer
+/// one names a file, and the errors that name the file stay short.
+pub const MAX_PATH_BYTES: usize = 4096;
+
 /// A mesh's `file` stays in the scene's folder `dir` or below it: no `..`
 /// above the folder, no absolute path or symlink that resolves out of it (the
 /// deepest part of the path that exists is resolved). A path out is refused whether or not
 /// its file exists, so a scene cannot probe the machine's files.
 pub fn within(dir: &Path, file: &str) -> Result<(), String> {
     use std::path::Component;
+    if file.len() > MAX_PATH_BYTES {
+        return Err(format!(
+            "{} is longer than a path can be ({MAX_PATH_BYTES} bytes)",
+            quote(file, "'")
+        ));
+    }
     let leaves = || {
         Err(format!(
             "{} leaves the scene's folder (a mesh is read from the scene's folder or one below it)",
