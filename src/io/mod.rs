@@ -3,7 +3,7 @@
 //! atomically, the difference between two images, and the lecture's
 //! PostScript program.
 
-pub mod input; // regular files only, size checked before reading
+pub mod input; // regular files only, size checked before reading, text that is text
 pub mod headroom; // whether a file will fit in memory once loaded
 pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
 pub mod image_file; // PNG and PPM

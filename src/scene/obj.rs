@@ -27,8 +27,8 @@ pub struct ObjError {
 }
 
 /// Reads the OBJ file at `path` (a regular file of at most
-/// [`MAX_INPUT_BYTES`], checked before reading); `smooth` keeps its vertex
-/// normals, if any.
+/// [`MAX_INPUT_BYTES`], checked before reading, and text: a binary file is
+/// refused from its first bytes); `smooth` keeps its vertex normals, if any.
 pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
     let file = path.display().to_string();
     let error = |message| ObjError {
@@ -40,9 +40,9 @@ pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
     if let Ok(meta) = std::fs::metadata(path) {
         headroom::check(meta.len(), available).map_err(error)?;
     }
-    let bytes = input::read_bytes(path, MAX_INPUT_BYTES).map_err(error)?;
-    headroom::check(headroom::obj_need(&bytes), available).map_err(error)?;
-    parse(&bytes, &file, smooth)
+    let text = input::read_text(path, MAX_INPUT_BYTES).map_err(error)?;
+    headroom::check(headroom::obj_need(text.as_bytes()), available).map_err(error)?;
+    parse(text.as_bytes(), &file, smooth)
 }
 
 /// Parses OBJ text; `file` names it in errors.
@@ -52,9 +52,8 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
         line,
         message,
     };
-    if let Err(e) = std::str::from_utf8(bytes) {
-        let line = lines_in(&bytes[..e.valid_up_to()]) + 1;
-        return Err(error(Some(line), "not UTF-8 text".to_owned()));
+    if let Some(not_text) = input::not_text(bytes) {
+        return Err(error(None, not_text.to_string()));
     }
     let models = read_models(bytes).map_err(|(line, message)| error(line, message))?;
     if let Some(line) = first_out_of_range(bytes) {

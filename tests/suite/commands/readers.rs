@@ -1,10 +1,27 @@
-//! What every reader does the same way, beside each reader's own cases
-//! (`nff.rs`, `trace_files.rs`, `learner.rs`): a long word of the input
-//! quoted short.
+//! What every reader refuses the same way, beside each reader's own cases
+//! (`cli.rs` for OBJ meshes, `nff.rs`, `trace_files.rs`, `learner.rs`): a
+//! file that is not text (a byte-order mark, a NUL byte: refused from its
+//! first bytes, within a small memory), and a long word of the input quoted
+//! short.
 
 use std::path::Path;
 
-use crate::common::refused_with;
+use crate::common::{refused, refused_with};
+
+/// `render s.json` where `s.json` is a mesh of `m.obj` holding `text`: the
+/// error line.
+fn mesh_refused(name: &str, text: &[u8]) -> String {
+    let scene = br#"{"objects": [{"mesh": {"file": "m.obj"}}]}"#;
+    let files: [(&str, &[u8]); 2] = [("s.json", scene), ("m.obj", text)];
+    let e = refused(name, &files, &["render", "s.json", "-o", "o.png"]);
+    assert!(
+        e.ends_with(" (the mesh of s.json: objects[0].mesh.file)"),
+        "{name}: {e}"
+    );
+    e
+}
+
+const TRIANGLE: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
 
 /// The error line of `raytree ARGS` run in a folder holding `file` (named
 /// `name`, `text`) and the shipped Whitted scene as `s.json`, exit `code`.
@@ -17,7 +34,7 @@ fn refused_in_folder(code: i32, case: &str, name: &str, text: &[u8], args: &[&st
 
 /// Each kind of file raytree reads as text, by name, with the command that
 /// reads it and that command's exit code for a bad file.
-const READERS: [(&str, &[&str], i32); 4] = [
+const READERS: [(&str, &[&str], i32); 5] = [
     ("scene.json", &["render", "scene.json", "-o", "o.png"], 1),
     ("scene.nff", &["render", "scene.nff", "-o", "o.png"], 1),
     ("trace.json", &["inspect", "--trace", "trace.json"], 1),
@@ -26,7 +43,82 @@ const READERS: [(&str, &[&str], i32); 4] = [
         &["check", "s.json", "--pixel", "1,1", "learner.json"],
         2,
     ),
+    ("m.obj", &[], 1),
 ];
+
+/// `text` given to each reader: the error line of each.
+fn every_reader_refuses(case: &str, text: &[u8]) -> Vec<String> {
+    READERS
+        .iter()
+        .map(|(name, args, code)| {
+            let case = format!("{case}-{}", name.replace('.', "-"));
+            if name.ends_with(".obj") {
+                mesh_refused(&case, text)
+            } else {
+                refused_in_folder(*code, &case, name, text, args)
+            }
+        })
+        .collect()
+}
+
+#[test]
+fn a_byte_order_mark_is_named_by_every_reader() {
+    // Some Windows editors save UTF-8 with the mark U+FEFF first: no reader
+    // takes it for the first word (a JSON value, an NFF keyword, an OBJ `v`).
+    let mut text = "\u{feff}".as_bytes().to_vec();
+    text.extend_from_slice(TRIANGLE.as_bytes());
+    text.extend_from_slice(b"f 1 2 3\n");
+    for (e, (name, ..)) in every_reader_refuses("bom", &text).iter().zip(READERS) {
+        assert!(e.contains(name), "{e}");
+        assert!(
+            e.contains(": starts with a byte-order mark (U+FEFF); save it as UTF-8 without one"),
+            "{name}: {e}"
+        );
+    }
+}
+
+#[test]
+fn a_nul_byte_says_binary_and_where() {
+    let text = b"{\n  \"objects\": []\n}\0\n";
+    for (e, (name, ..)) in every_reader_refuses("nul", text).iter().zip(READERS) {
+        assert!(
+            e.contains(name) && e.contains("a binary file, not text: a NUL byte (line 3)"),
+            "{name}: {e}"
+        );
+    }
+}
+
+#[test]
+#[cfg(target_os = "linux")]
+fn a_binary_file_is_refused_from_its_first_bytes() {
+    // 1000 MB of NUL bytes (a sparse file: nothing is written), which a reader
+    // of the whole file would hold once or twice: refused in 256 MiB.
+    let dir = tempfile::tempdir().unwrap();
+    let scene = br#"{"objects": [{"mesh": {"file": "m.obj"}}]}"#;
+    std::fs::write(dir.path().join("s.json"), scene).unwrap();
+    for name in ["m.obj", "z.nff", "z.json"] {
+        std::fs::File::create(dir.path().join(name))
+            .unwrap()
+            .set_len(1_000_000_000)
+            .unwrap();
+    }
+    for (file, args) in [
+        ("m.obj", ["render", "s.json", "-o", "o.png"]),
+        ("z.nff", ["render", "z.nff", "-o", "o.png"]),
+        ("z.json", ["render", "z.json", "-o", "o.png"]),
+    ] {
+        let (code, err, seconds) = crate::common::within_memory(dir.path(), 256, &args);
+        assert_eq!(code, Some(1), "{file}: {err}");
+        assert_eq!(err.lines().count(), 1, "{file}: {err}");
+        assert!(
+            err.contains(&format!(
+                "{file}: a binary file, not text: a NUL byte (line 1)"
+            )),
+            "{file}: {err}"
+        );
+        assert!(seconds < 2.0, "{file}: {seconds} s");
+    }
+}
 
 #[test]
 fn a_long_word_is_quoted_short_by_every_reader() {
