@@ -55,14 +55,24 @@ pub fn parse(bytes: &[u8], file: &str, smooth: bool) -> Result<Mesh, ObjError> {
     if let Some(not_text) = input::not_text(bytes) {
         return Err(error(None, not_text.to_string()));
     }
-    let models = read_models(bytes).map_err(|(line, message)| error(line, message))?;
-    if let Some(line) = first_out_of_range(bytes) {
-        return Err(error(
-            Some(line),
-            format!("a coordinate is not a finite number within ±{MAX_COORDINATE:e}"),
-        ));
+    // tobj stops at the first line it cannot parse, but takes faces it drops
+    // or cannot use and finds a bad index only where a group ends: the faces
+    // are checked here, and the first problem in the file is the one named.
+    let face = first_bad_face(bytes);
+    let models = match read_models(bytes) {
+        Err((line, _)) if face.as_ref().is_some_and(|f| f.0 <= line) => None,
+        Err((line, message)) => return Err(error(Some(line), message)),
+        Ok(models) => Some(models),
+    };
+    let coordinate = first_out_of_range(bytes).map(|line| {
+        let message = format!("a coordinate is not a finite number within ±{MAX_COORDINATE:e}");
+        (line, message)
+    });
+    let first = [face, coordinate].into_iter().flatten().min_by_key(|p| p.0);
+    if let Some((line, message)) = first {
+        return Err(error(Some(line), message));
     }
-    let mesh = join_models(&models, smooth);
+    let mesh = join_models(&models.unwrap_or_default(), smooth);
     if mesh.faces.is_empty() {
         return Err(error(None, "has no faces (no `f` lines)".to_owned()));
     }
@@ -74,8 +84,8 @@ fn lines_in(bytes: &[u8]) -> usize {
 }
 
 /// tobj's models (polygons split into triangles, points and lines dropped), or
-/// the line of the first error and what it is.
-fn read_models(bytes: &[u8]) -> Result<Vec<tobj::Model>, (Option<usize>, String)> {
+/// the line tobj stopped at and what it said.
+fn read_models(bytes: &[u8]) -> Result<Vec<tobj::Model>, (usize, String)> {
     let options = tobj::LoadOptions {
         triangulate: true,
         ignore_points: true,
@@ -86,17 +96,9 @@ fn read_models(bytes: &[u8]) -> Result<Vec<tobj::Model>, (Option<usize>, String)
     let loaded = tobj::load_obj_buf(&mut reader, &options, |_| {
         Ok((Vec::new(), Default::default()))
     });
-    loaded.map(|(models, _)| models).map_err(|e| {
-        // tobj stops at the line it could not parse; errors found when a group
-        // ends (an index out of range) are searched for.
-        let line = match e {
-            tobj::LoadError::FaceVertexOutOfBounds
-            | tobj::LoadError::FaceNormalOutOfBounds
-            | tobj::LoadError::FaceTexCoordOutOfBounds => first_bad_face(bytes),
-            _ => Some(lines_in(&bytes[..reader.pos]).max(1)),
-        };
-        (line, e.to_string())
-    })
+    loaded
+        .map(|(models, _)| models)
+        .map_err(|e| (lines_in(&bytes[..reader.pos]).max(1), e.to_string()))
 }
 
 /// All models as one mesh; with `smooth`, its vertex normals (unit length) when
@@ -184,23 +186,51 @@ fn first_out_of_range(bytes: &[u8]) -> Option<usize> {
     })
 }
 
-/// The first face that names a vertex, texture coordinate or normal not defined
-/// in the file.
-fn first_bad_face(bytes: &[u8]) -> Option<usize> {
+/// The first face raytree cannot use, and why: one of fewer than 3
+/// vertices (tobj would drop it, or stop at the end of the file), or one that
+/// names a vertex, texture coordinate or normal the file does not define
+/// (tobj checks a texture coordinate or a normal only if the file has some).
+/// A negative index counts back from the line before the face.
+fn first_bad_face(bytes: &[u8]) -> Option<(usize, String)> {
     let count = |k: &str| statements(bytes).filter(|(_, key, _)| *key == k).count() as i64;
-    let (v, vt, vn) = (count("v"), count("vt"), count("vn"));
-    statements(bytes).find_map(|(line, key, fields)| {
-        let out = |i: &str, n: i64| i.parse::<i64>().is_ok_and(|i| i == 0 || i > n || i < -n);
-        let bad = key == "f"
-            && fields.iter().any(|f| {
-                let mut parts = f.split('/');
-                let p = parts.next().unwrap_or("");
-                let t = parts.next().unwrap_or("");
-                let n = parts.next().unwrap_or("");
-                out(p, v) || (!t.is_empty() && out(t, vt)) || (!n.is_empty() && out(n, vn))
-            });
-        bad.then_some(line)
-    })
+    let total = [count("v"), count("vt"), count("vn")];
+    let mut before = [0i64; 3];
+    const KINDS: [(&str, &str); 3] = [("vertex", "v"), ("texcoord", "vt"), ("normal", "vn")];
+    for (line, key, fields) in statements(bytes) {
+        if let Some(k) = KINDS.iter().position(|(_, kw)| *kw == key) {
+            before[k] += 1;
+        }
+        if key != "f" {
+            continue;
+        }
+        if fields.len() < 3 {
+            let message = format!("a face needs at least 3 vertices, got {}", fields.len());
+            return Some((line, message));
+        }
+        for field in &fields {
+            for (k, part) in field.split('/').take(3).enumerate() {
+                // An unparsable index is tobj's to name; a missing texture
+                // coordinate or normal (`1//2`, `1`) is allowed.
+                let Ok(i) = part.parse::<i64>() else { continue };
+                if (1..=total[k]).contains(&i) || (-before[k]..=-1).contains(&i) {
+                    continue;
+                }
+                let (what, kw) = KINDS[k];
+                let (n, place) = match i < 0 {
+                    true => (before[k], "before this face"),
+                    false => (total[k], "in the file"),
+                };
+                let lines = match n {
+                    0 => format!("no `{kw}` lines"),
+                    1 => format!("1 `{kw}` line"),
+                    n => format!("{n} `{kw}` lines"),
+                };
+                let message = format!("face {what} index out of bounds: {i} ({lines} {place})");
+                return Some((line, message));
+            }
+        }
+    }
+    None
 }
 
 #[cfg(test)]
@@ -249,7 +279,7 @@ mod tests {
             ),
             (
                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 9\n",
-                "bad.obj:4: face vertex index out of bounds",
+                "bad.obj:4: face vertex index out of bounds: 9 (3 `v` lines in the file)",
             ),
             (
                 "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 a\n",

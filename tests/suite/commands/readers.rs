@@ -1,10 +1,12 @@
 //! What every reader refuses the same way, beside each reader's own cases
 //! (`cli.rs` for OBJ meshes, `nff.rs`, `trace_files.rs`, `learner.rs`): a
-//! file that is not text (a byte-order mark, a NUL byte: refused from its
-//! first bytes, within a small memory), and a long word of the input quoted
-//! short.
+//! face OBJ's parser would drop or leave unchecked, a file that is not text
+//! (a byte-order mark, a NUL byte: refused from its first bytes, within a
+//! small memory), and a long word of the input quoted short.
 
 use std::path::Path;
+
+use raytree::scene::obj;
 
 use crate::common::{refused, refused_with};
 
@@ -22,6 +24,62 @@ fn mesh_refused(name: &str, text: &[u8]) -> String {
 }
 
 const TRIANGLE: &str = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+
+#[test]
+fn every_obj_face_is_checked_even_where_tobj_does_not() {
+    let cases = [
+        (
+            "texcoord-without-vt",
+            "f 1/5 2/5 3/5\n",
+            "m.obj:4: face texcoord index out of bounds: 5 (no `vt` lines in the file)",
+        ),
+        (
+            "normal-without-vn",
+            "f 1//7 2//7 3//7\n",
+            "m.obj:4: face normal index out of bounds: 7 (no `vn` lines in the file)",
+        ),
+        (
+            "relative-before-the-start",
+            "f -1 -2 -4\n",
+            "m.obj:4: face vertex index out of bounds: -4 (3 `v` lines before this face)",
+        ),
+        (
+            "two-vertices-only",
+            "f 1 2\n",
+            "m.obj:4: a face needs at least 3 vertices, got 2",
+        ),
+        (
+            "two-vertices-among-good-faces",
+            "f 1 2 3\nf 1 2\nf 3 2 1\n",
+            "m.obj:5: a face needs at least 3 vertices, got 2",
+        ),
+        (
+            "no-vertices",
+            "f\nf 1 2 3\n",
+            "m.obj:4: a face needs at least 3 vertices, got 0",
+        ),
+        // The first problem in the file is the one named, tobj's or ours.
+        (
+            "parse-error-first",
+            "vn x 0 1\nf 1 2\n",
+            "m.obj:4: normal parse error",
+        ),
+    ];
+    for (name, faces, expected) in cases {
+        let e = mesh_refused(name, format!("{TRIANGLE}{faces}").as_bytes());
+        assert!(e.starts_with(&format!("error: {expected}")), "{name}: {e}");
+    }
+    // What the checks allow: relative indices, and indices of vt and vn lines
+    // that exist, before or after the face.
+    for good in [
+        "f -3 -2 -1\n",
+        "vt 0 0\nvn 0 0 1\nf 1/1/1 2/1/1 3/1/1\n",
+        "f 1//1 2//1 3//1\nvn 0 0 1\n",
+    ] {
+        let mesh = obj::parse(format!("{TRIANGLE}{good}").as_bytes(), "m.obj", true);
+        assert!(mesh.is_ok_and(|m| m.faces.len() == 1), "{good:?}");
+    }
+}
 
 /// The error line of `raytree ARGS` run in a folder holding `file` (named
 /// `name`, `text`) and the shipped Whitted scene as `s.json`, exit `code`.
