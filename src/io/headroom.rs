@@ -10,9 +10,11 @@
 //! The memory to be had is the smaller of the system's available memory
 //! (`MemAvailable` in `/proc/meminfo`) and what the address-space limit
 //! (`ulimit -v`, in `/proc/self/limits`) leaves above what the process maps
-//! already. Where neither can be read (not Linux), nothing is refused.
+//! already. Where neither can be read (not Linux), nothing is refused. What
+//! the render's threads map later (stacks, allocator arenas) is not counted:
+//! under a tight `ulimit -v` a render can still fail after the check.
 
-use crate::io::input::bytes_in_words;
+use crate::io::sizes::bytes_in_words;
 
 /// Memory a scene's JSON takes at the peak of loading and building, beyond
 /// its text, per `{` in it: each object has two (itself and its shape), and
@@ -59,10 +61,6 @@ pub fn check(need: u64, available: Option<u64>) -> Result<(), String> {
     }
 }
 
-/// Address space kept aside, under an address-space limit, for what the
-/// render's threads map after the scene is loaded.
-const THREADS_ADDRESS_SPACE: u64 = 256 << 20;
-
 /// The memory this process can still have, in bytes, if the system says.
 pub fn available() -> Option<u64> {
     let read = |path: &str| std::fs::read_to_string(path).ok();
@@ -71,13 +69,7 @@ pub fn available() -> Option<u64> {
     let mapped = read("/proc/self/status")
         .and_then(|t| kib_field(&t, "VmSize:"))
         .unwrap_or(0);
-    // Worker threads map address space of their own later (a stack, and an
-    // allocator arena of up to 64 MiB each), which the limit counts too.
-    let later = THREADS_ADDRESS_SPACE;
-    match (
-        system,
-        limit.map(|l| l.saturating_sub(mapped).saturating_sub(later)),
-    ) {
+    match (system, limit.map(|l| l.saturating_sub(mapped))) {
         (Some(a), Some(b)) => Some(a.min(b)),
         (a, b) => a.or(b),
     }

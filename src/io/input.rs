@@ -8,6 +8,9 @@
 use std::io::Read;
 use std::path::Path;
 
+use crate::io::headroom;
+pub use crate::io::sizes::bytes_in_words;
+
 /// The largest scene, OBJ or trace file raytree reads: 1 GiB, far above any
 /// real scene (the 2,000-sphere scene is 0.2 MB, a million generated spheres
 /// about 90 MB) and below what would exhaust a small machine's memory.
@@ -24,6 +27,7 @@ const SNIFF_BYTES: u64 = 64 << 10;
 /// …`, `it is … bytes, more than …`); the caller names the file.
 pub fn read_bytes(path: &Path, limit: u64) -> Result<Vec<u8>, String> {
     let (mut file, len) = open(path, limit)?;
+    headroom::check(len, headroom::available())?;
     read_rest(&mut file, Vec::with_capacity(len as usize), limit)
 }
 
@@ -39,6 +43,8 @@ pub fn read_text(path: &Path, limit: u64) -> Result<String, String> {
     if let Some(not) = check_text(&bytes, true) {
         return Err(not.to_string());
     }
+    // Text, as far as it shows: then whether it fits at all.
+    headroom::check(len, headroom::available())?;
     bytes.reserve((len as usize).saturating_sub(bytes.len()));
     let bytes = read_rest(&mut file, bytes, limit)?;
     match check_text(&bytes, false) {
@@ -144,22 +150,6 @@ fn too_big(size: u64, limit: u64) -> String {
     )
 }
 
-/// A size as people say it: `512 bytes`, `3.4 MB`, `1.1 GB` (powers of 1000),
-/// or `1 GiB` for an exact power of 1024.
-pub fn bytes_in_words(n: u64) -> String {
-    const GIB: u64 = 1 << 30;
-    if n >= GIB && n.is_multiple_of(GIB) {
-        return format!("{} GiB", n / GIB);
-    }
-    let x = n as f64;
-    match n {
-        0..1_000 => format!("{n} bytes"),
-        1_000..1_000_000 => format!("{:.1} kB", x / 1e3),
-        1_000_000..1_000_000_000 => format!("{:.1} MB", x / 1e6),
-        _ => format!("{:.1} GB", x / 1e9),
-    }
-}
-
 /// The OS's reason in words, without Rust's "(os error N)".
 pub fn reason(e: &std::io::Error) -> String {
     match e.kind() {
@@ -238,13 +228,5 @@ mod tests {
             read_text(&file, MAX_INPUT_BYTES).unwrap_err(),
             format!("a binary file, not text: a NUL byte (line {line})")
         );
-    }
-
-    #[test]
-    fn sizes_in_words() {
-        assert_eq!(bytes_in_words(999), "999 bytes");
-        assert_eq!(bytes_in_words(3_400_000), "3.4 MB");
-        assert_eq!(bytes_in_words(1 << 30), "1 GiB");
-        assert_eq!(bytes_in_words(11_000_000_000), "11.0 GB");
     }
 }

@@ -60,14 +60,11 @@ pub fn read(path: &Path) -> Result<String, SceneError> {
         reason,
         file: path.display().to_string(),
     };
-    let available = headroom::available();
-    if let Ok(meta) = std::fs::metadata(path) {
-        headroom::check(meta.len(), available).map_err(error)?;
-    }
     let text = input::read_text(path, MAX_INPUT_BYTES).map_err(error)?;
     // An NFF file's words are capped well below what memory holds.
     if !nff::is_nff(&path.display().to_string()) {
-        headroom::check(headroom::json_scene_need(text.as_bytes()), available).map_err(error)?;
+        let need = headroom::json_scene_need(text.as_bytes());
+        headroom::check(need, headroom::available()).map_err(error)?;
     }
     Ok(text)
 }

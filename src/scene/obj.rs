@@ -36,12 +36,8 @@ pub fn load(path: &Path, smooth: bool) -> Result<Mesh, ObjError> {
         line: None,
         message,
     };
-    let available = headroom::available();
-    if let Ok(meta) = std::fs::metadata(path) {
-        headroom::check(meta.len(), available).map_err(error)?;
-    }
     let text = input::read_text(path, MAX_INPUT_BYTES).map_err(error)?;
-    headroom::check(headroom::obj_need(text.as_bytes()), available).map_err(error)?;
+    headroom::check(headroom::obj_need(text.as_bytes()), headroom::available()).map_err(error)?;
     parse(text.as_bytes(), &file, smooth)
 }
 

@@ -21,11 +21,9 @@ use crate::tree::trace_check;
 pub fn read(path: &Path) -> anyhow::Result<TraceDocument> {
     let file = path.display();
     let refused = |reason| anyhow::anyhow!("cannot read {file}: {reason}");
-    if let Ok(meta) = std::fs::metadata(path) {
-        let need = meta.len().saturating_mul(headroom::TRACE_PER_BYTE);
-        headroom::check(need, headroom::available()).map_err(refused)?;
-    }
     let text = input::read_text(path, MAX_INPUT_BYTES).map_err(refused)?;
+    let need = (text.len() as u64).saturating_mul(headroom::TRACE_PER_BYTE);
+    headroom::check(need, headroom::available()).map_err(refused)?;
     parse(&text).map_err(|e| anyhow::anyhow!("{file}:{e}"))
 }
 
