@@ -85,6 +85,12 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         // would break the one-line message or reach the terminal, and ten
         // million characters of it would fill the terminal.
         let message = quote::shorten_serde(&strict::in_users_words(message));
+        // As the learner-trace reader says it.
+        let message = if e.is_eof() {
+            format!("the file ends early: {message}")
+        } else {
+            message
+        };
         let message = if path.is_empty() {
             message
         } else {
@@ -125,7 +131,9 @@ fn field_path(path: &serde_path_to_error::Path) -> String {
                 }
                 out.push_str(&quote::quote(key, ""));
             }
-            Segment::Unknown => out.push_str(if out.is_empty() { "?" } else { ".?" }),
+            // Where the key is not read yet (the file ends first), the path
+            // stops at what is known.
+            Segment::Unknown => {}
         }
     }
     out

@@ -59,10 +59,12 @@ fn syntax(text: &str, e: &serde_json::Error) -> String {
     } else {
         message.to_owned()
     };
+    // Columns count from 1, as the scene reader's do (serde gives 0 at the
+    // start of a line the file ends on).
     format!(
         "{}:{}: not JSON: {}",
         e.line(),
-        e.column(),
+        e.column().max(1),
         printable(&message)
     )
 }

@@ -565,3 +565,36 @@ fn a_mesh_must_stay_in_the_scenes_folder() {
     assert_eq!(code, Some(1), "{e}");
     assert!(e.contains("no such file"), "{e}");
 }
+
+/// A file that ends early is said the same way by the scene reader and the
+/// learner-trace reader: where (columns from 1), the field as far as it was
+/// read (no `?` for a key not read yet), and that the file ends early.
+#[test]
+fn a_file_that_ends_early_is_said_alike_by_both_readers() {
+    let cut = b"{\"camera\": {\n";
+    let scene = crate::common::refused(
+        "ends-early-scene",
+        &[("bad.json", cut)],
+        &["render", "bad.json"],
+    );
+    assert_eq!(
+        scene.trim(),
+        "error: bad.json:2:1: camera: the file ends early: EOF while parsing an object"
+    );
+    let whitted =
+        std::fs::read(std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json"))
+            .unwrap();
+    let learner = crate::common::refused_with(
+        2,
+        "ends-early-learner",
+        &[
+            ("w.json", &whitted),
+            ("bad.json", b"{\"format\": \"raytree-learner-trace\",\n"),
+        ],
+        &["check", "w.json", "--pixel", "1,1", "bad.json"],
+    );
+    assert_eq!(
+        learner.trim(),
+        "error: bad.json:2:1: not JSON: the file ends early: EOF while parsing a value"
+    );
+}

@@ -682,7 +682,7 @@ fn bad_learner_files_are_one_line_and_exit_2() {
     nested.push_str(&format!("null{}}}", "}".repeat(70)));
     let cases: Vec<(&str, String, &str)> = vec![
         ("truncated", good[..good.len() / 2].to_owned(), ":"),
-        ("empty", String::new(), "1:0"),
+        ("empty", String::new(), "1:1: not JSON: the file ends early"),
         (
             "wrong-type",
             good.replacen("\"t\": ", "\"t\": \"x\", \"_\": ", 1),
