@@ -256,15 +256,17 @@ const BAR: f64 = 22.0;
 impl Strip {
     fn new(image: &AovImage, caption: &str, width: u32) -> Self {
         let range = Range::of(image);
+        let mut unnamed = 0;
         let mut entries: Vec<(Swatch, String)> = match &image.key {
             Key::Categories(names) => {
                 let colors = category_colors(image.aov, names.len());
-                let used = used_categories(image, names.len());
+                let (named, left) = named_categories(image, names.len());
+                unnamed = left;
                 names
                     .iter()
                     .zip(colors)
-                    .zip(used)
-                    .filter(|(_, used)| *used)
+                    .zip(named)
+                    .filter(|(_, named)| *named)
                     .map(|((n, c), _)| (Swatch::Solid(c), n.clone()))
                     .collect()
             }
@@ -289,6 +291,11 @@ impl Strip {
         lines.extend(wrap(caption));
         if !image.note.is_empty() {
             lines.extend(wrap(image.note));
+        }
+        if unnamed > 0 {
+            lines.extend(wrap(&format!(
+                "The key names the {MOST_NAMED} seen most; {unnamed} more are seen, and the colors repeat (`raytree trace --pixel X,Y` names any one)."
+            )));
         }
         Strip {
             lines,
@@ -348,16 +355,40 @@ impl Strip {
 }
 
 /// Which of `n` categories occur in the image: the key lists only those.
-fn used_categories(image: &AovImage, n: usize) -> Vec<bool> {
-    let mut used = vec![false; n];
+/// The pixels of each category, of `n`.
+fn category_pixels(image: &AovImage, n: usize) -> Vec<usize> {
+    let mut count = vec![0; n];
     for v in &image.values {
         if let Value::Category(k) = v
-            && let Some(u) = used.get_mut(*k as usize)
+            && let Some(c) = count.get_mut(*k as usize)
         {
-            *u = true;
+            *c += 1;
         }
     }
-    used
+    count
+}
+
+/// The most categories a key names. Past it (the objects of a big scene:
+/// the SPD's tetra has 4,096 polygons) a key of every one ran to 14,902
+/// pixels high, and its 8 colors repeat anyway; it names those seen most.
+const MOST_NAMED: usize = 16;
+
+/// Which categories the key names: those seen, or of more than
+/// [`MOST_NAMED`], the ones covering the most pixels (in their order); and
+/// how many seen are left unnamed.
+fn named_categories(image: &AovImage, n: usize) -> (Vec<bool>, usize) {
+    let count = category_pixels(image, n);
+    let mut seen: Vec<usize> = (0..n).filter(|&k| count[k] > 0).collect();
+    let left = seen.len().saturating_sub(MOST_NAMED);
+    if left > 0 {
+        seen.sort_by_key(|&k| std::cmp::Reverse(count[k]));
+        seen.truncate(MOST_NAMED);
+    }
+    let mut named = vec![false; n];
+    for k in seen {
+        named[k] = true;
+    }
+    (named, left)
 }
 
 /// Lays swatch entries out left to right, wrapping within `width`: each

@@ -299,3 +299,44 @@ fn the_inspectors_overlays_are_the_aovs_on_every_pixel() {
         }
     }
 }
+
+/// The object view of a scene of many objects names only those seen most,
+/// and says how many it leaves out: a key of every object seen ran to 1,570
+/// pixels high under a 120-pixel image of 400 spheres (colors repeating).
+#[test]
+fn the_object_key_of_a_big_scene_names_those_seen_most() {
+    let mut text = String::from(
+        r#"{"camera": {"eye": [0, 0, 30], "fov": 60}, "lights": [{"position": [0, 10, 30]}], "objects": ["#,
+    );
+    for i in 0..400 {
+        let (x, y) = (f64::from(i % 20) - 9.5, f64::from(i / 20) - 9.5);
+        text.push_str(&format!(
+            r#"{}{{"name": "ball{i}", "sphere": {{"center": [{x}, {y}, 0], "radius": 0.45}}}}"#,
+            if i == 0 { "" } else { ", " }
+        ));
+    }
+    text.push_str("]}");
+    let scene = small(
+        raytree::scene::loader::parse(&text, "many.json").unwrap(),
+        160,
+        120,
+        1,
+    );
+    let image = aov(&scene, "object");
+    let seen: std::collections::BTreeSet<u32> = image
+        .values
+        .iter()
+        .filter_map(|v| match v {
+            Value::Category(k) => Some(*k),
+            _ => None,
+        })
+        .collect();
+    assert!(seen.len() > 100, "{} objects seen", seen.len());
+    let fig = aov_figure::draw(&image, "many.json · 160×120").unwrap();
+    let (_, height) = fig.size();
+    assert!(
+        height < 120 + 300,
+        "the key is {} pixels high",
+        height - 120
+    );
+}
