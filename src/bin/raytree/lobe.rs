@@ -17,9 +17,24 @@ pub struct Args {
     /// Output figure (.png).
     #[arg(short, long, value_name = "OUT.png", default_value = "lobe.png")]
     output: PathBuf,
-    /// Figure size in pixels.
-    #[arg(long, value_name = "WxH", default_value = "1000x640", value_parser = parse_size)]
+    /// Figure size in pixels, at least 800x520 (smaller, the legend covers the curves and the labels).
+    #[arg(long, value_name = "WxH", default_value = "1000x640", value_parser = parse_lobe_size)]
     size: (u32, u32),
+}
+
+/// The smallest lobe figure whose title, legend and axis labels all fit: at
+/// 700x450 the legend covered the vertical axis's label.
+const SMALLEST: (u32, u32) = (800, 520);
+
+fn parse_lobe_size(s: &str) -> Result<(u32, u32), String> {
+    let (w, h) = parse_size(s)?;
+    if w < SMALLEST.0 || h < SMALLEST.1 {
+        return Err(format!(
+            "{w}x{h} is too small for the lobe's title, legend and labels: at least {}x{}",
+            SMALLEST.0, SMALLEST.1
+        ));
+    }
+    Ok((w, h))
 }
 
 /// A shininess: a positive, finite number.

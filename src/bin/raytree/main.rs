@@ -46,7 +46,7 @@ enum Command {
     Render(render::Args),
     /// Trace one pixel (or one ray) and print every ray it spawns, with every number.
     Trace(trace::Args),
-    /// Draw one pixel's (or one ray's) ray tree over the scene as a 2D figure (PNG).
+    /// Draw one pixel's (or one ray's) ray tree over the scene as a 2D figure (PNG, or SVG by the name).
     Diagram(diagram::Args),
     /// Explore a scene in the terminal: pick a pixel, walk its ray tree step by step.
     Inspect(inspect::Args),

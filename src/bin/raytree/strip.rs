@@ -91,9 +91,10 @@ pub fn run(args: &Args) -> Result<()> {
     pending.commit(&figure.png())?;
     if !args.quiet {
         output::note(&format!(
-            "wrote {} ({} frames of {}×{})",
+            "wrote {} ({} frame{} of {}×{})",
             out.display(),
             strip.len(),
+            if strip.len() == 1 { "" } else { "s" },
             s.width,
             s.height
         ))?;

@@ -17,6 +17,14 @@ fn lobe_refuses_a_bad_shininess_and_too_many_curves() {
     assert!(e.contains("at most three"), "{e}");
     let e = refused_with(2, "lobe-svg", &[], &["lobe", "-o", "lobe.svg"]);
     assert!(e.contains("lobe.svg"), "{e}");
+    // Smaller than this, the legend covered the axis's label (a review, 2026-11-26).
+    let e = refused_with(2, "lobe-small", &[], &["lobe", "--size", "700x450"]);
+    assert!(
+        e.contains(
+            "700x450 is too small for the lobe's title, legend and labels: at least 800x520"
+        ),
+        "{e}"
+    );
 }
 
 #[test]

@@ -165,5 +165,21 @@ fn one_side_given_keeps_the_shape_and_the_default_name_is_tidy() {
         stdout.lines().next(),
         Some("lights[0].position[1] = 5: the first frame")
     );
+    // One value: one frame, said so.
+    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args([
+            "strip",
+            "--vary",
+            "max_depth=3",
+            "--width",
+            "64",
+            "-o",
+            "one.png",
+        ])
+        .current_dir(&dir)
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.trim_end(), "wrote one.png (1 frame of 64×48)");
     std::fs::remove_dir_all(&dir).unwrap();
 }
