@@ -166,8 +166,8 @@ fn one_side_given_keeps_the_shape_and_the_default_name_is_tidy() {
         Some("lights[0].position[1] = 5: the first frame")
     );
     // One value: one frame, said so.
-    let out = Command::new(env!("CARGO_BIN_EXE_raytree"))
-        .args([
+    let out = crate::commands::cli::raytree(
+        &[
             "strip",
             "--vary",
             "max_depth=3",
@@ -175,10 +175,9 @@ fn one_side_given_keeps_the_shape_and_the_default_name_is_tidy() {
             "64",
             "-o",
             "one.png",
-        ])
-        .current_dir(&dir)
-        .output()
-        .unwrap();
+        ],
+        &dir,
+    );
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(stderr.trim_end(), "wrote one.png (1 frame of 64×48)");
     std::fs::remove_dir_all(&dir).unwrap();

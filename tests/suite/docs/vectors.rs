@@ -150,13 +150,7 @@ fn vectors_never_write_over_their_inputs() {
     ] {
         copy(f);
     }
-    let run = |args: &[&str]| {
-        std::process::Command::new(env!("CARGO_BIN_EXE_raytree"))
-            .args(args)
-            .current_dir(dir.path())
-            .output()
-            .unwrap()
-    };
+    let run = |args: &[&str]| crate::commands::cli::raytree(args, dir.path());
     for (target, output) in [
         ("scenes/whitted.json", "scenes/whitted.json"),
         ("scenes/gaspra.json", "scenes/meshes/gaspra.obj"),
