@@ -72,7 +72,25 @@ pub fn run(args: &Args) -> Result<ExitCode> {
     let (Some(pixel), Some(learner)) = (args.pixel, &args.learner) else {
         anyhow::bail!("give --pixel X,Y and the learner's trace, or --image YOURS.png");
     };
-    let learner = read::read(learner).map_err(anyhow::Error::msg)?;
+    let (x, y) = pixel;
+    let (width, height) = (scene.settings.width, scene.settings.height);
+    if x >= width || y >= height {
+        return Err(usage(format_args!(
+            "--pixel {x},{y} is outside the {width}×{height} image (x is 0 to {}, y is 0 to {})",
+            width - 1,
+            height - 1
+        )));
+    }
+    let path = learner;
+    let learner = read::read(path).map_err(anyhow::Error::msg)?;
+    if let Some([lx, ly]) = learner.pixel
+        && (lx, ly) != pixel
+    {
+        anyhow::bail!(
+            "{}: the trace is of pixel {lx},{ly}, and --pixel asks for {x},{y}",
+            path.display()
+        );
+    }
     let report = report::check(&scene, source, pixel, &learner).map_err(anyhow::Error::msg)?;
     let text = if args.json {
         report.json()

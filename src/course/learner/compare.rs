@@ -41,7 +41,7 @@ pub struct Difference {
 pub fn compare(ctx: &Context, learner: &LearnerTrace) -> Vec<Difference> {
     let mut out = Vec::new();
     let mut walk = Walk { ctx, out: &mut out };
-    walk.ray(&learner.ray, 0, "primary");
+    walk.ray(&learner.ray, 0, "primary", true);
     out.sort_by_key(|d| d.step);
     out
 }
@@ -76,8 +76,17 @@ impl Walk<'_, '_> {
 
     /// Compares the learner's `l` with node `i`; returns what the learner's
     /// branches that raytree cut off add to `l`'s color, so that its color is
-    /// compared with ours plus that.
-    fn ray(&mut self, l: &LearnerRay, i: usize, path: &str) -> DVec3 {
+    /// compared with ours plus that. `upstream`: every ray and hit before this
+    /// ray agreed.
+    ///
+    /// A diagnosis recomputes the learner's number from raytree's inputs with
+    /// one mistake, so it is only sought while those inputs are the learner's
+    /// too: once a ray's origin, direction or hit differs, what follows on it
+    /// (its shadow rays, its colors, its children) is a consequence, listed
+    /// without a diagnosis. (A tracer with its rows flipped hit the floor where
+    /// raytree hit the mirror, and its shadow rays, blocked by the mirror, were
+    /// taken for acne.)
+    fn ray(&mut self, l: &LearnerRay, i: usize, path: &str, upstream: bool) -> DVec3 {
         let ctx = self.ctx;
         let tree = ctx.tree();
         let node = &tree.nodes[i];
@@ -87,7 +96,8 @@ impl Walk<'_, '_> {
         } else {
             ctx.step(i, StepKind::Spawn)
         };
-        if !same_point(l.origin, node.origin, node.origin, tol) {
+        let origin_agrees = same_point(l.origin, node.origin, node.origin, tol);
+        if !origin_agrees {
             self.push(
                 path,
                 "origin",
@@ -98,8 +108,11 @@ impl Walk<'_, '_> {
                 true,
             );
         }
-        if !same_direction(l.direction, node.direction, tol) {
-            let why = diagnose::direction(ctx, l, i);
+        let direction_agrees = same_direction(l.direction, node.direction, tol);
+        if !direction_agrees {
+            let why = (upstream && origin_agrees)
+                .then(|| diagnose::direction(ctx, l, i))
+                .flatten();
             self.push(
                 path,
                 "direction (as a unit vector)",
@@ -110,13 +123,14 @@ impl Walk<'_, '_> {
                 true,
             );
         }
-        self.hit(l, i, path, tol);
-        self.shadows(l, node, i, path, tol);
+        let ray_agrees = upstream && origin_agrees && direction_agrees;
+        let agrees = self.hit(l, i, path, tol, ray_agrees) && ray_agrees;
+        self.shadows(l, node, i, path, tol, agrees);
         let local_step = ctx.step(i, StepKind::Local);
         if let (Some(lc), Some(ours)) = (l.local, &node.local)
             && !same_color(lc, ours.total)
         {
-            let why = diagnose::local(ctx, l, i);
+            let why = agrees.then(|| diagnose::local(ctx, l, i)).flatten();
             self.push(
                 path,
                 "local color",
@@ -151,7 +165,9 @@ impl Walk<'_, '_> {
                 && node.hit.is_some()
                 && !same_color(k, DVec3::splat(ours_k))
             {
-                let why = diagnose::coefficient(ctx, i, refracted_direction(l));
+                let why = agrees
+                    .then(|| diagnose::coefficient(ctx, i, refracted_direction(l)))
+                    .flatten();
                 self.push(path, name, vec_words(k), num(ours_k), step, why, true);
             }
             let child_name = if kind == StepKind::Reflect {
@@ -164,7 +180,7 @@ impl Walk<'_, '_> {
                 (None | Some(None), None) => {}
                 (Some(Some(c)), Some(j)) => {
                     let depth = tree.nodes[j].depth;
-                    let sub = self.ray(c, j, &format!("{path} → {child_name} d{depth}"));
+                    let sub = self.ray(c, j, &format!("{path} → {child_name} d{depth}"), agrees);
                     extra += branch.as_ref().map_or(0.0, |b| b.coefficient) * sub;
                 }
                 (Some(None), Some(j)) => self.push(
@@ -178,7 +194,7 @@ impl Walk<'_, '_> {
                 ),
                 (None, Some(_)) => {}
                 (Some(Some(c)), None) => {
-                    extra += self.extra_branch(c, node, i, path, child_name, step)
+                    extra += self.extra_branch(c, node, i, path, child_name, step, agrees)
                 }
             }
         }
@@ -190,7 +206,7 @@ impl Walk<'_, '_> {
                 .as_ref()
                 .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
             if tir != ours {
-                let why = (!tir).then(|| diagnose::tir(ctx, i, refracted_direction(l)));
+                let why = (!tir && agrees).then(|| diagnose::tir(ctx, i, refracted_direction(l)));
                 let step = ctx.step(i, StepKind::Refract);
                 self.push(
                     path,
@@ -225,7 +241,8 @@ impl Walk<'_, '_> {
     /// A child the learner traced where raytree did not: tolerated (and said)
     /// when raytree stopped for its depth, its weight or a zero coefficient,
     /// a divergence after total internal reflection. Returns what it adds to
-    /// the parent's color.
+    /// the parent's color. `agrees`: the parent's rays and hit agreed.
+    #[allow(clippy::too_many_arguments)]
     fn extra_branch(
         &mut self,
         c: &LearnerRay,
@@ -234,6 +251,7 @@ impl Walk<'_, '_> {
         path: &str,
         child_name: &str,
         step: usize,
+        agrees: bool,
     ) -> DVec3 {
         let branch = if child_name == "reflected" {
             &node.reflected
@@ -253,7 +271,7 @@ impl Walk<'_, '_> {
             }
             Some(Branch::Traced) | None => ("raytree's ray missed: it has no children", true),
         };
-        let diagnosis = (outcome == Some(Branch::TotalInternalReflection))
+        let diagnosis = (outcome == Some(Branch::TotalInternalReflection) && agrees)
             .then(|| diagnose::tir(self.ctx, i, Some(c.direction)));
         self.push(
             &at,
@@ -272,10 +290,17 @@ impl Walk<'_, '_> {
         }
     }
 
-    fn hit(&mut self, l: &LearnerRay, i: usize, path: &str, tol: f64) {
+    /// Compares the learner's hit with raytree's, diagnosing a difference when
+    /// `diagnose` (the ray itself agreed); returns whether the hit agreed (or
+    /// was not given).
+    fn hit(&mut self, l: &LearnerRay, i: usize, path: &str, tol: f64, diagnose: bool) -> bool {
         let ctx = self.ctx;
         let node = &ctx.tree().nodes[i];
-        let Some(given) = &l.hit else { return };
+        let Some(given) = &l.hit else { return true };
+        let why = |f: fn(&Context, &LearnerRay, usize) -> Option<Diagnosis>| {
+            diagnose.then(|| f(ctx, l, i)).flatten()
+        };
+        let before = self.out.len();
         let step = ctx.step(
             i,
             if node.hit.is_some() {
@@ -285,32 +310,32 @@ impl Walk<'_, '_> {
             },
         );
         let (h, ours) = match (given, &node.hit) {
-            (None, None) => return,
+            (None, None) => return true,
             (Some(h), Some(ours)) => (h, ours),
             (None, Some(ours)) => {
-                let why = diagnose::hit(ctx, l, i);
+                let why = why(diagnose::hit);
                 let ours = format!(
                     "'{}' at distance {}",
                     ours.name,
                     num(ours.t * node.direction.length())
                 );
                 self.push(path, "hit", "missed".to_owned(), ours, step, why, true);
-                return;
+                return false;
             }
             (Some(h), None) => {
-                let why = diagnose::hit(ctx, l, i);
+                let why = why(diagnose::hit);
                 let what = h
                     .object
                     .as_deref()
                     .map_or("something".to_owned(), |o| format!("'{o}'"));
                 self.push(path, "hit", what, "missed".to_owned(), step, why, true);
-                return;
+                return false;
             }
         };
         if let Some(o) = &h.object
             && *o != ours.name
         {
-            let why = diagnose::hit(ctx, l, i);
+            let why = why(diagnose::hit);
             self.push(
                 path,
                 "hit.object",
@@ -320,12 +345,12 @@ impl Walk<'_, '_> {
                 why,
                 true,
             );
-            return;
+            return false;
         }
         if let Some(t) = h.t {
             let (dl, d) = (t * l.direction.length(), ours.t * node.direction.length());
             if (dl - d).abs() > tol * 1f64.max(d).max(node.origin.length()) {
-                let why = diagnose::hit(ctx, l, i);
+                let why = why(diagnose::hit);
                 self.push(
                     path,
                     "hit.t (as a distance, t·|direction|)",
@@ -353,7 +378,7 @@ impl Walk<'_, '_> {
         if let Some(n) = h.normal
             && !same_direction(n, ours.shading_normal, tol)
         {
-            let why = diagnose::normal(ctx, n, i);
+            let why = diagnose.then(|| diagnose::normal(ctx, n, i)).flatten();
             self.push(
                 path,
                 "hit.normal (as a unit vector)",
@@ -378,9 +403,21 @@ impl Walk<'_, '_> {
                 true,
             );
         }
+        self.out.len() == before
     }
 
-    fn shadows(&mut self, l: &LearnerRay, node: &RayNode, i: usize, path: &str, tol: f64) {
+    /// The shadow rays, diagnosed only when `agrees` (the ray and its hit
+    /// agreed, so the learner's shadow rays start where raytree's do).
+    #[allow(clippy::too_many_arguments)]
+    fn shadows(
+        &mut self,
+        l: &LearnerRay,
+        node: &RayNode,
+        i: usize,
+        path: &str,
+        tol: f64,
+        agrees: bool,
+    ) {
         let ctx = self.ctx;
         let (Some(list), Some(_)) = (&l.shadows, &node.hit) else {
             return;
@@ -420,7 +457,7 @@ impl Walk<'_, '_> {
                 ShadowOutcomeRecord::Reaches { .. } => None,
             };
             if s.blocked != ours_by.is_some() {
-                let why = diagnose::shadow(ctx, s, i, k);
+                let why = agrees.then(|| diagnose::shadow(ctx, s, i, k)).flatten();
                 let words = |b: Option<&str>| {
                     b.map_or("reaches the light".to_owned(), |o| {
                         format!("blocked by '{o}'")

@@ -662,10 +662,52 @@ fn the_command_answers_with_its_exit_status() {
     assert_eq!(v["format"], "raytree-check-report");
     assert_eq!(v["agree"], false);
     assert_eq!(v["first"]["diagnosis"]["id"], "far-root");
-    assert_eq!(
-        run(&["check", s, "--pixel", "1,1", f]).status.code(),
-        Some(2)
+    // A trace of another pixel, and a pixel off the image: bad input, said
+    // in one line naming the learner's file or the flag.
+    let other = run(&["check", s, "--pixel", "1,1", f]);
+    assert_eq!(other.status.code(), Some(2));
+    let said = String::from_utf8_lossy(&other.stderr);
+    assert!(
+        said.contains(f) && said.contains("pixel 416,209") && said.lines().count() == 1,
+        "{said}"
     );
+    let off = run(&["check", s, "--pixel", "416,2090", f]);
+    assert_eq!(off.status.code(), Some(2));
+    let said = String::from_utf8_lossy(&off.stderr);
+    assert!(
+        said.contains("--pixel 416,2090 is outside the 640×480 image"),
+        "{said}"
+    );
+}
+
+/// A tracer with its rows flipped is diagnosed once, at its primary ray;
+/// what follows from that ray (another object hit, its shadow rays, its
+/// colors) is listed as consequences, each without a diagnosis of its own:
+/// those are recomputed from raytree's inputs, which are no longer the
+/// learner's. (Its shadow rays, blocked by the mirror raytree's ray hit,
+/// were once taken for acne.)
+#[test]
+fn a_flipped_tracer_s_consequences_carry_no_diagnosis() {
+    let (scene, src) = load("whitted.json");
+    let mut consequences = 0;
+    for (x, y) in [(190, 175), (416, 209), (100, 60), (500, 400), (300, 330)] {
+        let flipped = (x, scene.settings.height - 1 - y);
+        let mut m = reduce::reduce(&report::ours(&scene, src.clone(), flipped).unwrap()).unwrap();
+        m.pixel = None;
+        let report = check(&scene, &src, (x, y), &m);
+        first_is(&report, "primary", "direction", "rows-flipped");
+        for d in report.divergences().skip(1) {
+            consequences += 1;
+            assert!(
+                d.diagnosis.is_none(),
+                "pixel {x},{y}: {} {} diagnosed\n{}",
+                d.ray,
+                d.quantity,
+                report.text()
+            );
+        }
+    }
+    assert!(consequences > 10, "{consequences} consequences");
 }
 
 #[test]
