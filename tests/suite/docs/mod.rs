@@ -6,4 +6,5 @@ mod book;
 mod browser;
 mod guide;
 mod readme;
+mod structures;
 mod vectors;
