@@ -3,9 +3,13 @@
 //! overlaps no other label, no mark that must stay visible (dots, arrowheads,
 //! the legend) and stays inside the frame, preferring spots that cross the
 //! fewest drawn lines; failing that it moves out with a leader line, and an
-//! optional label is left out. A greedy pass in priority order, in the manner
-//! of the point-feature labelling rules cartographers use (Imhof; Christensen,
-//! Marks & Shieber 1995), small enough to read.
+//! optional label is left out. A leader never runs through another label,
+//! and no label sits on another's leader: a line through text is as
+//! unreadable as two texts on top of each other. A label with no such spot
+//! at all is left out, and [`place_all`] says which. A greedy pass in
+//! priority order, in the manner of the point-feature labelling rules
+//! cartographers use (Imhof; Christensen, Marks & Shieber 1995), small
+//! enough to read.
 
 use glam::DVec2;
 
@@ -74,7 +78,7 @@ pub enum Target {
 /// A label to place.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Label {
-    /// The text.
+    /// The text: a line each, split at `\n` (a name, and its value under it).
     pub text: String,
     /// Font size in pixels.
     pub size: f32,
@@ -124,26 +128,43 @@ impl Placed {
                 Some(Pen::solid(self.label.color, 1.2).scaled(k)),
             );
         }
-        fig.text_px(
-            self.baseline,
-            &self.label.text,
-            self.label.size,
-            self.label.color,
-            Anchor::Left,
-            false,
-        );
+        for (k, line) in self.label.text.split('\n').enumerate() {
+            fig.text_px(
+                self.baseline + DVec2::new(0.0, LEADING * f64::from(self.label.size) * k as f64),
+                line,
+                self.label.size,
+                self.label.color,
+                Anchor::Left,
+                false,
+            );
+        }
         fig.tag("");
     }
 }
 
-/// The box a label of `text` takes with its baseline start at `at`.
+/// From one line's baseline to the next, in font sizes.
+const LEADING: f64 = 1.2;
+
+/// The width of the widest line of `text`, and how far its last baseline
+/// lies below its first.
+fn extent(text: &str, size: f32) -> (f64, f64) {
+    let lines = text.split('\n');
+    let w = lines
+        .clone()
+        .map(|l| Figure::text_width(l, size))
+        .fold(0.0, f32::max);
+    let below = (lines.count() - 1) as f64 * LEADING * f64::from(size);
+    (f64::from(w), below)
+}
+
+/// The box a label of `text` takes with its (first) baseline start at `at`.
 pub fn text_box(text: &str, size: f32, at: DVec2, boxed: bool) -> PxRect {
-    let w = f64::from(Figure::text_width(text, size));
+    let (w, below) = extent(text, size);
     let s = f64::from(size);
     let pad = if boxed { 4.0 } else { 1.0 };
     PxRect {
         min: DVec2::new(at.x - pad, at.y - 0.95 * s - pad),
-        max: DVec2::new(at.x + w + pad, at.y + 0.3 * s + pad),
+        max: DVec2::new(at.x + w + pad, at.y + 0.3 * s + below + pad),
     }
 }
 
@@ -168,26 +189,38 @@ pub fn place_weighted(
     lines: &[([DVec2; 2], usize)],
     frame: PxRect,
 ) -> Vec<Placed> {
+    place_all(labels, blocked, lines, frame).0
+}
+
+/// [`place_weighted`], also returning the labels left out: the optional ones
+/// that would have needed a leader, and any that found no free spot at all.
+pub fn place_all(
+    labels: Vec<Label>,
+    blocked: &[PxRect],
+    lines: &[([DVec2; 2], usize)],
+    frame: PxRect,
+) -> (Vec<Placed>, Vec<Label>) {
     let mut placed: Vec<Placed> = Vec::new();
+    let mut left_out = Vec::new();
     for label in labels {
         // Leaders that cross nothing first; in a crowd where none can, a
-        // leader may cross another label's leader or box rather than the
-        // label be lost.
+        // leader may cross marks and other leaders rather than the label be
+        // lost, but never another label.
         let found = best_spot(&label, blocked, lines, frame, &placed, true)
             .or_else(|| best_spot(&label, blocked, lines, frame, &placed, false));
-        if let Some(p) = found
-            && !(p.label.optional && p.leader.is_some())
-        {
-            placed.push(p);
+        match found {
+            Some(p) if !(p.label.optional && p.leader.is_some()) => placed.push(p),
+            _ => left_out.push(label),
         }
     }
-    placed
+    (placed, left_out)
 }
 
 /// The cheapest free spot for `label` (covering the fewest weighted lines,
-/// nearest first among equals). A spot is free when its box is in the frame
-/// and clear of the marks and the labels placed; with `clean_leaders`, also
-/// clear of their leaders, its own leader crossing no mark and no label.
+/// nearest first among equals). A spot is free when its box is in the frame,
+/// clear of the marks, the labels placed and their leaders, and its own
+/// leader crosses no label; with `clean_leaders`, its leader also crosses no
+/// mark and no other leader.
 fn best_spot(
     label: &Label,
     blocked: &[PxRect],
@@ -197,17 +230,21 @@ fn best_spot(
     clean_leaders: bool,
 ) -> Option<Placed> {
     let free = |r: &PxRect, leader: Option<[DVec2; 2]>| {
-        // A leader ends at its anchor's mark: only the part short of it counts.
-        let short = leader
-            .filter(|_| clean_leaders)
-            .map(|[a, z]| [a, z + (a - z).clamp_length_max(10.0)]);
+        // A leader ends at its anchor's mark: against marks only the part
+        // short of it counts.
+        let short = leader.map(|[a, z]| [a, z + (a - z).clamp_length_max(10.0)]);
         let crosses = |b: &PxRect| short.is_some_and(|[a, z]| b.crossed_by(a, z));
+        let runs_through = |b: &PxRect| leader.is_some_and(|[a, z]| b.crossed_by(a, z));
+        let meets = |[a, z]: [DVec2; 2]| short.is_some_and(|[b, y]| segments_cross(a, z, b, y));
         frame.holds(r)
-            && !blocked.iter().any(|b| b.overlaps(r) || crosses(b))
+            && !blocked
+                .iter()
+                .any(|b| b.overlaps(r) || (clean_leaders && crosses(b)))
             && !placed.iter().any(|p| {
                 p.rect.overlaps(r)
-                    || crosses(&p.rect)
-                    || (clean_leaders && p.leader.is_some_and(|[a, z]| r.crossed_by(a, z)))
+                    || runs_through(&p.rect)
+                    || p.leader.is_some_and(|[a, z]| r.crossed_by(a, z))
+                    || (clean_leaders && p.leader.is_some_and(meets))
             })
     };
     let cost = |r: &PxRect| {
@@ -248,13 +285,13 @@ fn best_spot(
 /// Candidate baselines for a label, nearest first: touching the target, then
 /// farther out with a leader from the box's nearest point.
 fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
-    let w = f64::from(Figure::text_width(&label.text, label.size));
+    let (w, below) = extent(&label.text, label.size);
     let s = f64::from(label.size);
     // Baseline offset that puts the text box's center at a given point.
-    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + 0.33 * s);
+    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + 0.33 * s - below / 2.0);
     // The box center that makes the box touch a point from direction `dir`, `gap` away.
     let touching = |p: DVec2, dir: DVec2, gap: f64| {
-        let half = DVec2::new(w / 2.0 + 2.0, 0.62 * s + 2.0);
+        let half = DVec2::new(w / 2.0 + 2.0, 0.62 * s + below / 2.0 + 2.0);
         // How far along `dir` the box's edge is from its center.
         let reach = (half.x / dir.x.abs().max(1e-9)).min(half.y / dir.y.abs().max(1e-9));
         p + dir * (reach + gap)
@@ -271,35 +308,36 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
             // The cartographers' eight positions first: the point at a corner or
             // the middle of an edge of the label, upper right preferred.
             let g = clearance + 2.0;
-            let (top, bottom) = (at.y - g - 0.3 * s, at.y + g + 0.95 * s);
+            let (top, bottom) = (at.y - g - 0.3 * s - below, at.y + g + 0.95 * s);
             let (right, left, middle) = (at.x + g, at.x - g - w, at.x - w / 2.0);
+            let level = at.y + 0.33 * s - below / 2.0;
             let classic = [
                 (right, top),
                 (right, bottom),
                 (left, top),
                 (left, bottom),
-                (right, at.y + 0.33 * s),
-                (left, at.y + 0.33 * s),
+                (right, level),
+                (left, level),
                 (middle, top),
                 (middle, bottom),
             ];
             out.extend(classic.map(|(x, y)| (DVec2::new(x, y), *at, None)));
             // Then all round, touching, and farther out in rings a label's
             // height or more apart, with a leader.
-            for far in [0.0, 1.5, 3.0, 5.0] {
+            for far in [0.0, 1.5, 3.0, 5.0, 8.0, 12.0] {
                 for &d in &dirs {
                     let c = touching(*at, d, clearance + 2.0 + far * s);
-                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, *at));
+                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, *at));
                     out.push((centered(c), *at, leader));
                 }
             }
         }
         Target::Outline { points, inside } => {
-            for far in [0.0, 18.0, 40.0] {
+            for far in [0.0, 18.0, 40.0, 80.0, 140.0] {
                 for &p in points {
                     let d = (p - *inside).normalize_or(DVec2::Y);
                     let c = touching(p, d, 1.0 + far);
-                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, p));
+                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, p));
                     out.push((centered(c), p, leader));
                 }
             }
@@ -308,9 +346,17 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
     out
 }
 
+/// Whether segments `a → b` and `c → d` cross (touching ends count).
+fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
+    let side = |p: DVec2, q: DVec2, r: DVec2| (q - p).perp_dot(r - p);
+    let (d1, d2) = (side(c, d, a), side(c, d, b));
+    let (d3, d4) = (side(a, b, c), side(a, b, d));
+    d1 * d2 <= 0.0 && d3 * d4 <= 0.0 && (d1 != 0.0 || d2 != 0.0 || d3 != 0.0 || d4 != 0.0)
+}
+
 /// The point of the label box centered at `c` nearest to `p`: where a leader starts.
-fn nearest_on_box(c: DVec2, w: f64, s: f64, p: DVec2) -> DVec2 {
-    let half = DVec2::new(w / 2.0 + 1.0, 0.62 * s + 1.0);
+fn nearest_on_box(c: DVec2, w: f64, s: f64, below: f64, p: DVec2) -> DVec2 {
+    let half = DVec2::new(w / 2.0 + 1.0, 0.62 * s + below / 2.0 + 1.0);
     p.clamp(c - half, c + half)
 }
 
@@ -345,8 +391,13 @@ mod tests {
             min: DVec2::new(200.0, 0.0),
             max: DVec2::new(300.0, 60.0),
         };
-        let placed = place(labels, &[legend], &[], frame);
-        assert_eq!(placed.len(), 11, "each has room somewhere");
+        let (placed, left_out) = place_all(labels, &[legend], &[], frame);
+        // Those touching the point ring it round; the rest lead out between
+        // them while there is a way through, and past that are left out
+        // (and said to be) rather than drawn over another.
+        assert_eq!(placed.len() + left_out.len(), 11, "each placed or named");
+        assert!(placed.len() >= 9, "only {} placed", placed.len());
+        assert!(placed.iter().any(|p| p.label.text == "corner"));
         for (i, a) in placed.iter().enumerate() {
             assert!(
                 frame.holds(&a.rect) && !a.rect.overlaps(&legend),
@@ -357,6 +408,14 @@ mod tests {
                 assert!(
                     !a.rect.overlaps(&b.rect),
                     "{} and {}",
+                    a.label.text,
+                    b.label.text
+                );
+            }
+            for b in &placed {
+                assert!(
+                    !a.leader.is_some_and(|[p, q]| b.rect.crossed_by(p, q)) || a == b,
+                    "the leader of {} runs through {}",
                     a.label.text,
                     b.label.text
                 );

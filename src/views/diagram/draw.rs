@@ -10,7 +10,7 @@ use glam::DVec2;
 
 use crate::figure::canvas::Figure;
 use crate::figure::clip::{clip_line, clip_segment};
-use crate::figure::labels::{self, Placed, PxRect};
+use crate::figure::labels::{self, Label, Placed, PxRect};
 use crate::figure::pen::Rgb;
 use crate::figure::pen::{Pen, palette};
 use crate::methods::Accel;
@@ -35,6 +35,10 @@ pub struct Drawn {
     pub figure: Figure,
     /// Every label placed, with its box and what it names.
     pub labels: Vec<Placed>,
+    /// The labels that found no room: optional ones (ticks, step numbers,
+    /// the indices either side of a boundary) that would have needed a
+    /// leader, and any other with no free spot at all.
+    pub left_out: Vec<Label>,
     /// The legend's box (pixels).
     pub legend: PxRect,
     /// The frame (pixels).
@@ -100,7 +104,7 @@ pub fn draw_with_labels(
     let (legend, legend_entries) = draw_legend(&mut fig, &lay, &scale);
     let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen, &reveal);
     let frame = frame_px(&fig);
-    let placed = labels::place_weighted(
+    let (placed, left_out) = labels::place_all(
         requests,
         &blocked(&fig, &lay, legend, &scale),
         &lines_px(&fig, &lay, &scale),
@@ -113,6 +117,7 @@ pub fn draw_with_labels(
     Ok(Drawn {
         figure: fig,
         labels: placed,
+        left_out,
         legend,
         frame,
         legend_entries,

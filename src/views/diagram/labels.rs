@@ -139,8 +139,11 @@ pub(super) fn label_requests(
         });
     }
     for r in &lay.marks.roots {
+        // Its open dot stays: where many bounces repeat the same roots, the
+        // words that would need a leader across the crowd are left out.
         out.push(Label {
             size: size - 3.0,
+            optional: true,
             tag: reveal.label(r.node, true),
             ..text(r.label.clone(), palette::INK, point(r.at, 5.0))
         });
@@ -227,11 +230,14 @@ pub(super) fn object_labels(fig: &Figure, scene: &Scene, lay: &Layout, size: f32
     out
 }
 
-/// What a label must not cover: the legend, dots, lights, arrowheads, crosses.
+/// What a label must not cover: the legend, dots, lights, arrowheads, crosses,
+/// the ticks along the rays and the other roots' open dots.
 pub(super) fn blocked(fig: &Figure, lay: &Layout, legend: PxRect, scale: &Scale) -> Vec<PxRect> {
     let mut out = vec![legend];
     let dot = |p: DVec2, r: f64| PxRect::around(fig.to_px(p), scale.px(r));
     out.extend(lay.hits.iter().map(|h| dot(h.at, 6.0)));
+    out.extend(lay.marks.ticks.iter().map(|t| dot(t.at, 4.0)));
+    out.extend(lay.marks.roots.iter().map(|r| dot(r.at, 4.5)));
     out.extend(lay.lights.iter().map(|&p| dot(p, 14.0)));
     out.push(dot(lay.eye, 6.0));
     out.extend(lay.marks.blocked.iter().map(|b| dot(b.at, 7.0)));

@@ -355,46 +355,120 @@ fn labels_never_collide_and_each_touches_what_it_names() {
             };
             let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
             let at = format!("{name} {x},{y} {view:?} {w}×{h}");
-            for (i, a) in drawn.labels.iter().enumerate() {
-                placed += 1;
-                let text = &a.label.text;
-                assert!(
-                    drawn.frame.holds(&a.rect),
-                    "{at}: '{text}' leaves the frame"
-                );
-                assert!(
-                    !a.rect.overlaps(&drawn.legend),
-                    "{at}: '{text}' covers the legend"
-                );
-                for b in &drawn.labels[i + 1..] {
-                    assert!(
-                        !a.rect.overlaps(&b.rect),
-                        "{at}: '{text}' and '{}' overlap",
-                        b.label.text
-                    );
-                }
-                let clearance = match a.label.target {
-                    Target::Point { clearance, .. } => clearance,
-                    Target::Outline { .. } => 0.0,
-                };
-                // Touching: within its mark's clearance and the gap the placer leaves (a few
-                // pixels) along each axis; a label at a corner position is that far in x and in y.
-                let gap = (a.rect.min - a.anchor)
-                    .max(a.anchor - a.rect.max)
-                    .max(DVec2::ZERO)
-                    .max_element();
-                let touches = gap <= clearance + 5.0;
-                let led = a
-                    .leader
-                    .is_some_and(|[from, to]| to == a.anchor && a.rect.distance(from) <= 1.5);
-                assert!(
-                    touches || led,
-                    "{at}: '{text}' floats free of what it names ({gap:.1} px away)"
-                );
-            }
+            placed += labels_keep_apart(&drawn, &at);
+            // At the default size every label that must be there finds room.
+            let lost = lost(&drawn);
+            assert!(w < 1200 || lost.is_empty(), "{at}: no room for {lost:?}");
         }
     }
     assert!(placed > 200, "only {placed} labels placed");
+}
+
+/// The whole tree framed with its ticks, roots and step numbers, the most
+/// labels a diagram writes, on pixels with deep trees and on plain ones: the
+/// same promise holds.
+#[test]
+fn labels_keep_apart_with_the_whole_tree_its_ticks_roots_and_steps() {
+    let mut placed = 0;
+    let pixels = [
+        ("whitted.json", 160, 120),
+        ("whitted.json", 416, 209),
+        ("whitted.json", 386, 242),
+        ("whitted.json", 264, 200),
+        ("whitted.json", 300, 290),
+        ("nested.json", 320, 240),
+        ("nested.json", 300, 200),
+        ("spheres.json", 320, 240),
+        ("ellipsoids.json", 320, 240),
+        ("cones.json", 320, 240),
+        ("polygons.json", 320, 240),
+        ("gaspra.json", 320, 240),
+    ];
+    for (name, x, y) in pixels {
+        let (scene, trace) = traced(name, x, y);
+        for (w, h) in [(1200, 800), (600, 400)] {
+            for fit in [Fit::Tree, Fit::Hits] {
+                let options = Options {
+                    width: w,
+                    height: h,
+                    fit,
+                    ticks: true,
+                    roots: true,
+                    steps: true,
+                    ..Options::default()
+                };
+                let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
+                let at = format!("{name} {x},{y} {fit:?} {w}×{h} ticks roots steps");
+                placed += labels_keep_apart(&drawn, &at);
+            }
+        }
+    }
+    assert!(placed > 300, "only {placed} labels placed");
+}
+
+/// Checks the diagram's promise for one figure: no label leaves the frame,
+/// covers the legend or another label, and each touches what it names or has
+/// a leader line to it. Returns how many labels were placed.
+fn labels_keep_apart(drawn: &raytree::views::diagram::draw::Drawn, at: &str) -> usize {
+    for (i, a) in drawn.labels.iter().enumerate() {
+        let text = &a.label.text;
+        assert!(
+            drawn.frame.holds(&a.rect),
+            "{at}: '{text}' leaves the frame"
+        );
+        assert!(
+            !a.rect.overlaps(&drawn.legend),
+            "{at}: '{text}' covers the legend"
+        );
+        for b in &drawn.labels[i + 1..] {
+            assert!(
+                !a.rect.overlaps(&b.rect),
+                "{at}: '{text}' and '{}' overlap",
+                b.label.text
+            );
+        }
+        // A leader through another label's text collides with it as surely.
+        for b in &drawn.labels {
+            let through = |p: &raytree::figure::labels::Placed,
+                           q: &raytree::figure::labels::Placed| {
+                p.leader
+                    .is_some_and(|[from, to]| q.rect.crossed_by(from, to))
+            };
+            assert!(
+                std::ptr::eq(a, b) || !(through(a, b) || through(b, a)),
+                "{at}: a leader runs through '{text}' or '{}'",
+                b.label.text
+            );
+        }
+        let clearance = match a.label.target {
+            Target::Point { clearance, .. } => clearance,
+            Target::Outline { .. } => 0.0,
+        };
+        // Touching: within its mark's clearance and the gap the placer leaves (a few
+        // pixels) along each axis; a label at a corner position is that far in x and in y.
+        let gap = (a.rect.min - a.anchor)
+            .max(a.anchor - a.rect.max)
+            .max(DVec2::ZERO)
+            .max_element();
+        let touches = gap <= clearance + 5.0;
+        let led = a
+            .leader
+            .is_some_and(|[from, to]| to == a.anchor && a.rect.distance(from) <= 1.5);
+        assert!(
+            touches || led,
+            "{at}: '{text}' floats free of what it names ({gap:.1} px away)"
+        );
+    }
+    drawn.labels.len()
+}
+
+/// The labels other than the optional ones (ticks, roots, step numbers, a
+/// boundary's indices) that found no room.
+fn lost(drawn: &raytree::views::diagram::draw::Drawn) -> Vec<&str> {
+    (drawn.left_out.iter())
+        .filter(|l| !l.optional)
+        .map(|l| l.text.as_str())
+        .collect()
 }
 
 #[test]
