@@ -8,7 +8,8 @@
 
 use glam::{DVec2, DVec3};
 
-use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::canvas::Figure;
+use crate::figure::labels::{self, Label, Placed, PxRect, Target};
 use crate::figure::pen::{Pen, palette};
 use crate::tree::ray_tree::HitRecord;
 use crate::views::numbers::{degrees, num, vec3};
@@ -61,6 +62,31 @@ const RIGHT: f64 = 3.9;
 
 /// The figure of `hit` (named `name`, e.g. `P1 on 'mirror'`), titled `title`.
 pub fn draw(hit: &HitRecord, name: &str, title: &str, width: u32, height: u32) -> Option<Figure> {
+    draw_with_labels(hit, name, title, width, height).map(|d| d.figure)
+}
+
+/// What [`draw_with_labels`] drew, for tests: where each label went.
+pub struct Drawn {
+    /// The figure.
+    pub figure: Figure,
+    /// Every label placed, with its box.
+    pub labels: Vec<Placed>,
+    /// The labels that found no room.
+    pub left_out: Vec<Label>,
+    /// The frame (pixels).
+    pub frame: PxRect,
+}
+
+/// [`draw`], also returning where the labels went: through
+/// [`crate::figure::labels`], like a ray diagram's, so none covers another,
+/// an arrowhead or the frame's edge.
+pub fn draw_with_labels(
+    hit: &HitRecord,
+    name: &str,
+    title: &str,
+    width: u32,
+    height: u32,
+) -> Option<Drawn> {
     let p = parts(hit);
     if p.across.length() < 1e-9 {
         // Head-on: c has no part across n, nothing to split or to angle.
@@ -75,6 +101,13 @@ pub fn draw(hit: &HitRecord, name: &str, title: &str, width: u32, height: u32) -
     let (c, v) = in_plane(&p);
     let ink = palette::INK;
     let text = 15.0;
+    // Every arrow drawn, for the labels to keep off: (tail, head).
+    let mut arrows: Vec<[DVec2; 2]> = Vec::new();
+    let mut arrow = |fig: &mut Figure, a: DVec2, b: DVec2, pen: Pen| {
+        fig.arrow(a, b, pen);
+        arrows.push([a, b]);
+    };
+    let mut lines: Vec<[DVec2; 2]> = Vec::new();
     for center in [DVec2::ZERO, DVec2::new(RIGHT, 0.0)] {
         // The surface: its tangent line, the inside shaded below it.
         let (l, r) = (center - DVec2::new(1.3, 0.0), center + DVec2::new(1.3, 0.0));
@@ -84,125 +117,141 @@ pub fn draw(hit: &HitRecord, name: &str, title: &str, width: u32, height: u32) -
             None,
         );
         fig.line(l, r, Pen::solid(palette::OBJECT, 1.5));
-        fig.arrow(center, center + DVec2::Y, Pen::solid(palette::NORMAL, 2.5));
-        fig.label(
+        lines.push([l, r]);
+        arrow(
+            &mut fig,
+            center,
             center + DVec2::Y,
-            DVec2::new(8.0, 4.0),
-            "n",
-            text,
-            palette::NORMAL,
-            Anchor::Left,
+            Pen::solid(palette::NORMAL, 2.5),
         );
         fig.dot(center, 4.0, ink, None);
     }
-    fig.label(
-        DVec2::ZERO,
-        DVec2::new(6.0, 18.0),
-        name,
-        text - 1.0,
-        ink,
-        Anchor::Left,
-    );
     // Left: c arrives, v leaves, the angles from n.
     let incoming = Pen::solid(palette::PRIMARY, 2.5);
     let outgoing = Pen::solid(palette::REFLECTED, 2.5);
-    fig.arrow(-c, DVec2::ZERO, incoming);
-    fig.label(
-        -c,
-        DVec2::new(-6.0, -6.0),
-        "c",
-        text,
-        palette::PRIMARY,
-        Anchor::Right,
-    );
-    fig.arrow(DVec2::ZERO, v, outgoing);
-    fig.label(
-        v,
-        DVec2::new(6.0, -6.0),
-        "v",
-        text,
-        palette::REFLECTED,
-        Anchor::Left,
-    );
+    arrow(&mut fig, -c, DVec2::ZERO, incoming);
+    arrow(&mut fig, DVec2::ZERO, v, outgoing);
     let theta = (-p.n_dot_c).clamp(-1.0, 1.0).acos().to_degrees();
     let radius = 0.28 * fig.scale();
     let arc = Pen::solid(ink, 1.5);
     fig.arc(DVec2::ZERO, radius, DVec2::Y, (-c).normalize(), arc);
     fig.arc(DVec2::ZERO, radius * 0.85, DVec2::Y, v.normalize(), arc);
-    // Just above the arcs, either side of n.
-    let (i_text, r_text) = (
-        format!("θᵢ = {}", degrees(theta)),
-        format!("θᵣ = {}", degrees(theta)),
-    );
-    let at = DVec2::new(0.0, 0.46);
-    fig.label(at, DVec2::new(-6.0, 0.0), &i_text, text, ink, Anchor::Right);
-    fig.label(at, DVec2::new(6.0, 0.0), &r_text, text, ink, Anchor::Left);
     // Right: c = along + across, head to tail, down to the surface and along
     // it; v = across − along, along the surface and back up.
     let o = DVec2::new(RIGHT, 0.0);
     let (across, along) = (DVec2::new(c.x, 0.0), DVec2::new(0.0, c.y));
     let part = |color| Pen::dashed(color, 2.5);
     let (along_pen, across_pen) = (part(palette::NORMAL), part(palette::SHADOW_REACHES));
-    fig.arrow(o - c, o, Pen::solid(palette::PRIMARY, 1.5));
-    fig.arrow(o - c, o - c + along, along_pen);
-    fig.arrow(o - c + along, o, across_pen);
-    fig.arrow(o, o + v, Pen::solid(palette::REFLECTED, 1.5));
-    fig.arrow(o, o + across, across_pen);
-    fig.arrow(o + across, o + v, along_pen);
+    arrow(&mut fig, o - c, o, Pen::solid(palette::PRIMARY, 1.5));
+    arrow(&mut fig, o - c, o - c + along, along_pen);
+    arrow(&mut fig, o - c + along, o, across_pen);
+    arrow(&mut fig, o, o + v, Pen::solid(palette::REFLECTED, 1.5));
+    arrow(&mut fig, o, o + across, across_pen);
+    arrow(&mut fig, o + across, o + v, along_pen);
+    // The labels, most important first, each at what it names; on the right
+    // each part's name with its value under it.
     let small = text - 2.0;
-    // Each part's name, and under it its value.
-    let labels = [
-        (
-            o - c,
-            DVec2::new(0.0, -30.0),
-            "c".to_owned(),
-            vec3(p.c),
-            palette::PRIMARY,
-            Anchor::Center,
-        ),
-        (
-            o + v,
-            DVec2::new(0.0, -30.0),
-            "v = c − 2(n·c)·n".to_owned(),
-            vec3(p.v),
-            palette::REFLECTED,
-            Anchor::Center,
-        ),
-        (
-            o - c + along * 0.5,
-            DVec2::new(-8.0, 0.0),
-            "along n: (n·c)·n".to_owned(),
-            vec3(p.along),
-            ink,
-            Anchor::Right,
-        ),
-        (
-            o + across - along * 0.5,
-            DVec2::new(8.0, 0.0),
-            "flipped: −(n·c)·n".to_owned(),
-            format!("n·c = {}", num(p.n_dot_c)),
-            ink,
-            Anchor::Left,
-        ),
-        (
-            o,
-            DVec2::new(0.0, 24.0),
-            "across n, kept: c − (n·c)·n".to_owned(),
-            vec3(p.across),
-            ink,
-            Anchor::Center,
-        ),
+    let label = |words: String, size: f32, color, at: DVec2, clearance: f64| Label {
+        text: words,
+        size,
+        color,
+        target: Target::Point {
+            at: fig.to_px(at),
+            clearance,
+        },
+        boxed: false,
+        optional: false,
+        tag: String::new(),
+    };
+    // Just above the arcs, either side of n: each angle on its own side.
+    let above = DVec2::new(0.0, 0.46);
+    let side = |dx: f64| Target::Point {
+        at: fig.to_px(above) + DVec2::new(dx, 0.0),
+        clearance: 1.0,
+    };
+    let mut requests = vec![
+        label(name.to_owned(), text - 1.0, ink, DVec2::ZERO, 5.0),
+        label("n".to_owned(), text, palette::NORMAL, DVec2::Y, 6.0),
+        label("c".to_owned(), text, palette::PRIMARY, -c, 4.0),
+        label("v".to_owned(), text, palette::REFLECTED, v, 7.0),
+        Label {
+            target: side(-5.0),
+            ..label(format!("θᵢ = {}", degrees(theta)), text, ink, above, 0.0)
+        },
+        Label {
+            target: side(5.0),
+            ..label(format!("θᵣ = {}", degrees(theta)), text, ink, above, 0.0)
+        },
+        label("n".to_owned(), text, palette::NORMAL, o + DVec2::Y, 6.0),
     ];
-    for (at, offset, words, value, color, anchor) in labels {
-        fig.label(at, offset, &words, small, color, anchor);
-        fig.label(
-            at,
-            offset + DVec2::new(0.0, 18.0),
-            &value,
+    // The parts first, their sums after: v can take a leader from afar.
+    requests.extend([
+        label(
+            format!("c\n{}", vec3(p.c)),
             small,
-            color,
-            anchor,
-        );
+            palette::PRIMARY,
+            o - c,
+            4.0,
+        ),
+        label(
+            format!("across n, kept: c − (n·c)·n\n{}", vec3(p.across)),
+            small,
+            ink,
+            o - across * 0.5,
+            7.0,
+        ),
+        label(
+            format!("flipped: −(n·c)·n\nn·c = {}", num(p.n_dot_c)),
+            small,
+            ink,
+            o + across - along * 0.5,
+            7.0,
+        ),
+        label(
+            format!("along n: (n·c)·n\n{}", vec3(p.along)),
+            small,
+            ink,
+            o - c + along * 0.5,
+            7.0,
+        ),
+        label(
+            format!("v = c − 2(n·c)·n\n{}", vec3(p.v)),
+            small,
+            palette::REFLECTED,
+            o + v,
+            7.0,
+        ),
+    ]);
+    let f = fig.frame();
+    let frame = PxRect {
+        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
+        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
+    };
+    // Arrowheads and the hit points stay visible; the arrows, the surfaces
+    // and the arcs (as chords) are lines a label would rather not cover.
+    let mut blocked: Vec<PxRect> = arrows
+        .iter()
+        .map(|[_, b]| PxRect::around(fig.to_px(*b), 6.0))
+        .collect();
+    blocked.extend([DVec2::ZERO, o].map(|h| PxRect::around(fig.to_px(h), 5.0)));
+    let chords = |to: DVec2, r: f64| {
+        let (a0, a1) = (DVec2::Y.to_angle(), to.to_angle());
+        (0..6).map(move |k| {
+            let at = |k: u32| DVec2::from_angle(a0 + (a1 - a0) * f64::from(k) / 6.0) * r;
+            [at(k), at(k + 1)]
+        })
+    };
+    let r = radius / fig.scale();
+    lines.extend(arrows.iter().copied());
+    lines.extend(chords((-c).normalize(), r).chain(chords(v.normalize(), r * 0.85)));
+    // Crossing an arrow costs more than a leader: the arrows are the figure.
+    let weighted: Vec<([DVec2; 2], usize)> = lines
+        .iter()
+        .map(|[a, b]| ([fig.to_px(*a), fig.to_px(*b)], 4))
+        .collect();
+    let (placed, left_out) = labels::place_all(requests, &blocked, &weighted, frame);
+    for l in &placed {
+        l.draw(&mut fig, 1.0);
     }
     fig.frame_border();
     let caption = format!(
@@ -210,7 +259,12 @@ pub fn draw(hit: &HitRecord, name: &str, title: &str, width: u32, height: u32) -
         degrees(theta)
     );
     fig.caption(&Figure::wrap(&caption, 15.0, fig.frame().width()), 15.0);
-    Some(fig)
+    Some(Drawn {
+        figure: fig,
+        labels: placed,
+        left_out,
+        frame,
+    })
 }
 
 #[cfg(test)]

@@ -8,6 +8,7 @@
 use glam::DVec2;
 
 use crate::figure::canvas::{Anchor, Figure};
+use crate::figure::labels::{self, Label, Placed, PxRect, Target};
 use crate::figure::pen::{Pen, Rgb, palette};
 use crate::trace::recorder::{Branch, RayKind};
 use crate::tree::ray_tree::{BranchRecord, RayNode, RayTree};
@@ -48,6 +49,9 @@ pub struct Graph {
     pub edges: Vec<Edge>,
     /// A box's size in pixels.
     pub size: DVec2,
+    /// The height of a line of text in a box: [`LINE`], less when the rows
+    /// are too close for every line at full size.
+    pub line: f64,
 }
 
 const TOP: f32 = 60.0;
@@ -144,10 +148,11 @@ pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
         })
         .max()
         .unwrap_or(3);
-    let size = DVec2::new(
-        BOX_WIDTH.min(column - 10.0),
-        (LINE * most as f64 + 8.0).min(row - 24.0),
-    );
+    // The box holds its most lines, with a gap of 24 pixels between rows
+    // for the coefficients: where the rows are closer, the lines shrink.
+    let height = (LINE * most as f64 + 8.0).min(row - 24.0);
+    let line = LINE.min((height - 8.0) / most as f64);
+    let size = DVec2::new(BOX_WIDTH.min(column - 10.0), height);
     let mut hits = 0;
     let nodes = (tree.nodes.iter().enumerate())
         .map(|(i, node)| {
@@ -190,56 +195,121 @@ pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
             })
         })
         .collect();
-    Graph { nodes, edges, size }
+    Graph {
+        nodes,
+        edges,
+        size,
+        line,
+    }
+}
+
+/// Where each of a box's lines is drawn: its baseline's center and its
+/// size, smaller than [`TEXT`] where the line is too wide for the box or the
+/// rows too close, so no line crosses the box's edge.
+pub fn box_lines(graph: &Graph, node: &GraphNode) -> Vec<(DVec2, f32)> {
+    let top = node.center.y - graph.size.y / 2.0;
+    let room = (graph.size.x - 8.0) as f32;
+    let tall = TEXT * (graph.line / LINE) as f32;
+    (node.lines.iter().enumerate())
+        .map(|(k, line)| {
+            let size = tall.min(TEXT * room / Figure::text_width(line, TEXT).max(1.0));
+            let at = DVec2::new(node.center.x, top + 4.0 + graph.line * (k as f64 + 0.78));
+            (at, size)
+        })
+        .collect()
+}
+
+/// What [`draw_with_labels`] drew, for tests.
+pub struct Drawn {
+    /// The figure.
+    pub figure: Figure,
+    /// The layout drawn.
+    pub graph: Graph,
+    /// The coefficients placed on the edges, with their boxes.
+    pub labels: Vec<Placed>,
+    /// The coefficients that found no room.
+    pub left_out: Vec<Label>,
+    /// The frame (pixels).
+    pub frame: PxRect,
 }
 
 /// The figure of `tree`, titled with `title` (the scene and the pixel).
 pub fn draw(tree: &RayTree, title: &str, width: u32, height: u32) -> Option<Figure> {
+    draw_with_labels(tree, title, width, height).map(|d| d.figure)
+}
+
+/// [`draw`], also returning the layout and where the coefficients went:
+/// through [`crate::figure::labels`], each at its edge and clear of the
+/// boxes, the other coefficients and the frame.
+pub fn draw_with_labels(tree: &RayTree, title: &str, width: u32, height: u32) -> Option<Drawn> {
     let graph = layout(tree, width, height);
-    if graph.size.x < 60.0 || graph.size.y < 3.0 * LINE {
+    if graph.size.x < 60.0 || graph.line < 9.0 {
         return None;
     }
     let mut fig = Figure::new(width, height, TOP, MARGIN)?;
     let half = graph.size / 2.0;
+    let mut edges = Vec::new();
     for e in &graph.edges {
         let (a, b) = (&graph.nodes[e.from], &graph.nodes[e.to]);
         let from = a.center + DVec2::new(0.0, half.y);
         let to = b.center - DVec2::new(0.0, half.y);
         fig.line_px(from, to, Pen::solid(color(b.kind), 2.0));
+        edges.push(([from, to], 1));
     }
-    // The coefficients on paper at the edges' middles, over the lines.
-    for e in &graph.edges {
-        let (a, b) = (&graph.nodes[e.from], &graph.nodes[e.to]);
-        let mid = (a.center + b.center) / 2.0;
-        let size = TEXT - 1.0;
-        let w = f64::from(Figure::text_width(&e.label, size)) + 6.0;
-        let h = f64::from(size) + 4.0;
-        let (min, max) = (mid - DVec2::new(w, h) / 2.0, mid + DVec2::new(w, h) / 2.0);
-        fig.rect_px(min, max, Some((palette::PAPER, 255)), None);
-        let at = DVec2::new(mid.x, max.y - 4.0);
-        fig.text_px(at, &e.label, size, color(b.kind), Anchor::Center, false);
-    }
+    // The coefficients on paper at the edges' middles, off the boxes.
+    let requests = (graph.edges.iter().zip(&edges))
+        .filter(|(e, _)| !e.label.is_empty())
+        .map(|(e, &([from, to], _))| Label {
+            text: e.label.clone(),
+            size: TEXT - 1.0,
+            color: color(graph.nodes[e.to].kind),
+            target: Target::Point {
+                at: (from + to) / 2.0,
+                clearance: 0.0,
+            },
+            boxed: true,
+            optional: false,
+            tag: String::new(),
+        })
+        .collect();
+    let boxes: Vec<PxRect> = (graph.nodes.iter())
+        .map(|n| PxRect {
+            min: n.center - half,
+            max: n.center + half,
+        })
+        .collect();
+    let f = fig.frame();
+    let frame = PxRect {
+        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
+        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
+    };
+    let (placed, left_out) = labels::place_all(requests, &boxes, &edges, frame);
     for n in &graph.nodes {
         let (min, max) = (n.center - half, n.center + half);
         let pen = Pen::solid(color(n.kind), 2.0);
         fig.rect_px(min, max, Some((palette::PAPER, 255)), Some(pen));
-        for (k, line) in n.lines.iter().enumerate() {
+        for (k, (line, (at, size))) in n.lines.iter().zip(box_lines(&graph, n)).enumerate() {
             let ink = match k {
                 0 => color(n.kind),
                 1 | 2 => palette::INK,
                 _ => [110, 110, 110],
             };
-            // Smaller rather than over the box's edge.
-            let room = (graph.size.x - 8.0) as f32;
-            let size = TEXT.min(TEXT * room / Figure::text_width(line, TEXT).max(1.0));
-            let at = DVec2::new(n.center.x, min.y + LINE * (k as f64 + 1.0) - 2.0);
             fig.text_px(at, line, size, ink, Anchor::Center, false);
         }
+    }
+    for p in &placed {
+        p.draw(&mut fig, 1.0);
     }
     fig.frame_border();
     let caption = format!(
         "{title} · the ray tree as a tree: a box per ray (its kind, depth, weight and hit), an edge from each ray to those it spawned with the coefficient on it; hits numbered as the diagram numbers them"
     );
     fig.caption(&Figure::wrap(&caption, 15.0, fig.frame().width()), 15.0);
-    Some(fig)
+    Some(Drawn {
+        figure: fig,
+        graph,
+        labels: placed,
+        left_out,
+        frame,
+    })
 }

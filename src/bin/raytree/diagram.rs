@@ -4,6 +4,7 @@ use std::path::PathBuf;
 
 use anyhow::{Context, Result};
 use glam::DVec2;
+use raytree::figure::labels::Label;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
@@ -173,9 +174,12 @@ pub fn run(args: &Args) -> Result<()> {
             Some(p) => format!("{}, pixel {},{}, {name}", trace.scene.file, p.x, p.y),
             None => format!("{}, the given ray, {name}", trace.scene.file),
         };
-        let figure = hit_vectors::draw(hit, &name, &title, args.size.0, args.size.1).context(
-            "the ray meets the surface head-on (nothing to split), or the figure size is too small",
-        )?;
+        let drawn = hit_vectors::draw_with_labels(hit, &name, &title, args.size.0, args.size.1)
+            .context(
+                "the ray meets the surface head-on (nothing to split), or the figure size is too small",
+            )?;
+        no_room(&drawn.left_out)?;
+        let figure = drawn.figure;
         pending.commit(&figure.png())?;
         let (w, h) = figure.size();
         output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
@@ -187,24 +191,48 @@ pub fn run(args: &Args) -> Result<()> {
             Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),
             None => format!("{}, the given ray", trace.scene.file),
         };
-        let figure = tree_graph::draw(&sample.tree, &title, args.size.0, args.size.1)
+        let drawn = tree_graph::draw_with_labels(&sample.tree, &title, args.size.0, args.size.1)
             .context("the figure size is too small for this tree")?;
+        no_room(&drawn.left_out)?;
+        let figure = drawn.figure;
         pending.commit(&figure.png())?;
         let (w, h) = figure.size();
         output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
         return Ok(());
     }
+    let mut left_out = Vec::new();
     let figure = match (args.view, args.space) {
         (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
         (_, Space::Object) => object_view::draw(&trace, &scene, &options),
-        (_, Space::World) => diagram::draw::draw(&trace, &scene, &options),
+        (_, Space::World) => diagram::draw::draw_with_labels(&trace, &scene, &options).map(|d| {
+            left_out = d.left_out;
+            d.figure
+        }),
     }
     .map_err(anyhow::Error::msg)?;
+    no_room(&left_out)?;
     match figure.svg().filter(|_| svg) {
         Some(text) => pending.commit(text.as_bytes())?,
         None => pending.commit(&figure.png())?,
     }
     let (w, h) = figure.size();
     output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
+    Ok(())
+}
+
+/// A note naming the labels that found no room, the optional ones (ticks,
+/// roots' and steps' numbers, a boundary's indices) aside: the figure is
+/// written without them, and the reader should know.
+fn no_room(left_out: &[Label]) -> Result<()> {
+    let names: Vec<String> = (left_out.iter())
+        .filter(|l| !l.optional)
+        .map(|l| format!("'{}'", l.text.replace('\n', " ")))
+        .collect();
+    if !names.is_empty() {
+        output::note(&format!(
+            "no room for the labels {} without covering another: left out (a smaller --depth or --fit hits makes room)",
+            names.join(", ")
+        ))?;
+    }
     Ok(())
 }
