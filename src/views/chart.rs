@@ -178,11 +178,16 @@ fn draw_grid(fig: &mut Figure, counted: bool) {
     }
 }
 
-/// Each point as a dot (the defaults last, on top), then the labels, placed
-/// by [`crate::figure::labels`] as the diagrams' are: touching their dot where
-/// there is room, else with a leader line, never over another label, a dot,
-/// the legend or an axis title. The defaults are placed first, so their
-/// label sits at their dot.
+/// The radius of the ring round the defaults' dot.
+const RING: f64 = 7.5;
+
+/// Each point as a dot, then the labels, placed by [`crate::figure::labels`]
+/// as the diagrams' are: touching their dot where there is room, else with a
+/// leader line, never over another label, a dot, the legend or an axis
+/// title. The defaults are ringed, under every dot, and their own dot is no
+/// bigger than the others' and drawn first: a setting that lands on the
+/// defaults (most change nothing measurable) shows on top of it. The
+/// defaults are placed first, so their label sits at their dot.
 fn draw_points(
     fig: &mut Figure,
     points: &[Point],
@@ -191,7 +196,16 @@ fn draw_points(
     blocked: &[PxRect],
 ) -> Vec<Placed> {
     let mut order: Vec<usize> = (0..points.len()).collect();
-    order.sort_by_key(|&i| points[i].default);
+    order.sort_by_key(|&i| !points[i].default);
+    let ring = RING / fig.scale();
+    for &i in order.iter().filter(|&&i| points[i].default) {
+        fig.ellipse(
+            xy[i],
+            [DVec2::X * ring, DVec2::Y * ring],
+            None,
+            Some(Pen::solid(palette::REFRACTED, 2.0)),
+        );
+    }
     for &i in &order {
         let (p, at) = (&points[i], xy[i]);
         let color = if p.default {
@@ -201,24 +215,19 @@ fn draw_points(
         } else {
             palette::PRIMARY
         };
-        fig.dot(
-            at,
-            if p.default { 7.0 } else { 5.0 },
-            color,
-            Some(palette::INK),
-        );
+        fig.dot(at, 5.0, color, Some(palette::INK));
     }
     let px: Vec<DVec2> = xy.iter().map(|&p| fig.to_px(p)).collect();
-    let mut avoid: Vec<PxRect> = px.iter().map(|&c| PxRect::around(c, 7.0)).collect();
+    let mut avoid: Vec<PxRect> = px.iter().map(|&c| PxRect::around(c, RING)).collect();
     avoid.extend_from_slice(blocked);
     let lines: Vec<[DVec2; 2]> = front.windows(2).map(|w| [px[w[0]], px[w[1]]]).collect();
-    let labels = order.iter().rev().map(|&i| Label {
+    let labels = order.iter().map(|&i| Label {
         text: points[i].label.clone(),
         size: 13.0,
         color: palette::INK,
         target: Target::Point {
             at: px[i],
-            clearance: if points[i].default { 7.0 } else { 5.0 },
+            clearance: if points[i].default { RING + 1.0 } else { 5.0 },
         },
         boxed: false,
         optional: false,

@@ -149,9 +149,10 @@ fn chart_labels_touch_their_dots_and_never_overlap() {
             );
         }
         // Touching its dot, or led to it: a label at a corner of its dot sits
-        // the clearance (at most 7) and a gap of 2 plus a pixel of padding away
-        // on both axes, (7 + 2 + 1)·√2 ≈ 14.1 from the dot's center.
-        let touching = |p: &raytree::figure::labels::Placed| p.rect.distance(p.anchor) <= 14.2;
+        // the clearance (at most 8.5, the defaults' ring) and a gap of 2 plus
+        // a pixel of padding away on both axes, (8.5 + 2 + 1)·√2 ≈ 16.3 from
+        // the dot's center.
+        let touching = |p: &raytree::figure::labels::Placed| p.rect.distance(p.anchor) <= 16.3;
         assert!(
             touching(a) || a.leader.is_some(),
             "{} floats away from its dot",
@@ -159,7 +160,32 @@ fn chart_labels_touch_their_dots_and_never_overlap() {
         );
     }
     let default = placed.iter().find(|p| p.label.text == "default").unwrap();
-    assert!(default.leader.is_none() && default.rect.distance(default.anchor) <= 14.2);
+    assert!(default.leader.is_none() && default.rect.distance(default.anchor) <= 16.3);
+}
+
+/// Settings that change nothing measurable land on the defaults: each shows
+/// in its own color at its center, never under the defaults' marker.
+#[test]
+fn no_point_hides_under_the_defaults_marker() {
+    let mut points = committed_points();
+    // One exactly on the defaults, beside those a few pixels off it.
+    let mut same = points[0].clone();
+    same.label = "same as the defaults".to_owned();
+    same.default = false;
+    points.push(same);
+    let (fig, _) =
+        raytree::views::chart::draw_with_labels(&points, "docs/chart.csv", 1200, 800).unwrap();
+    let (w, _) = fig.size();
+    let rgb = fig.rgb();
+    let orange = raytree::figure::pen::palette::REFRACTED;
+    for p in points.iter().filter(|p| !p.default) {
+        let at = fig.to_px(glam::DVec2::new(p.seconds.log10(), p.rmse.log10()));
+        let i = (at.y.round() as usize * w as usize + at.x.round() as usize) * 3;
+        let c = [rgb[i], rgb[i + 1], rgb[i + 2]];
+        // Tolerance: antialiasing blends a few levels at a dot's center at most.
+        let near = c.iter().zip(orange).all(|(&a, b)| a.abs_diff(b) <= 24);
+        assert!(!near, "'{}' is hidden under the defaults ({c:?})", p.label);
+    }
 }
 
 #[test]
