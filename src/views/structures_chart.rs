@@ -332,6 +332,8 @@ fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]:
     let groups: Vec<&[Row]> = c.rows.chunks(STRUCTURES.len()).collect();
     let slot = (right - left) / groups.len().max(1) as f64;
     let bar = (slot * 0.8 / STRUCTURES.len() as f64).min(40.0);
+    let names: Vec<String> = groups.iter().map(|g| group_name(g)).collect();
+    let size = name_size(&names, slot);
     for (g, group) in groups.iter().enumerate() {
         let x0 = left + slot * g as f64 + (slot - bar * group.len() as f64) / 2.0;
         let fewest = best(group, Row::tests_per_ray);
@@ -368,16 +370,10 @@ fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]:
             }
         }
         let centre = left + slot * (g as f64 + 0.5);
-        let name = format!("{} ({} objects)", group[0].scene, group[0].objects);
-        let size = if f64::from(Figure::text_width(&name, 13.0)) < slot - 4.0 {
-            13.0
-        } else {
-            11.0
-        };
         for (panel, dy) in [(&tests, 16.0), (&times, 16.0)] {
             fig.text_px(
                 DVec2::new(centre, panel.bottom + dy),
-                &name,
+                &names[g],
                 size,
                 palette::INK,
                 Anchor::Center,
@@ -385,6 +381,21 @@ fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]:
             );
         }
     }
+}
+
+/// A group's name under its bars: the scene and its objects.
+fn group_name(group: &[Row]) -> String {
+    format!("{} ({} objects)", group[0].scene, group[0].objects)
+}
+
+/// One size for every scene's name, so none reads as more important: 13
+/// pixels, or smaller till the widest fits its slot of `slot` pixels.
+pub fn name_size(names: &[String], slot: f64) -> f32 {
+    let widest = names
+        .iter()
+        .map(|n| Figure::text_width(n, 13.0))
+        .fold(1.0, f32::max);
+    13f32.min(13.0 * (slot as f32 - 4.0) / widest).max(1.0)
 }
 
 /// Two panels one above the other in `rect`, with room above each for its
@@ -513,5 +524,31 @@ fn draw_sweep(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64
                 fig.dot(p, 4.5, col, Some(palette::INK));
             }
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_scene_name_has_one_size_and_fits_its_slot() {
+        let names: Vec<String> = [
+            "whitted (5 objects)",
+            "a very long scene name (40,000 objects)",
+        ]
+        .map(str::to_owned)
+        .to_vec();
+        let slot = 200.0;
+        let size = name_size(&names, slot);
+        assert!(size < 13.0, "the long name needs a smaller size");
+        // Tolerance: glyph advances scale with the size up to f32 rounding.
+        for n in &names {
+            assert!(
+                f64::from(Figure::text_width(n, size)) <= slot - 4.0 + 1e-3,
+                "{n}"
+            );
+        }
+        assert_eq!(name_size(&names[..1], slot), 13.0, "a short name keeps 13");
     }
 }
