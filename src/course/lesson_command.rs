@@ -40,6 +40,28 @@ impl Command {
     }
 }
 
+/// raytree's commands, as `raytree --help` lists them: a spec's command
+/// names one, or the book would only find out when it ran it (the binary's
+/// tests hold this list to its grammar).
+pub const COMMANDS: &[&str] = &[
+    "render",
+    "trace",
+    "diagram",
+    "inspect",
+    "chart",
+    "structures",
+    "strip",
+    "lobe",
+    "forward",
+    "lesson",
+    "diff",
+    "postscript",
+    "check",
+    "generate",
+    "convert",
+    "vectors",
+];
+
 /// Splits `raytree ARGS…` into arguments. The book adds the output options,
 /// so a command may not give them.
 pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
@@ -55,6 +77,13 @@ pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
     let args: Vec<String> = words.collect();
     if args.is_empty() {
         return Err("no command after raytree".to_owned());
+    }
+    if !COMMANDS.contains(&args[0].as_str()) {
+        return Err(format!(
+            "'{}' is not a raytree command (they are: {})",
+            args[0],
+            COMMANDS.join(", ")
+        ));
     }
     let given = |flag: &str| {
         args.iter()
@@ -98,5 +127,20 @@ mod tests {
         // A path with a folder is a file of the repository, not one the spec makes.
         assert_eq!(s.runs["d"].command.reads, ["b"]);
         assert!(s.images["a"].command.reads.is_empty());
+    }
+
+    /// A typo'd command was once taken for a run other than a trace, and its
+    /// number refused for lacking after = or before =.
+    #[test]
+    fn a_command_raytree_lacks_is_named() {
+        let e = spec(
+            "[run.t]\ncommand = \"raytree trac scenes/whitted.json --pixel 1,2\"\n\
+             [number]\nn = { run = \"t\", step = 1, value = \"t\" }\n",
+        )
+        .unwrap_err();
+        assert!(
+            e.contains("line 1: run t: 'trac' is not a raytree command (they are: render, trace,"),
+            "{e}"
+        );
     }
 }

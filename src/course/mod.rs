@@ -9,6 +9,7 @@ pub(crate) mod spec_file; // a spec file's TOML as serde reads it
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
 pub mod lesson_frame; // what a lesson lets a learner do, how long it takes, whether it is optional
 pub mod lesson_command; // a spec's command lines, and the images and figures each one reads
+pub mod spec_number; // a spec's number read from a trace, for the book and `raytree lesson`
 pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod question; // checked questions: predict a number, checked against raytree's own
 pub mod player; // a lesson's step-through as a player for the book's page

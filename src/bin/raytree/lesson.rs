@@ -1,11 +1,13 @@
 //! `raytree lesson`: the lessons, and one lesson's guided step-through, in
 //! the inspector when standard output is a terminal, else as text.
 
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
-use raytree::course::{lesson, vectors};
+use raytree::course::{lesson, spec_number, vectors};
 use raytree::inspector::{self, App};
+use raytree::tree::document::TraceDocument;
 
 use crate::args::usage;
 use crate::output;
@@ -35,6 +37,7 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             held(&args.lessons, &entries, n)?;
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
+            numbers_made(&loaded.entry)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
             if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
@@ -89,6 +92,42 @@ pub fn held(dir: &Path, entries: &[lesson::Entry], n: u32) -> Result<()> {
         dir.display(),
         lesson::lessons_held(entries)
     )))
+}
+
+/// Refuses, before the lesson opens, a number of its spec read from a trace
+/// (`step` + `value`, or `json`) that the book could not make: a run whose
+/// command fails, a step past the trace's, a value the step lacks. Each
+/// run is traced once, as `raytree trace` would; the runs of text and the
+/// questions are made only with the book.
+fn numbers_made(entry: &lesson::Entry) -> Result<()> {
+    let spec = entry.folder.join(lesson::SPEC);
+    let mut traces: BTreeMap<&str, TraceDocument> = BTreeMap::new();
+    for (name, number) in &entry.spec.numbers {
+        let run = &entry.spec.runs[&number.run];
+        if !run.command.is_trace() {
+            continue;
+        }
+        if !traces.contains_key(number.run.as_str()) {
+            let doc = crate::trace::document(&run.command.args).map_err(|e| {
+                anyhow!(
+                    "{}: line {}: run {}: `{}`: {e:#}",
+                    spec.display(),
+                    run.line,
+                    number.run,
+                    run.command.text
+                )
+            })?;
+            traces.insert(&number.run, doc);
+        }
+        spec_number::from_trace(&number.source, &traces[number.run.as_str()]).map_err(|e| {
+            anyhow!(
+                "{}: line {}: number {name}: {e}",
+                spec.display(),
+                number.line
+            )
+        })?;
+    }
+    Ok(())
 }
 
 /// Opens the lesson's step-through in the inspector, at its first stop.

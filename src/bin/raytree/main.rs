@@ -181,9 +181,19 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         }
         return finish(printed.map_err(anyhow::Error::from));
     }
+    output::last_word(&format!(
+        "error: {} (see {} --help)",
+        printable(&one_line(e)),
+        command_words()
+    ));
+    ExitCode::from(USAGE)
+}
+
+/// clap's message in one line. It runs until its usage: the problem, then
+/// what it names (missing arguments, possible values) and a tip, each on a
+/// line of its own.
+fn one_line(e: &clap::Error) -> String {
     let text = e.render().to_string();
-    // clap's message runs until its usage: the problem, then what it names
-    // (missing arguments, possible values) and a tip, each on a line of its own.
     let mut message = String::new();
     for line in text
         .lines()
@@ -203,12 +213,19 @@ fn usage_error(e: &clap::Error) -> ExitCode {
         }
         message.push_str(line);
     }
-    output::last_word(&format!(
-        "error: {} (see {} --help)",
-        printable(&message),
-        command_words()
-    ));
-    ExitCode::from(USAGE)
+    message
+}
+
+/// A command line a lesson's spec writes (the words after `raytree`), read
+/// by the grammar a learner's typing meets: `raytree lesson N` traces a
+/// run's pixel as `raytree trace` would.
+fn parse_words(args: &[String]) -> Result<Command, String> {
+    let words = std::iter::once("raytree").chain(args.iter().map(String::as_str));
+    grammar()
+        .try_get_matches_from(words)
+        .and_then(|m| Cli::from_arg_matches(&m))
+        .map(|cli| cli.command)
+        .map_err(|e| one_line(&e))
 }
 
 /// The subcommands named first on the command line, e.g. `raytree generate
@@ -224,4 +241,22 @@ fn command_words() -> String {
         level = sub;
     }
     command.join(" ")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A spec's command is refused unless it names one of these; a command
+    /// added to the grammar and not to the list would be refused too.
+    #[test]
+    fn the_course_knows_every_command() {
+        let grammar = grammar();
+        let names: Vec<&str> = grammar
+            .get_subcommands()
+            .map(clap::Command::get_name)
+            .filter(|n| *n != "help")
+            .collect();
+        assert_eq!(names, raytree::course::lesson_command::COMMANDS);
+    }
 }

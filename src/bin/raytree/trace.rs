@@ -58,6 +58,16 @@ pub fn run(args: &Args) -> Result<()> {
     }
 }
 
+/// The trace a spec's run (`raytree trace ARGS…`, the words after
+/// `raytree`) prints, recorded here as the command would record it.
+pub fn document(args: &[String]) -> Result<raytree::tree::document::TraceDocument> {
+    let crate::Command::Trace(args) = crate::parse_words(args).map_err(anyhow::Error::msg)? else {
+        return Err(anyhow::anyhow!("not a raytree trace"));
+    };
+    let (scene, source) = args.scene.load()?;
+    args.target.record(&scene, source)
+}
+
 /// Whether the JSON trace is written: asked by --json, or by an output name
 /// ending in .json (unless --learner asks for the learner trace). An output
 /// name that is neither .json nor .txt (the text), or one at odds with

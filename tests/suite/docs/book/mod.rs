@@ -201,6 +201,68 @@ fn a_broken_lesson_is_one_line_naming_file_and_line() {
     assert_eq!(err.lines().count(), 1, "{err}");
 }
 
+/// `raytree lesson N` refuses, before it shows anything, a number the book
+/// could not make: it once opened a lesson whose numbers named a step's
+/// value it lacks, a step past the trace, or a pixel off the image, and only
+/// the book's build found out.
+#[test]
+fn raytree_lesson_refuses_a_number_the_book_could_not_make() {
+    let dir = tempfile::tempdir().unwrap();
+    let lesson = dir.path().join("07-light");
+    std::fs::create_dir(&lesson).unwrap();
+    let scene = run::root().join("scenes/whitted.json");
+    let scene = scene.display();
+    std::fs::write(
+        lesson.join("steps.toml"),
+        format!(
+            "scene = \"{scene}\"\npixel = [300, 250]\n[[stop]]\nstep = 1\nsay = \"c = {{c}}\"\n"
+        ),
+    )
+    .unwrap();
+    let dir_arg = dir.path().display().to_string();
+    let cases = [
+        ("--pixel 300,250", "step = 7, value = \"t\"", None),
+        (
+            "--pixel 300,250",
+            "step = 7, value = \"tt\"",
+            Some("lesson.toml: line 8: number n: step 7 has no tt; it has "),
+        ),
+        (
+            "--pixel 300,250",
+            "step = 700, value = \"t\"",
+            Some("lesson.toml: line 8: number n: step 700 is past the trace's "),
+        ),
+        (
+            "--pixel 300,2500",
+            "step = 7, value = \"t\"",
+            Some("lesson.toml: line 5: run p: `raytree trace"),
+        ),
+        (
+            "--pixel 300,250",
+            "json = \"/no/such\"",
+            Some("lesson.toml: line 8: number n: the trace has no /no/such"),
+        ),
+    ];
+    for (pixel, source, want) in cases {
+        std::fs::write(
+            lesson.join("lesson.toml"),
+            format!(
+                "{FRAME}[run.p]\ncommand = \"raytree trace {scene} {pixel}\"\n\
+                 [number]\nn = {{ run = \"p\", {source} }}\n"
+            ),
+        )
+        .unwrap();
+        let (ok, text, err) = raytree(&["lesson", "--lessons", &dir_arg, "7", "--text"]);
+        match want {
+            None => assert!(ok && text.contains("c = "), "{err}"),
+            Some(want) => {
+                assert!(!ok && err.contains(want), "{pixel} {source}: {err}");
+                assert_eq!(err.lines().count(), 1, "{err}");
+            }
+        }
+    }
+}
+
 /// A folder that is not a lesson (a teacher's `drafts/`, notes) is passed
 /// over, so it breaks no lesson; one named as a lesson but misnumbered is
 /// still refused, naming it.

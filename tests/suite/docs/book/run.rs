@@ -6,12 +6,10 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command as Process;
 
-use raytree::course::guide;
 use raytree::course::lesson_spec::{Command, Number, Run, Source, Spec};
+use raytree::course::spec_number;
 use raytree::tree::document::TraceDocument;
-use raytree::views::numbers::{num, vec3};
 use raytree::views::text;
-use serde_json::Value;
 
 use crate::tools::Need;
 
@@ -208,27 +206,12 @@ fn output(run: &Run, name: &str, files: &Files) -> Result<Output, String> {
     }
 }
 
-/// A number's value, written as the trace writes numbers.
+/// A number's value, written as the trace writes numbers (a trace's as
+/// `raytree lesson N` reads it, [`spec_number::from_trace`]).
 pub fn number(n: &Number, out: &Output) -> Result<String, String> {
     match (&n.source, out) {
-        (Source::Step { step, value }, Output::Trace(doc, _)) => {
-            let count = doc.steps(0).len();
-            if *step > count {
-                return Err(format!("step {step} is past the trace's {count} steps"));
-            }
-            let names = guide::values(doc, 0, step - 1);
-            names.get(value).cloned().ok_or_else(|| {
-                let have: Vec<&str> = names.keys().map(String::as_str).collect();
-                format!("step {step} has no {value}; it has {}", have.join(", "))
-            })
-        }
-        (Source::Json(pointer), Output::Trace(doc, _)) => {
-            let value = serde_json::to_value(doc.as_ref()).map_err(|e| e.to_string())?;
-            let found = value
-                .pointer(pointer)
-                .ok_or_else(|| format!("the trace has no {pointer}"))?;
-            json_number(found)
-                .ok_or_else(|| format!("{pointer} is {found}: not a number, a vector or a word"))
+        (Source::Step { .. } | Source::Json(_), Output::Trace(doc, _)) => {
+            spec_number::from_trace(&n.source, doc)
         }
         (Source::After(before), Output::Text(text)) => {
             let at = text
@@ -272,20 +255,6 @@ fn word(chars: &[char]) -> Option<String> {
     let w: String = chars.iter().collect();
     let w = w.trim_end_matches(['.', ':']).to_owned();
     (!w.is_empty()).then_some(w)
-}
-
-fn json_number(v: &Value) -> Option<String> {
-    match v {
-        Value::Number(n) if n.is_u64() || n.is_i64() => Some(n.to_string()),
-        Value::Number(n) => n.as_f64().map(num),
-        Value::String(s) => Some(s.clone()),
-        Value::Bool(b) => Some(b.to_string()),
-        Value::Array(a) if a.len() == 3 => {
-            let xyz: Option<Vec<f64>> = a.iter().map(Value::as_f64).collect();
-            xyz.map(|v| vec3(glam::DVec3::new(v[0], v[1], v[2])))
-        }
-        _ => None,
-    }
 }
 
 /// Steps `from..=to` of a trace's text (`raytree trace --steps`), or the whole
