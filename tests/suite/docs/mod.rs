@@ -5,6 +5,7 @@ mod architecture;
 mod book;
 mod browser;
 mod guide;
+mod paths;
 mod readme;
 mod structures;
 mod vectors;
