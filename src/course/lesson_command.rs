@@ -78,7 +78,8 @@ pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
     if args.is_empty() {
         return Err("no command after raytree".to_owned());
     }
-    if !COMMANDS.contains(&args[0].as_str()) {
+    let help = ["--help", "-h", "--version", "-V"].contains(&args[0].as_str());
+    if !help && !COMMANDS.contains(&args[0].as_str()) {
         return Err(format!(
             "'{}' is not a raytree command (they are: {})",
             args[0],
