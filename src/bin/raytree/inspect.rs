@@ -91,7 +91,15 @@ pub fn run(args: &Args) -> Result<()> {
     }
     app.set_colors(truecolor, note);
     if !output::stdout_is_terminal() {
-        bail!("raytree inspect needs a terminal (standard output is not one)");
+        // A script prints as text only as a lesson's: the lesson command
+        // has the frame that heads the text.
+        let as_text = match &args.script {
+            Some(_) => {
+                "; to print a script as text, name it steps.toml in a folder NN-topic beside a lesson.toml (title, summary, objectives, minutes: lessons/README.md) and run raytree lesson --lessons DIR N --text"
+            }
+            None => "",
+        };
+        bail!("raytree inspect needs a terminal (standard output is not one){as_text}");
     }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
 }

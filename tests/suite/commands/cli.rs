@@ -755,6 +755,22 @@ fn inspect_refuses_to_run_without_a_terminal_or_with_a_bad_trace() {
         fails_in("inspect", "inspect-tty", None, &[]),
         "error: raytree inspect needs a terminal (standard output is not one)"
     );
+    // A script once got only that, with no way to read it as text.
+    let scene = scenes().join("whitted.json");
+    let script = format!(
+        "scene = \"{}\"\npixel = [1, 2]\n[[stop]]\nstep = 1\nsay = \"c = {{c}}\"\n",
+        scene.display()
+    );
+    let e = crate::common::refused(
+        "inspect-script-tty",
+        &[("mine.toml", script.as_bytes())],
+        &["inspect", "--script", "mine.toml"],
+    );
+    assert!(
+        e.contains("to print a script as text, name it steps.toml in a folder NN-topic")
+            && e.contains("raytree lesson --lessons DIR N --text"),
+        "{e}"
+    );
 }
 
 /// `--stats` prints its counts on standard output (the rays by kind, the tests
