@@ -4,6 +4,7 @@
 //! inspector), and it reads what the views write.
 
 pub mod teacher_file; // the small TOML files a teacher writes, read with line-numbered errors
+pub mod step_values; // the numbers a stop may quote at a step, named as the step's line says them
 pub mod guide; // a guided step-through: a teacher's stops with the trace's numbers
 pub(crate) mod spec_file; // a spec file's TOML as serde reads it
 pub mod lesson_spec; // a lesson's spec: the commands behind its figures and numbers, its exercises
