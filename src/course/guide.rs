@@ -27,8 +27,8 @@ use std::path::{Path, PathBuf};
 
 use serde::Deserialize;
 
-use crate::course::teacher_file;
 pub use crate::course::step_values::values;
+use crate::course::teacher_file;
 use crate::scene::settings::RenderSettings;
 use crate::tree::document::TraceDocument;
 use crate::tree::record::TraceError;
@@ -117,16 +117,6 @@ pub fn parse(path: &Path, text: &str) -> Result<Script, String> {
             "{at}: no [[stop]]: a step-through needs at least one"
         ));
     }
-    for (i, pair) in file.stop.windows(2).enumerate() {
-        if pair[1].step <= pair[0].step {
-            return Err(format!(
-                "{at}: stop {}: step {} does not come after step {}; stops go forward",
-                i + 2,
-                pair[1].step,
-                pair[0].step
-            ));
-        }
-    }
     if let Some(s) = file.stop.iter().position(|s| s.step == 0) {
         return Err(format!("{at}: stop {}: steps count from 1", s + 1));
     }
@@ -195,8 +185,9 @@ pub struct Narration {
 }
 
 /// Fills every stop's placeholders from `trace` (traced at the script's pixel).
-/// A stop past the last step, or a placeholder the step has no number for, is
-/// an error naming the stop and what the step does have.
+/// A stop past the last step (named before any order), stops that do not go
+/// forward, or a placeholder the step has no number for, is an error naming
+/// the stop and what the step does have.
 pub fn narrate(script: &Script, trace: &TraceDocument) -> Result<Vec<Narration>, String> {
     let at = script.path.display();
     if script.sample >= trace.samples.len() {
@@ -205,6 +196,26 @@ pub fn narrate(script: &Script, trace: &TraceDocument) -> Result<Vec<Narration>,
             script.sample + 1,
             trace.samples.len()
         ));
+    }
+    // Each step's range first: a step past the end, written before the
+    // others, is the problem, not their order.
+    let steps = trace.steps(script.sample).len();
+    if let Some(i) = script.stops.iter().position(|s| s.step > steps) {
+        return Err(format!(
+            "{at}: stop {}: step {} is past the pixel's {steps} steps",
+            i + 1,
+            script.stops[i].step
+        ));
+    }
+    for (i, pair) in script.stops.windows(2).enumerate() {
+        if pair[1].step <= pair[0].step {
+            return Err(format!(
+                "{at}: stop {}: step {} does not come after step {}; stops go forward",
+                i + 2,
+                pair[1].step,
+                pair[0].step
+            ));
+        }
     }
     (0..script.stops.len())
         .map(|i| {
@@ -313,10 +324,6 @@ mod tests {
         let cases = [
             ("scene = 1\n", "lessons/x/steps.toml: line 1:"),
             ("scene = \"a\"\npixel = [1, 2]\nstop = []\n", "no [[stop]]"),
-            (
-                "scene = \"a\"\npixel = [1, 2]\n[[stop]]\nstep = 2\nsay = \"\"\n[[stop]]\nstep = 2\nsay = \"\"\n",
-                "stop 2: step 2 does not come after step 2",
-            ),
             (
                 "scene = \"a\"\npixel = [1, 2]\nzoom = 3\n[[stop]]\nstep = 1\nsay = \"\"\n",
                 "line 3: unknown field `zoom`",

@@ -79,6 +79,26 @@ fn a_stop_at_total_internal_reflection_quotes_the_angles_of_the_trace() {
             steps.len()
         )
     );
+    // Stops go forward; but a step past the end is named first, wherever it
+    // is written (it was hidden behind the order of the stops after it).
+    let script = |first: usize, second: usize| {
+        let text = format!(
+            "scene = \"x\"\npixel = [416, 209]\n[[stop]]\nstep = {first}\nsay = \"\"\n\
+             [[stop]]\nstep = {second}\nsay = \"\"\n"
+        );
+        narrate(&parse(Path::new("s.toml"), &text).unwrap(), &trace).unwrap_err()
+    };
+    assert_eq!(
+        script(2, 2),
+        "s.toml: stop 2: step 2 does not come after step 2; stops go forward"
+    );
+    assert_eq!(
+        script(9999, 11),
+        format!(
+            "s.toml: stop 1: step 9999 is past the pixel's {} steps",
+            steps.len()
+        )
+    );
 }
 
 /// Lesson 12 quotes what a search cost: the boxes and primitives of a ray's
