@@ -37,7 +37,7 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             held(&args.lessons, &entries, n)?;
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
-            numbers_made(&loaded.entry)?;
+            makeable(&loaded.entry)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
             if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
@@ -94,13 +94,36 @@ pub fn held(dir: &Path, entries: &[lesson::Entry], n: u32) -> Result<()> {
     )))
 }
 
-/// Refuses, before the lesson opens, a number of its spec read from a trace
-/// (`step` + `value`, or `json`) that the book could not make: a run whose
-/// command fails, a step past the trace's, a value the step lacks. Each
-/// run is traced once, as `raytree trace` would; the runs of text and the
-/// questions are made only with the book.
-fn numbers_made(entry: &lesson::Entry) -> Result<()> {
+/// Refuses, before the lesson opens, what the book could not make: a run,
+/// figure or image whose command raytree's grammar refuses (a misspelt
+/// flag), and a number read from a trace (`step` + `value`, or `json`)
+/// whose run fails (a pixel off the image), whose step is past the trace's
+/// or whose value the step lacks. Each such run is traced once, as `raytree
+/// trace` would; the other commands run, and the questions are made, only
+/// with the book.
+fn makeable(entry: &lesson::Entry) -> Result<()> {
     let spec = entry.folder.join(lesson::SPEC);
+    let s = &entry.spec;
+    let commands = (s.runs.iter().map(|(n, r)| ("run", n, r.line, &r.command)))
+        .chain(
+            s.figures
+                .iter()
+                .map(|(n, f)| ("figure", n, f.line, &f.command)),
+        )
+        .chain(
+            s.images
+                .iter()
+                .map(|(n, i)| ("image", n, i.line, &i.command)),
+        );
+    for (what, name, line, command) in commands {
+        crate::parse_words(&command.args).map_err(|e| {
+            anyhow!(
+                "{}: line {line}: {what} {name}: `{}`: {e}",
+                spec.display(),
+                command.text
+            )
+        })?;
+    }
     let mut traces: BTreeMap<&str, TraceDocument> = BTreeMap::new();
     for (name, number) in &entry.spec.numbers {
         let run = &entry.spec.runs[&number.run];

@@ -217,15 +217,22 @@ fn one_line(e: &clap::Error) -> String {
 }
 
 /// A command line a lesson's spec writes (the words after `raytree`), read
-/// by the grammar a learner's typing meets: `raytree lesson N` traces a
-/// run's pixel as `raytree trace` would.
-fn parse_words(args: &[String]) -> Result<Command, String> {
+/// by the grammar a learner's typing meets: `raytree lesson N` refuses one
+/// that would fail, and traces a run's pixel as `raytree trace` would.
+/// `None`: it asks for help or the version.
+fn parse_words(args: &[String]) -> Result<Option<Command>, String> {
+    use clap::error::ErrorKind;
     let words = std::iter::once("raytree").chain(args.iter().map(String::as_str));
-    grammar()
+    match grammar()
         .try_get_matches_from(words)
         .and_then(|m| Cli::from_arg_matches(&m))
-        .map(|cli| cli.command)
-        .map_err(|e| one_line(&e))
+    {
+        Ok(cli) => Ok(Some(cli.command)),
+        Err(e) if matches!(e.kind(), ErrorKind::DisplayHelp | ErrorKind::DisplayVersion) => {
+            Ok(None)
+        }
+        Err(e) => Err(one_line(&e)),
+    }
 }
 
 /// The subcommands named first on the command line, e.g. `raytree generate

@@ -61,7 +61,8 @@ pub fn run(args: &Args) -> Result<()> {
 /// The trace a spec's run (`raytree trace ARGS…`, the words after
 /// `raytree`) prints, recorded here as the command would record it.
 pub fn document(args: &[String]) -> Result<raytree::tree::document::TraceDocument> {
-    let crate::Command::Trace(args) = crate::parse_words(args).map_err(anyhow::Error::msg)? else {
+    let Some(crate::Command::Trace(args)) = crate::parse_words(args).map_err(anyhow::Error::msg)?
+    else {
         return Err(anyhow::anyhow!("not a raytree trace"));
     };
     let (scene, source) = args.scene.load()?;

@@ -261,6 +261,21 @@ fn raytree_lesson_refuses_a_number_the_book_could_not_make() {
             }
         }
     }
+    // A figure's misspelt flag is refused too, before the book would draw it.
+    std::fs::write(
+        lesson.join("lesson.toml"),
+        format!(
+            "{FRAME}[figure.f]\ncommand = \"raytree diagram {scene} --pixel 1,2 --sise 9x9\"\n\
+             caption = \"F.\"\n"
+        ),
+    )
+    .unwrap();
+    let (ok, _, err) = raytree(&["lesson", "--lessons", &dir_arg, "7", "--text"]);
+    assert!(
+        !ok && err.contains("lesson.toml: line 5: figure f: `raytree diagram")
+            && err.contains("unexpected argument '--sise'"),
+        "{err}"
+    );
 }
 
 /// A folder that is not a lesson (a teacher's `drafts/`, notes) is passed
