@@ -37,7 +37,7 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             held(&args.lessons, &entries, n)?;
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
-            makeable(&loaded.entry)?;
+            makeable(&loaded.entry, &args.lessons)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
             if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
@@ -99,9 +99,15 @@ pub fn held(dir: &Path, entries: &[lesson::Entry], n: u32) -> Result<()> {
 /// flag), and a number read from a trace (`step` + `value`, or `json`)
 /// whose run fails (a pixel off the image), whose step is past the trace's
 /// or whose value the step lacks. Each such run is traced once, as `raytree
-/// trace` would; the other commands run, and the questions are made, only
-/// with the book.
-fn makeable(entry: &lesson::Entry) -> Result<()> {
+/// trace` would, typed in the folder holding `lessons` (the repository,
+/// for its `lessons/`); the other commands run, and the questions are made,
+/// only with the book.
+fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
+    // `--lessons .` or `..` has no parent to name: its `..` is.
+    let root = match (lessons.file_name(), lessons.parent()) {
+        (Some(_), Some(parent)) => parent.to_owned(),
+        _ => lessons.join(".."),
+    };
     let spec = entry.folder.join(lesson::SPEC);
     let s = &entry.spec;
     let commands = (s.runs.iter().map(|(n, r)| ("run", n, r.line, &r.command)))
@@ -131,7 +137,7 @@ fn makeable(entry: &lesson::Entry) -> Result<()> {
             continue;
         }
         if !traces.contains_key(number.run.as_str()) {
-            let doc = crate::trace::document(&run.command.args).map_err(|e| {
+            let doc = crate::trace::document(&run.command.args, &root).map_err(|e| {
                 anyhow!(
                     "{}: line {}: run {}: `{}`: {e:#}",
                     spec.display(),
