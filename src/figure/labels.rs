@@ -94,6 +94,22 @@ pub struct Label {
     pub tag: String,
 }
 
+impl Label {
+    /// A plain label naming the point `at` (pixels), kept `clearance` pixels
+    /// from it: what most figures place (no badge, never left out, no tag).
+    pub fn at_point(text: String, size: f32, color: Rgb, at: DVec2, clearance: f64) -> Label {
+        Label {
+            text,
+            size,
+            color,
+            target: Target::Point { at, clearance },
+            boxed: false,
+            optional: false,
+            tag: String::new(),
+        }
+    }
+}
+
 /// A placed label.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Placed {
@@ -365,15 +381,7 @@ mod tests {
     use super::*;
 
     fn point(text: &str, at: DVec2) -> Label {
-        Label {
-            text: text.into(),
-            size: 14.0,
-            color: [0, 0, 0],
-            target: Target::Point { at, clearance: 4.0 },
-            boxed: false,
-            optional: false,
-            tag: String::new(),
-        }
+        Label::at_point(text.into(), 14.0, [0, 0, 0], at, 4.0)
     }
 
     #[test]

@@ -6,7 +6,7 @@
 use glam::DVec2;
 
 use crate::figure::canvas::{Anchor, Figure};
-use crate::figure::labels::{Label, Placed, PxRect, Target, place, text_box};
+use crate::figure::labels::{Label, Placed, PxRect, place, text_box};
 use crate::figure::pen::{Pen, palette};
 use crate::methods::Offset;
 use crate::trace::sweep::Point;
@@ -221,17 +221,15 @@ fn draw_points(
     let mut avoid: Vec<PxRect> = px.iter().map(|&c| PxRect::around(c, RING)).collect();
     avoid.extend_from_slice(blocked);
     let lines: Vec<[DVec2; 2]> = front.windows(2).map(|w| [px[w[0]], px[w[1]]]).collect();
-    let labels = order.iter().map(|&i| Label {
-        text: points[i].label.clone(),
-        size: 13.0,
-        color: palette::INK,
-        target: Target::Point {
-            at: px[i],
-            clearance: if points[i].default { RING + 1.0 } else { 5.0 },
-        },
-        boxed: false,
-        optional: false,
-        tag: String::new(),
+    let labels = order.iter().map(|&i| {
+        let clearance = if points[i].default { RING + 1.0 } else { 5.0 };
+        Label::at_point(
+            points[i].label.clone(),
+            13.0,
+            palette::INK,
+            px[i],
+            clearance,
+        )
     });
     let f = fig.frame();
     let frame = PxRect {

@@ -151,17 +151,8 @@ pub fn draw_with_labels(
     // The labels, most important first, each at what it names; on the right
     // each part's name with its value under it.
     let small = text - 2.0;
-    let label = |words: String, size: f32, color, at: DVec2, clearance: f64| Label {
-        text: words,
-        size,
-        color,
-        target: Target::Point {
-            at: fig.to_px(at),
-            clearance,
-        },
-        boxed: false,
-        optional: false,
-        tag: String::new(),
+    let label = |words: String, size: f32, color, at: DVec2, clearance: f64| {
+        Label::at_point(words, size, color, fig.to_px(at), clearance)
     };
     // Just above the arcs, either side of n: each angle on its own side.
     let above = DVec2::new(0.0, 0.46);

@@ -9,7 +9,7 @@
 use glam::DVec2;
 
 use crate::figure::canvas::{Anchor, Figure};
-use crate::figure::labels::{self, Label, PxRect, Target};
+use crate::figure::labels::{self, Label, PxRect};
 use crate::figure::pen::{Pen, palette};
 use crate::tree::arithmetic::{CameraRecord, CameraStage};
 use crate::tree::document::TraceDocument;
@@ -80,18 +80,7 @@ fn place(fig: &mut Figure, labels: Vec<Label>, lines: &[[DVec2; 2]]) {
 }
 
 fn label(fig: &Figure, text: String, at: DVec2, size: f32, clearance: f64) -> Label {
-    Label {
-        text,
-        size,
-        color: palette::INK,
-        target: Target::Point {
-            at: fig.to_px(at),
-            clearance,
-        },
-        boxed: false,
-        optional: false,
-        tag: String::new(),
-    }
+    Label::at_point(text, size, palette::INK, fig.to_px(at), clearance)
 }
 
 /// The whole image plane in its own coordinates `(u, v)`.
