@@ -49,7 +49,7 @@ pub const GLYPHS: &[(&str, &str)] = &[
 pub fn draw(frame: &mut Frame, app: &App) {
     let tc = app.truecolor();
     let area = frame.area();
-    let guide_lines = guide_text(app, area.width);
+    let guide_lines = guide_text(app, area);
     let step_lines = step_text(app, area.width);
     let panes = Panes::new(
         area,
@@ -97,14 +97,17 @@ pub fn draw(frame: &mut Frame, app: &App) {
 pub(super) fn panes(app: &App, area: Rect) -> Panes {
     Panes::new(
         area,
-        guide_text(app, area.width).len() as u16,
+        guide_text(app, area).len() as u16,
         step_text(app, area.width).len() as u16,
         app.screen().pane(),
     )
 }
 
-/// The guided step-through's current stop, wrapped (nothing when not guided).
-fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
+/// The guided step-through's current stop, wrapped; up to a quarter of the
+/// terminal's rows (at least 4), a longer stop cut with the marker the help
+/// explains. Away from the guide's pixel, only where its stops are, since
+/// they quote that pixel's numbers. Nothing when not guided.
+fn guide_text(app: &App, area: Rect) -> Vec<Line<'static>> {
     let Some(g) = app.guide() else {
         return Vec::new();
     };
@@ -113,16 +116,40 @@ fn guide_text(app: &App, width: u16) -> Vec<Line<'static>> {
     };
     let title = g.title().unwrap_or("guided");
     let (at, stops) = g.position();
-    let head = Span::styled(
-        format!("{title} · stop {}/{stops}: ", at + 1),
-        Style::default()
-            .fg(Color::Cyan)
-            .add_modifier(Modifier::BOLD),
-    );
+    let width = usize::from(area.width);
+    let bold_cyan = Style::default()
+        .fg(Color::Cyan)
+        .add_modifier(Modifier::BOLD);
+    if !app.guided_here() {
+        let (x, y) = g.pixel();
+        return vec![cut(
+            Line::from(vec![
+                Span::styled(format!("{title} · paused: "), bold_cyan),
+                Span::raw(format!(
+                    "its stops tell pixel {x},{y} (g {x},{y} goes back to stop {})",
+                    at + 1
+                )),
+            ]),
+            width,
+        )];
+    }
+    let head = Span::styled(format!("{title} · stop {}/{stops}: ", at + 1), bold_cyan);
     let line = Line::from(vec![head, Span::raw(told.replace('\n', " "))]);
-    let mut lines = wrap(vec![line], usize::from(width));
-    lines.truncate(4);
+    let mut lines = wrap(vec![line], width);
+    let room = usize::from(area.height / 4).max(4);
+    if lines.len() > room {
+        lines.truncate(room);
+        mark_cut(&mut lines, width);
+    }
     lines
+}
+
+/// Ends the last of `lines` with the cut marker, within `width` columns.
+fn mark_cut(lines: &mut [Line<'static>], width: usize) {
+    if let Some(last) = lines.last_mut() {
+        *last = cut(last.clone(), width.saturating_sub(1));
+        last.spans.push(Span::raw(super::fit::CUT));
+    }
 }
 
 /// The step lines: a prompt being typed, or the current step with the call
@@ -175,10 +202,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let mut told = wrap(vec![Line::from(what)], w);
     if told.len() > 2 {
         told.truncate(2);
-        told[1] = cut(told[1].clone(), w.saturating_sub(1));
-        if let Some(last) = told.get_mut(1) {
-            last.spans.push(Span::raw(super::fit::CUT));
-        }
+        mark_cut(&mut told, w);
     }
     lines.extend(told);
     lines

@@ -16,20 +16,48 @@ use crate::tree::document::TraceDocument;
 use crate::tree::steps::StepKind;
 
 impl App {
-    /// Traces pixel `(x, y)` and shows its tree.
+    /// Traces pixel `(x, y)` and shows its tree; back at a guided
+    /// step-through's pixel, at the stop it showed. Without the scene only
+    /// the saved trace's pixel is known, so the cursor stays on it: panes
+    /// must never describe another pixel than the one named.
     pub fn select(&mut self, (x, y): (u32, u32)) {
         let (w, h) = self.image_size();
         let (x, y) = (x.min(w - 1), y.min(h - 1));
+        let Some(scene) = &self.scene else {
+            if (x, y) != self.cursor() {
+                self.message = self.no_scene_here();
+            }
+            return;
+        };
         self.selection.set_pixel((x, y));
-        let Some(scene) = &self.scene else { return };
         let started = Instant::now();
         match scene.record(self.source.clone(), x, y) {
             Ok(trace) => {
                 self.set_trace(trace);
                 self.selection.set_traced_in(started.elapsed());
+                if self.guided_here() {
+                    self.stop_by(0);
+                }
             }
             Err(e) => self.message = e.to_string(),
         }
+    }
+
+    /// Why the cursor cannot leave the saved trace's pixel.
+    pub(in crate::inspector) fn no_scene_here(&self) -> String {
+        let (x, y) = self.cursor();
+        format!(
+            "only pixel {x},{y} is here (the saved trace): scene {} not found, so no other pixel can be traced",
+            self.source.file
+        )
+    }
+
+    /// Whether a guided step-through is followed and its pixel is the one
+    /// selected: elsewhere its stops would quote numbers of another pixel.
+    pub(in crate::inspector) fn guided_here(&self) -> bool {
+        self.guide
+            .as_ref()
+            .is_some_and(|g| g.pixel() == self.cursor())
     }
 
     /// Shows `trace`, not stepping.

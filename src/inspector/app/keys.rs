@@ -45,14 +45,11 @@ impl App {
                 Focus::Image => Focus::Tree,
                 Focus::Tree => Focus::Image,
             }),
-            Action::Next => match self.guide {
-                Some(_) => self.stop_by(1),
-                None => self.step_by(1),
-            },
-            Action::Previous => match self.guide {
-                Some(_) => self.stop_by(-1),
-                None => self.step_by(-1),
-            },
+            // Away from the guide's pixel, its stops are of another pixel.
+            Action::Next if self.guided_here() => self.stop_by(1),
+            Action::Next => self.step_by(1),
+            Action::Previous if self.guided_here() => self.stop_by(-1),
+            Action::Previous => self.step_by(-1),
             Action::StepForward => self.step_by(1),
             Action::StepBack => self.step_by(-1),
             Action::LeaveStepping => self.stepping.leave(),
@@ -210,6 +207,15 @@ impl App {
 
     /// Goes to the next pixel with what `f` seeks.
     fn find(&mut self) {
+        if self.scene.is_none() {
+            // The search traces every pixel: without the scene it would find
+            // nothing and wrongly say so.
+            self.message = format!(
+                "f searches the whole image, which needs the scene: {}",
+                self.no_scene_here()
+            );
+            return;
+        }
         let (found, said) = self.finding.find(self.scene.as_ref(), self.cursor());
         self.message = said;
         if let Some(p) = found {

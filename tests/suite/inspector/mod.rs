@@ -2,6 +2,7 @@
 //! reveals, the real binary driven in tmux, and its work per key.
 
 mod keys;
+mod review;
 mod state;
 mod teaching;
 pub mod tmux;

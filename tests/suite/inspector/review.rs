@@ -1,0 +1,166 @@
+//! What a student's review of the inspector found, each kept fixed: no pane
+//! describes another pixel than the one shown, no text is cut without its
+//! marker, an error names the typed mistake, and no edit is lost unasked.
+
+use std::path::Path;
+
+use ratatui::Terminal;
+use ratatui::backend::TestBackend;
+use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
+use ratatui::layout::Rect;
+use raytree::inspector::{App, draw};
+use raytree::scene::source::SceneSource;
+use raytree::tree::record;
+
+fn key(app: &mut App, code: KeyCode) {
+    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
+}
+
+fn keys(app: &mut App, text: &str) {
+    for c in text.chars() {
+        key(app, KeyCode::Char(c));
+    }
+}
+
+/// Types `typed` after the key `k` opens a prompt, and Enter.
+fn prompt(app: &mut App, k: char, typed: &str) {
+    key(app, KeyCode::Char(k));
+    keys(app, typed);
+    key(app, KeyCode::Enter);
+}
+
+fn whitted_at(pixel: (u32, u32)) -> App {
+    App::new(
+        raytree::scene::loader::whitted(),
+        SceneSource::new("scenes/whitted.json", ""),
+        Some(pixel),
+        false,
+    )
+}
+
+/// The screen drawn at `w`×`h`, one line per row (symbols only).
+fn screen(app: &mut App, w: u16, h: u16) -> String {
+    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
+    raytree::inspector::tick(app, Rect::new(0, 0, w, h));
+    terminal.draw(|f| draw(f, app)).unwrap();
+    let buffer = terminal.backend().buffer().clone();
+    (0..buffer.area.height)
+        .map(|y| {
+            let row: String = (0..buffer.area.width)
+                .map(|x| buffer[(x, y)].symbol().to_owned())
+                .collect();
+            row.trim_end().to_owned() + "\n"
+        })
+        .collect()
+}
+
+/// The Whitted scene followed by a guided step-through of pixel 416,209 whose
+/// stops are at steps 1 and 5 and say `first` and `second`.
+fn guided(first: &str, second: &str) -> App {
+    let script = raytree::course::guide::parse(
+        Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/review.toml")),
+        &format!(
+            "title = \"Review\"\nscene = \"../scenes/whitted.json\"\npixel = [416, 209]\n\
+             [[stop]]\nstep = 1\nsay = \"{first}\"\n[[stop]]\nstep = 5\nsay = \"{second}\"\n"
+        ),
+    )
+    .unwrap();
+    let mut app = whitted_at((0, 0));
+    app.follow(script).unwrap();
+    app
+}
+
+#[test]
+fn away_from_the_guides_pixel_its_stops_are_hidden_and_n_steps_this_pixel() {
+    let mut app = guided("at the camera, c = {c}", "the fifth step");
+    key(&mut app, KeyCode::Char('n'));
+    assert_eq!(app.step(), Some(4), "n goes to the second stop");
+    prompt(&mut app, 'g', "450,209");
+    assert_eq!(app.cursor(), (450, 209));
+    let away = screen(&mut app, 80, 24);
+    assert!(
+        !away.contains("the fifth step") && away.contains("Review · paused"),
+        "the stop, of pixel 416,209, is not shown at 450,209:\n{away}"
+    );
+    key(&mut app, KeyCode::Char('p'));
+    assert_eq!(
+        app.step(),
+        Some(app.steps().len() - 1),
+        "p steps back through this pixel's algorithm, not to a stop of another pixel"
+    );
+    key(&mut app, KeyCode::Char('x'));
+    key(&mut app, KeyCode::Char('n'));
+    assert_eq!(
+        app.step(),
+        Some(0),
+        "n starts stepping this pixel, as its hint says"
+    );
+    prompt(&mut app, 'g', "416,209");
+    assert_eq!(
+        app.step(),
+        Some(4),
+        "back at the guide's pixel, at its stop"
+    );
+    let back = screen(&mut app, 80, 24);
+    assert!(back.contains("Review · stop 2/2: the fifth step"), "{back}");
+}
+
+#[test]
+fn a_long_stop_wraps_and_a_too_long_one_is_cut_with_the_marker() {
+    // About four lines and a half at 80 columns, like lesson 10's stop 4.
+    let long = format!("{} its reflected ray keeps all of it.", "word ".repeat(56));
+    let mut app = guided(&long, "second");
+    let shown = screen(&mut app, 80, 24);
+    assert!(
+        shown.contains("keeps all of it."),
+        "the whole stop is shown:\n{shown}"
+    );
+    let mut app = guided(&"word ".repeat(400), "second");
+    let shown = screen(&mut app, 80, 24);
+    let last = shown
+        .lines()
+        .rev()
+        .find(|l| l.contains("word"))
+        .unwrap_or_else(|| panic!("{shown}"));
+    assert!(last.ends_with('…'), "a cut stop says so: {last:?}\n{shown}");
+}
+
+/// A saved trace without its scene: only that pixel is known.
+fn saved_trace_alone() -> App {
+    let scene = raytree::scene::loader::whitted();
+    let trace = record::pixel(
+        &scene,
+        SceneSource::new("scenes/whitted.json", ""),
+        416,
+        209,
+        None,
+    )
+    .unwrap();
+    App::from_trace(trace, None, false)
+}
+
+#[test]
+fn without_the_scene_the_cursor_stays_on_the_saved_pixel_and_f_says_why() {
+    let mut app = saved_trace_alone();
+    for go in [
+        |app: &mut App| prompt(app, 'g', "100,100"),
+        |app: &mut App| {
+            key(app, KeyCode::Char('i'));
+            key(app, KeyCode::Right);
+        },
+    ] {
+        go(&mut app);
+        assert_eq!(app.cursor(), (416, 209), "the panes show 416,209");
+        assert!(
+            app.message().contains("only pixel 416,209"),
+            "{}",
+            app.message()
+        );
+    }
+    key(&mut app, KeyCode::Char('f'));
+    assert!(
+        !app.message().contains("no pixel has") && app.message().contains("needs the scene"),
+        "f does not claim the saved pixel has no total internal reflection: {}",
+        app.message()
+    );
+}
