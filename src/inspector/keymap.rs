@@ -180,12 +180,18 @@ pub const KEYS: &[Binding] = &[
         ],
     },
     row(
-        "Enter / →",
+        "Enter",
         "expand the selected ray (tree pane); from the image, go to the tree",
         &[(Key::code(KeyCode::Enter), Action::Enter)],
     ),
-    // ← is bound with the arrows: this row says what it does in the tree.
-    row("←", "collapse the selected ray, or go to its parent", &[]),
+    // → and ← are bound with the arrows (in the image they move the cursor):
+    // these rows say what they do in the tree.
+    row("→", "tree pane: expand the selected ray", &[]),
+    row(
+        "←",
+        "tree pane: collapse the selected ray, or go to its parent",
+        &[],
+    ),
     row(
         "e",
         "expand the whole tree",

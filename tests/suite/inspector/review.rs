@@ -164,3 +164,29 @@ fn without_the_scene_the_cursor_stays_on_the_saved_pixel_and_f_says_why() {
         app.message()
     );
 }
+
+/// Every key the help says goes from the image to the tree does so.
+#[test]
+fn the_keys_the_help_says_go_to_the_tree_do() {
+    let said: Vec<&str> = raytree::inspector::KEYS
+        .iter()
+        .filter(|b| b.what.contains("go to the tree"))
+        .flat_map(|b| b.keys.split(" / "))
+        .collect();
+    assert!(!said.is_empty(), "the help says how to go to the tree");
+    for name in said {
+        let code = match name {
+            "Enter" => KeyCode::Enter,
+            "→" | "l" => KeyCode::Right,
+            other => panic!("a key this test does not know: {other}"),
+        };
+        let mut app = whitted_at((416, 209));
+        key(&mut app, KeyCode::Char('i'));
+        key(&mut app, code);
+        assert_eq!(
+            app.focus(),
+            raytree::inspector::Focus::Tree,
+            "{name} from the image goes to the tree, as the help says"
+        );
+    }
+}
