@@ -152,8 +152,8 @@ fn mark_cut(lines: &mut [Line<'static>], width: usize) {
     }
 }
 
-/// The step lines: a prompt being typed, or the current step with the call
-/// stack above it, or how to start.
+/// The step lines: a prompt being typed, or any message above the current
+/// step and its call stack, or how to start.
 fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let bold = Style::default().add_modifier(Modifier::BOLD);
     let w = usize::from(width);
@@ -171,9 +171,16 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
             w,
         )];
     }
+    // A message is wrapped, not cut: a refused edit's reason is read nowhere else.
+    let mut said = wrap(vec![Line::from(app.message().to_owned())], w);
+    said.retain(|l| l.width() > 0);
+    if said.len() > 4 {
+        said.truncate(4);
+        mark_cut(&mut said, w);
+    }
     let Some(s) = app.step() else {
-        if !app.message().is_empty() {
-            return vec![cut(Line::from(app.message().to_owned()), w)];
+        if !said.is_empty() {
+            return said;
         }
         let find = format!("f: find a {}", app.finding().seek().name());
         return vec![cut(
@@ -198,7 +205,8 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
         Span::raw(" (x: whole tree)"),
     ]);
     let what = describe(trace, sample, &app.steps()[s]).0;
-    let mut lines = vec![cut(first, w)];
+    let mut lines = said;
+    lines.push(cut(first, w));
     let mut told = wrap(vec![Line::from(what)], w);
     if told.len() > 2 {
         told.truncate(2);
@@ -208,7 +216,7 @@ fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     lines
 }
 
-/// The status line: any message, the pixel, the zoom, the scene, the time to
+/// The status line: the pixel, the zoom, the scene, the time to
 /// trace (or where a saved trace came from), what an overlay shows.
 fn status_text(app: &App, width: u16) -> Line<'static> {
     let (w, h) = app.image_size();
@@ -238,9 +246,6 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     }
     if let Some(note) = app.color_note() {
         parts.push(note.to_owned());
-    }
-    if !app.message().is_empty() && app.step().is_some() {
-        parts.insert(0, app.message().to_owned());
     }
     cut(
         Line::from(Span::styled(

@@ -16,6 +16,7 @@ use serde_json::{Map, Value};
 
 use crate::io::output::PendingFile;
 use crate::scene::Scene;
+use crate::scene::scene_error::SceneError;
 use crate::scene::source::SceneSource;
 
 /// The material fields an edit may change, as the scene file names them.
@@ -60,7 +61,7 @@ pub fn apply(
         render
             .as_object_mut()
             .ok_or("the scene's render is not an object")?
-            .insert(field.to_owned(), value);
+            .insert(field.to_owned(), value.clone());
     } else if MATERIAL_FIELDS.contains(&field) {
         let name = material.ok_or("select a ray that hit something to edit its material")?;
         let m = edited
@@ -71,7 +72,7 @@ pub fn apply(
         if field == "color" {
             m.remove("checker");
         }
-        m.insert(field.to_owned(), value);
+        m.insert(field.to_owned(), value.clone());
     } else {
         return Err(format!(
             "'{field}' cannot be edited: try one of {}, {}",
@@ -80,7 +81,8 @@ pub fn apply(
         ));
     }
     let text = serde_json::to_string(&edited).map_err(|e| e.to_string())?;
-    let read = crate::scene::loader::parse(&text, file).map_err(|e| e.to_string())?;
+    let read =
+        crate::scene::loader::parse(&text, file).map_err(|e| refused(field, raw, &value, e))?;
     let mut settings = scene.settings;
     let new = read.settings;
     match field {
@@ -106,6 +108,35 @@ pub fn apply(
         materials,
         ..scene.clone()
     })
+}
+
+/// The fields whose value is a number.
+const NUMBER_FIELDS: &[&str] = &[
+    "ambient",
+    "diffuse",
+    "specular",
+    "shininess",
+    "reflective",
+    "transparent",
+    "ior",
+    "max_depth",
+    "cutoff",
+];
+
+/// Why the edit `field=raw` (read as `value`) was refused, in terms of the
+/// edit: the loader's line and column are of the JSON made from the edit, a
+/// place the learner never typed and the scene file does not have.
+fn refused(field: &str, raw: &str, value: &Value, e: SceneError) -> String {
+    let reason = match e {
+        _ if value.is_string() && NUMBER_FIELDS.contains(&field) => "not a number".to_owned(),
+        _ if value.is_string() && field == "color" => {
+            "not a color: type r,g,b, e.g. 1,0.5,0".to_owned()
+        }
+        SceneError::Syntax { message, .. } => message,
+        SceneError::Invalid { field, message, .. } => format!("{field}: {message}"),
+        other => other.to_string(),
+    };
+    format!("{field}={raw}: {reason}")
 }
 
 /// A typed value as JSON: a number, a color `r,g,b`, or a word (`lecture`).
@@ -364,11 +395,19 @@ mod tests {
             ("ior", "type field=value"),
             ("wobble=1", "'wobble' cannot be edited"),
             ("ior=-1", "ior"),
-            ("sphere=sideways", "sphere"),
+            ("sphere=sideways", "sphere=sideways: "),
+            ("ior=abc", "ior=abc: not a number"),
+            ("color=red", "color=red: not a color"),
+            (
+                "reflective=0.5",
+                "reflective=0.5: materials.glass: reflective + transparent must be at most 1",
+            ),
         ] {
             let e = apply(&mut json, Some("glass"), typed, &loaded, "whitted.json").unwrap_err();
             assert!(e.contains(want), "{typed}: {e}");
             assert!(!e.contains('\n'));
+            // The place is the edit's, never a line and column of the file.
+            assert!(!e.contains("whitted.json"), "{typed}: {e}");
         }
         assert_eq!(json, before);
         let scene = apply(&mut json, None, "sphere=lecture", &loaded, "whitted.json").unwrap();

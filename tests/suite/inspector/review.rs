@@ -190,3 +190,32 @@ fn the_keys_the_help_says_go_to_the_tree_do() {
         );
     }
 }
+
+/// A refused what-if names the edit and is read in full at 80×24 and 120×36,
+/// stepping or not.
+#[test]
+fn a_refused_edit_names_the_edit_and_is_shown_in_full() {
+    let squeeze = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+    for (typed, starts) in [
+        ("reflective=0.5", "reflective=0.5: materials.glass: "),
+        ("ior=abc", "ior=abc: not a number"),
+        ("foo=1", "'foo' cannot be edited"),
+    ] {
+        for (w, h) in [(80, 24), (120, 36)] {
+            for stepping in [false, true] {
+                let mut app = whitted_at((416, 209));
+                if stepping {
+                    key(&mut app, KeyCode::Char('n'));
+                }
+                prompt(&mut app, 'm', typed);
+                let said = app.message().to_owned();
+                assert!(said.starts_with(starts), "{typed}: {said}");
+                let shown = squeeze(&screen(&mut app, w, h));
+                assert!(
+                    shown.contains(&squeeze(&said)),
+                    "{typed} at {w}×{h} (stepping: {stepping}): {said:?} in full on\n{shown}"
+                );
+            }
+        }
+    }
+}
