@@ -67,6 +67,8 @@ pub struct App {
     message: String,
     /// The user asked to quit.
     quit: bool,
+    /// The last key asked to quit with unsaved edits: another quits.
+    quit_asked: bool,
     /// Draw in 24-bit color (else the 256-color palette).
     truecolor: bool,
     /// Why the terminal is drawn in 256 colors, when it is.
@@ -128,6 +130,7 @@ impl App {
             prompt: None,
             message: String::new(),
             quit: false,
+            quit_asked: false,
             truecolor: true,
             color_note: None,
             loaded_from: None,

@@ -295,7 +295,7 @@ pub const KEYS: &[Binding] = &[
     ),
     Binding {
         keys: "q / Esc",
-        what: "quit",
+        what: "quit (with unsaved what-if edits, a second press quits)",
         presses: &[
             (Key::ch('q'), Action::Quit),
             (Key::code(KeyCode::Esc), Action::Quit),

@@ -157,26 +157,29 @@ fn mark_cut(lines: &mut [Line<'static>], width: usize) {
 fn step_text(app: &App, width: u16) -> Vec<Line<'static>> {
     let bold = Style::default().add_modifier(Modifier::BOLD);
     let w = usize::from(width);
-    if let Some(prompt) = app.prompt() {
-        let (label, typed) = match prompt {
-            Prompt::GoTo(t) => ("go to pixel (x,y): ", t),
-            Prompt::Edit(t) => ("what if (field=value, e.g. ior=1.0; Esc cancels): ", t),
-            Prompt::Write(t) => ("write the edited scene to (a new file): ", t),
-        };
-        return vec![cut(
-            Line::from(vec![
-                Span::styled(label, bold),
-                Span::raw(format!("{typed}▏")),
-            ]),
-            w,
-        )];
-    }
     // A message is wrapped, not cut: a refused edit's reason is read nowhere else.
     let mut said = wrap(vec![Line::from(app.message().to_owned())], w);
     said.retain(|l| l.width() > 0);
     if said.len() > 4 {
         said.truncate(4);
         mark_cut(&mut said, w);
+    }
+    if let Some(prompt) = app.prompt() {
+        let (label, typed) = match prompt {
+            Prompt::GoTo(t) => ("go to pixel (x,y): ", t),
+            Prompt::Edit(t) => ("what if (field=value, e.g. ior=1.0; Esc cancels): ", t),
+            Prompt::Write(t) => ("write the edited scene to (a new file): ", t),
+        };
+        // Above the prompt, why it is open again (a file that exists).
+        let mut lines = said;
+        lines.push(cut(
+            Line::from(vec![
+                Span::styled(label, bold),
+                Span::raw(format!("{typed}▏")),
+            ]),
+            w,
+        ));
+        return lines;
     }
     let Some(s) = app.step() else {
         if !said.is_empty() {

@@ -202,6 +202,8 @@ pub(super) struct WhatIf {
     edits: Vec<String>,
     /// The pixel before the first edit.
     before: Option<Before>,
+    /// The edits in effect were written to a file since the last one.
+    written: bool,
 }
 
 impl WhatIf {
@@ -254,6 +256,7 @@ impl WhatIf {
             _ => typed.trim().to_owned(),
         };
         self.edits.push(label);
+        self.written = false;
         Ok(Arc::new(edited))
     }
 
@@ -268,19 +271,25 @@ impl WhatIf {
         self.edits.clear();
         self.before = None;
         self.json = None;
+        self.written = false;
         Some(loaded)
     }
 
+    /// Whether edits are in effect that no file holds: quitting loses them.
+    pub fn unsaved(&self) -> bool {
+        !self.edits.is_empty() && !self.written
+    }
+
     /// Writes the edited scene, which `source` names, to a new file `name`;
-    /// what to tell.
-    pub fn write(&self, source: &SceneSource, name: &str) -> String {
+    /// what to tell. An error is one the name can fix (the file exists, its
+    /// folder does not): the name is then edited again, not lost.
+    pub fn write(&mut self, source: &SceneSource, name: &str) -> Result<String, String> {
         let Some(json) = self.json.as_ref().filter(|_| !self.edits.is_empty()) else {
-            return "no edits to write (m: edit the selected hit's material)".to_owned();
+            return Ok("no edits to write (m: edit the selected hit's material)".to_owned());
         };
-        match write(source, json, Path::new(name.trim())) {
-            Ok(()) => format!("wrote {}", name.trim()),
-            Err(e) => e,
-        }
+        write(source, json, Path::new(name.trim()))?;
+        self.written = true;
+        Ok(format!("wrote {}", name.trim()))
     }
 }
 

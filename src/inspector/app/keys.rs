@@ -14,6 +14,7 @@ impl App {
     pub fn on_key(&mut self, key: KeyEvent) {
         // A message answers the key before; the next key clears it.
         self.message.clear();
+        let quit_asked = std::mem::take(&mut self.quit_asked);
         if self.prompt.is_some() {
             self.prompt_key(key.code);
             return;
@@ -26,20 +27,36 @@ impl App {
                 Some(Action::Up) => self.screen.scroll_help(-1),
                 Some(Action::ScrollUp) => self.screen.scroll_help(-10),
                 // q still quits; any other key (Esc too) closes the help.
-                _ if key.code == KeyCode::Char('q') => self.quit = true,
+                _ if key.code == KeyCode::Char('q') => self.ask_quit(quit_asked),
                 _ => self.screen.close_help(),
             }
             return;
         }
         if let Some(action) = action {
-            self.act(action);
+            match action {
+                Action::Quit => self.ask_quit(quit_asked),
+                _ => self.act(action),
+            }
         }
+    }
+
+    /// Quits, unless what-if edits no file holds would be lost: then the
+    /// first press asks, and a second one right after quits.
+    fn ask_quit(&mut self, asked: bool) {
+        if asked || !self.what_if.unsaved() {
+            self.quit = true;
+            return;
+        }
+        self.quit_asked = true;
+        self.message =
+            "the what-if edits are not saved: q again quits without them (w writes them)"
+                .to_owned();
     }
 
     /// Does what a key asks for.
     fn act(&mut self, action: Action) {
         match action {
-            Action::Quit => self.quit = true,
+            Action::Quit => self.ask_quit(false),
             Action::Help => self.screen.open_help(),
             Action::SwitchFocus => self.selection.set_focus(match self.focus() {
                 Focus::Image => Focus::Tree,
@@ -101,7 +118,13 @@ impl App {
             KeyCode::Enter => match self.prompt.take() {
                 Some(Prompt::GoTo(t)) => self.go_to(&t),
                 Some(Prompt::Edit(t)) => self.edit(&t),
-                Some(Prompt::Write(t)) => self.message = self.what_if.write(&self.source, &t),
+                Some(Prompt::Write(t)) => match self.what_if.write(&self.source, &t) {
+                    Ok(said) => self.message = said,
+                    Err(e) => {
+                        self.message = e;
+                        self.prompt = Some(Prompt::Write(t));
+                    }
+                },
                 None => {}
             },
             _ => {}

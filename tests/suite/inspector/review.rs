@@ -219,3 +219,59 @@ fn a_refused_edit_names_the_edit_and_is_shown_in_full() {
         }
     }
 }
+
+/// Writing to a file that exists keeps the prompt open with the name, so
+/// what is typed next edits the name instead of running as keys.
+#[test]
+fn writing_to_an_existing_file_keeps_the_name_to_edit() {
+    let dir = std::env::temp_dir().join(format!("raytree-review-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).unwrap();
+    let taken = dir.join("taken.json");
+    std::fs::write(&taken, "{}").unwrap();
+    let mut app = whitted_at((416, 209));
+    prompt(&mut app, 'm', "shininess=10");
+    key(&mut app, KeyCode::Char('w'));
+    // Erase the proposed name, type the taken one.
+    for _ in 0..300 {
+        key(&mut app, KeyCode::Backspace);
+    }
+    keys(&mut app, &taken.display().to_string());
+    key(&mut app, KeyCode::Enter);
+    assert!(app.message().contains("exists"), "{}", app.message());
+    let shown = screen(&mut app, 80, 24);
+    assert!(
+        shown.contains("exists") && shown.contains("write the edited scene to"),
+        "the reason and the prompt, still open:\n{shown}"
+    );
+    for _ in 0.."taken.json".len() {
+        key(&mut app, KeyCode::Backspace);
+    }
+    keys(&mut app, "new.json");
+    key(&mut app, KeyCode::Enter);
+    let written = dir.join("new.json");
+    assert!(written.exists(), "{}", app.message());
+    assert_eq!(app.edits().len(), 1, "the typed name ran no key");
+    assert_eq!(std::fs::read_to_string(&taken).unwrap(), "{}");
+    std::fs::remove_dir_all(&dir).unwrap();
+}
+
+/// q (or Esc) with what-if edits no file holds asks first; a second press
+/// quits; once written, q quits at once.
+#[test]
+fn quitting_with_unsaved_edits_asks_first() {
+    for quit in [KeyCode::Char('q'), KeyCode::Esc] {
+        let mut app = whitted_at((416, 209));
+        prompt(&mut app, 'm', "shininess=10");
+        key(&mut app, quit);
+        assert!(!app.quitting(), "the first press asks");
+        assert!(app.message().contains("not saved"), "{}", app.message());
+        key(&mut app, KeyCode::Char('e'));
+        key(&mut app, quit);
+        assert!(!app.quitting(), "another key between: it asks again");
+        key(&mut app, quit);
+        assert!(app.quitting(), "a second press right after quits");
+    }
+    let mut app = whitted_at((416, 209));
+    key(&mut app, KeyCode::Char('q'));
+    assert!(app.quitting(), "without edits q quits at once");
+}

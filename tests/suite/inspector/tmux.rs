@@ -180,7 +180,8 @@ fn inspect_in_a_real_terminal() {
 
 /// The learner at 80×24 in a plain tmux (no COLORTERM): one key to a
 /// total internal reflection, step through it watching the tree grow, read
-/// the full color sum, ask what if the glass had index 1.0, quit.
+/// the full color sum, ask what if the glass had index 1.0, quit (asked
+/// first, the edit being unsaved).
 #[test]
 fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection() {
     if !has_tmux() {
@@ -265,6 +266,12 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
     let screen = session.wait_for(|s| s.contains("what if"));
     if !(screen.contains("what if") && screen.contains("ior=1.0") && screen.contains(" → ")) {
         fail("the edit shows before → after", &screen);
+    }
+    // The edit is not saved: the first q asks, the second quits.
+    send(&["q"]);
+    let screen = session.wait_for(|s| s.contains("not saved"));
+    if !screen.contains("q again quits") {
+        fail("q with an unsaved edit asks first", &screen);
     }
     let (status, after) = quit(&session, &exit_file);
     assert_eq!(status.trim(), "0", "raytree inspect exit status");
