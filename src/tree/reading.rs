@@ -56,6 +56,20 @@ pub fn parse(text: &str) -> Result<TraceDocument, String> {
     Ok(trace)
 }
 
+/// Whether `start`, the first bytes of a file, begin a trace document of any
+/// version, by its `format` field (which a trace writes first): a trace given
+/// where a scene is expected is then named for what it is, not refused for
+/// the fields a scene lacks.
+pub fn starts_a_trace(start: &str) -> bool {
+    let Some(at) = start.find("\"format\"") else {
+        return false;
+    };
+    start[at + "\"format\"".len()..]
+        .trim_start()
+        .strip_prefix(':')
+        .is_some_and(|v| v.trim_start().starts_with(&format!("\"{FORMAT}\"")))
+}
+
 /// What every version of the document starts with.
 #[derive(serde::Deserialize)]
 struct Header {

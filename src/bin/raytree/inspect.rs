@@ -1,6 +1,6 @@
 //! `raytree inspect`: the terminal inspector, on a scene or a saved trace.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Result, bail};
 use raytree::course::guide;
@@ -59,7 +59,10 @@ pub fn run(args: &Args) -> Result<()> {
             app
         }
         (None, None) => {
-            let (scene, source) = args.scene.load()?;
+            let (scene, source) = args
+                .scene
+                .load()
+                .map_err(|e| a_trace_given(args.scene.scene.as_deref(), e))?;
             if let Some((x, y)) = args.pixel {
                 let s = &scene.settings;
                 if x >= s.width || y >= s.height {
@@ -102,4 +105,29 @@ pub fn run(args: &Args) -> Result<()> {
         bail!("raytree inspect needs a terminal (standard output is not one){as_text}");
     }
     inspector::run(app).map_err(|e| anyhow::anyhow!("terminal error: {e}"))
+}
+
+/// `e`, the scene's refusal, unless the file given is a saved trace: then
+/// how to open it, which its fields would not tell.
+fn a_trace_given(path: Option<&Path>, e: anyhow::Error) -> anyhow::Error {
+    // Only the start of a regular file: a device or a fifo may never end.
+    let start = |p: &Path| -> Option<String> {
+        use std::io::Read;
+        let file = std::fs::File::open(p).ok()?;
+        if !file.metadata().ok()?.is_file() {
+            return None;
+        }
+        let mut bytes = Vec::new();
+        file.take(4096).read_to_end(&mut bytes).ok()?;
+        Some(String::from_utf8_lossy(&bytes).into_owned())
+    };
+    match path {
+        Some(p) if start(p).is_some_and(|t| reading::starts_a_trace(&t)) => {
+            let p = p.display();
+            usage(format_args!(
+                "{p} is a trace: open it with raytree inspect --trace {p}"
+            ))
+        }
+        _ => e,
+    }
 }

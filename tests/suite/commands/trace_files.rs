@@ -332,3 +332,16 @@ fn a_named_scene_that_is_no_file_is_said_to_be_so() {
         assert!(e.contains(why), "{name}: {e}");
     }
 }
+
+/// A trace given where the scene goes is named for what it is, with the
+/// command that opens it, not refused for a scene's fields.
+#[test]
+fn a_trace_given_as_the_scene_says_how_to_open_it() {
+    let text = good_trace().to_json();
+    let files: [(&str, &[u8]); 1] = [("t.json", text.as_bytes())];
+    let e = crate::common::refused_with(2, "trace-as-scene", &files, &["inspect", "t.json"]);
+    assert!(
+        e.starts_with("error: t.json is a trace: open it with raytree inspect --trace t.json"),
+        "{e}"
+    );
+}
