@@ -121,17 +121,18 @@ fn guide_text(app: &App, area: Rect) -> Vec<Line<'static>> {
         .fg(Color::Cyan)
         .add_modifier(Modifier::BOLD);
     if !app.guided_here() {
+        // Without the title, which would push the way back off a small terminal.
         let (x, y) = g.pixel();
-        return vec![cut(
-            Line::from(vec![
-                Span::styled(format!("{title} · paused: "), bold_cyan),
+        return wrap(
+            vec![Line::from(vec![
+                Span::styled("guide paused: ", bold_cyan),
                 Span::raw(format!(
-                    "its stops tell pixel {x},{y} (g {x},{y} goes back to stop {})",
+                    "its stops tell pixel {x},{y}; g {x},{y} goes back to stop {}",
                     at + 1
                 )),
-            ]),
+            ])],
             width,
-        )];
+        );
     }
     let head = Span::styled(format!("{title} · stop {}/{stops}: ", at + 1), bold_cyan);
     let line = Line::from(vec![head, Span::raw(told.replace('\n', " "))]);
