@@ -80,7 +80,15 @@ pub fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
 /// for a malformed command line), one line on stderr starting `error: `, no
 /// panic, no file added and every file as it was. Returns the line.
 pub fn refused_with(code: i32, name: &str, files: &[(&str, &[u8])], args: &[&str]) -> String {
-    let dir = std::env::temp_dir().join(format!("raytree-refused-{name}-{}", std::process::id()));
+    // A folder of this call's own: two tests may name their cases alike
+    // ("pixel-outside" is both a trace file's and a command line's), and the
+    // harness runs them at once.
+    static CALLS: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let call = CALLS.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!(
+        "raytree-refused-{name}-{}-{call}",
+        std::process::id()
+    ));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
     for (file, bytes) in files {
