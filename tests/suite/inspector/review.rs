@@ -2,56 +2,19 @@
 //! describes another pixel than the one shown, no text is cut without its
 //! marker, an error names the typed mistake, and no edit is lost unasked.
 
+use crate::inspector::drive::{key, keys, screen, whitted_at};
 use std::path::Path;
 
-use ratatui::Terminal;
-use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{KeyCode, KeyEvent, KeyModifiers};
-use ratatui::layout::Rect;
-use raytree::inspector::{App, draw};
+use ratatui::crossterm::event::KeyCode;
+use raytree::inspector::App;
 use raytree::scene::source::SceneSource;
 use raytree::tree::record;
-
-fn key(app: &mut App, code: KeyCode) {
-    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
-}
-
-fn keys(app: &mut App, text: &str) {
-    for c in text.chars() {
-        key(app, KeyCode::Char(c));
-    }
-}
 
 /// Types `typed` after the key `k` opens a prompt, and Enter.
 fn prompt(app: &mut App, k: char, typed: &str) {
     key(app, KeyCode::Char(k));
     keys(app, typed);
     key(app, KeyCode::Enter);
-}
-
-fn whitted_at(pixel: (u32, u32)) -> App {
-    App::new(
-        raytree::scene::loader::whitted(),
-        SceneSource::new("scenes/whitted.json", ""),
-        Some(pixel),
-        false,
-    )
-}
-
-/// The screen drawn at `w`×`h`, one line per row (symbols only).
-fn screen(app: &mut App, w: u16, h: u16) -> String {
-    let mut terminal = Terminal::new(TestBackend::new(w, h)).unwrap();
-    raytree::inspector::tick(app, Rect::new(0, 0, w, h));
-    terminal.draw(|f| draw(f, app)).unwrap();
-    let buffer = terminal.backend().buffer().clone();
-    (0..buffer.area.height)
-        .map(|y| {
-            let row: String = (0..buffer.area.width)
-                .map(|x| buffer[(x, y)].symbol().to_owned())
-                .collect();
-            row.trim_end().to_owned() + "\n"
-        })
-        .collect()
 }
 
 /// The Whitted scene followed by a guided step-through of pixel 416,209 whose

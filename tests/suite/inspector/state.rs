@@ -1,24 +1,13 @@
 //! The inspector without a terminal: its state and keys, and its panes drawn
 //! into ratatui's test backend.
 
+use crate::inspector::drive::{key, keys};
 use ratatui::Terminal;
 use ratatui::backend::TestBackend;
-use ratatui::crossterm::event::{
-    KeyCode, KeyEvent, KeyModifiers, MouseButton, MouseEvent, MouseEventKind,
-};
+use ratatui::crossterm::event::{KeyCode, KeyModifiers, MouseButton, MouseEvent, MouseEventKind};
 use ratatui::layout::Rect;
 use raytree::inspector::{App, Areas, Focus, Item, draw};
 use raytree::scene::source::SceneSource;
-
-fn key(app: &mut App, code: KeyCode) {
-    app.on_key(KeyEvent::new(code, KeyModifiers::NONE));
-}
-
-fn keys(app: &mut App, text: &str) {
-    for c in text.chars() {
-        key(app, KeyCode::Char(c));
-    }
-}
 
 /// An inspector on the Whitted scene with an 80 × 30-cell image pane, as if drawn.
 fn app_at(pixel: Option<(u32, u32)>) -> App {
