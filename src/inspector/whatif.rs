@@ -110,25 +110,21 @@ pub fn apply(
     })
 }
 
-/// The fields whose value is a number.
-const NUMBER_FIELDS: &[&str] = &[
-    "ambient",
-    "diffuse",
-    "specular",
-    "shininess",
-    "reflective",
-    "transparent",
-    "ior",
-    "max_depth",
-    "cutoff",
-];
+/// Whether `field` takes a number: every field an edit may change but the
+/// color (r,g,b) and the methods named by a word.
+fn takes_a_number(field: &str) -> bool {
+    match field {
+        "color" | "sphere" | "offset" | "weights" => false,
+        _ => MATERIAL_FIELDS.contains(&field) || METHOD_FIELDS.contains(&field),
+    }
+}
 
 /// Why the edit `field=raw` (read as `value`) was refused, in terms of the
 /// edit: the loader's line and column are of the JSON made from the edit, a
 /// place the learner never typed and the scene file does not have.
 fn refused(field: &str, raw: &str, value: &Value, e: SceneError) -> String {
     let reason = match e {
-        _ if value.is_string() && NUMBER_FIELDS.contains(&field) => "not a number".to_owned(),
+        _ if value.is_string() && takes_a_number(field) => "not a number".to_owned(),
         _ if value.is_string() && field == "color" => {
             "not a color: type r,g,b, e.g. 1,0.5,0".to_owned()
         }
