@@ -80,16 +80,39 @@ impl App {
 
     /// Moves `by` stops through the guided step-through.
     pub(super) fn stop_by(&mut self, by: i64) {
-        if let Some(step) = self.guide.as_mut().and_then(|g| g.move_by(by)) {
+        let Some(guide) = self.guide.as_mut() else {
+            return;
+        };
+        let was = guide.position();
+        let step = guide.move_by(by);
+        if guide.position() == was {
+            // A key that does nothing would look like a key not read.
+            self.message = match by.signum() {
+                1 => format!(
+                    "stop {} of {} is the guide's last: p goes back",
+                    was.1, was.1
+                ),
+                _ => format!("stop 1 of {} is the guide's first: n goes on", was.1),
+            };
+        }
+        if let Some(step) = step {
             self.go_to_step(step);
         }
     }
 
     /// Moves `by` steps through the algorithm and selects the step's line.
     pub(super) fn step_by(&mut self, by: i64) {
-        if let Some(s) = self.stepping.target(by) {
-            self.go_to_step(s);
+        let Some(s) = self.stepping.target(by) else {
+            return;
+        };
+        if self.stepping.at() == Some(s) {
+            let n = self.stepping.steps().len();
+            self.message = match by.signum() {
+                1 => format!("step {n} of {n} is the last: p steps back, x shows the whole tree"),
+                _ => format!("step 1 of {n} is the first: n steps on, x shows the whole tree"),
+            };
         }
+        self.go_to_step(s);
     }
 
     /// Makes step `s` the current one and selects its line: the ray's, or the
@@ -122,6 +145,11 @@ impl App {
 
     /// Shows the pixel's next sample (after the last, the first again).
     pub(super) fn next_sample(&mut self) {
+        if self.trace().is_some_and(|t| t.samples.len() == 1) {
+            self.message =
+                "this pixel has one sample: s shows the next one at --spp 4 and more".to_owned();
+            return;
+        }
         if let Some(steps) = self.selection.next_sample() {
             self.stepping = Stepping::new(steps);
         }

@@ -74,6 +74,10 @@ impl App {
             Action::ZoomOut => self.zoom_by(-1),
             Action::GoTo => self.prompt = Some(Prompt::GoTo(String::new())),
             Action::Edit => self.prompt = Some(Prompt::Edit(String::new())),
+            Action::Write if self.what_if.edits().is_empty() => {
+                self.message =
+                    "no what-if edits to write: m edits the selected hit's material".to_owned();
+            }
             Action::Write => self.prompt = Some(Prompt::Write(whatif::default_name(&self.source))),
             Action::Undo => self.undo_edits(),
             Action::ExpandAll => self.expand_all(),

@@ -239,3 +239,55 @@ fn quitting_with_unsaved_edits_asks_first() {
     key(&mut app, KeyCode::Char('q'));
     assert!(app.quitting(), "without edits q quits at once");
 }
+
+/// A key that can do nothing where it is pressed says why, instead of
+/// looking unread: n at the last step, p at the first, s at one sample, w
+/// without edits, n at a guide's last stop.
+#[test]
+fn a_key_with_nothing_to_do_says_why() {
+    let mut app = whitted_at((416, 209));
+    key(&mut app, KeyCode::Char('p'));
+    let last = app.steps().len() - 1;
+    assert_eq!(app.step(), Some(last), "p starts stepping at the last step");
+    key(&mut app, KeyCode::Char('n'));
+    assert_eq!(app.step(), Some(last));
+    let n = last + 1;
+    assert_eq!(
+        app.message(),
+        format!("step {n} of {n} is the last: p steps back, x shows the whole tree")
+    );
+    key(&mut app, KeyCode::Char('p'));
+    assert_eq!(app.step(), Some(last - 1));
+    assert_eq!(app.message(), "", "a key that moved says nothing");
+    key(&mut app, KeyCode::Char('x'));
+    key(&mut app, KeyCode::Char('n'));
+    key(&mut app, KeyCode::Char('p'));
+    assert_eq!(app.step(), Some(0));
+    assert!(app.message().starts_with("step 1 of "), "{}", app.message());
+
+    key(&mut app, KeyCode::Char('s'));
+    assert!(app.message().contains("one sample"), "{}", app.message());
+    key(&mut app, KeyCode::Char('w'));
+    assert!(
+        app.message().starts_with("no what-if edits to write"),
+        "{}",
+        app.message()
+    );
+    let shown = screen(&mut app, 80, 24);
+    assert!(
+        !shown.contains("write the edited scene to"),
+        "no prompt opens:\n{shown}"
+    );
+
+    let mut app = guided("one", "two");
+    prompt(&mut app, 'g', "416,209");
+    key(&mut app, KeyCode::Char('n'));
+    key(&mut app, KeyCode::Char('n'));
+    assert_eq!(
+        app.message(),
+        "stop 2 of 2 is the guide's last: p goes back"
+    );
+    key(&mut app, KeyCode::Char('p'));
+    key(&mut app, KeyCode::Char('p'));
+    assert_eq!(app.message(), "stop 1 of 2 is the guide's first: n goes on");
+}
