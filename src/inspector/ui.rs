@@ -249,7 +249,8 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
         parts.insert(0, l);
     }
     if let Some(note) = app.color_note() {
-        parts.push(note.to_owned());
+        // The whole note is the opening message; the status keeps its head.
+        parts.push(note.split_once(':').map_or(note, |(head, _)| head).to_owned());
     }
     cut(
         Line::from(Span::styled(
