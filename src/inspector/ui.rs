@@ -250,7 +250,11 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
     }
     if let Some(note) = app.color_note() {
         // The whole note is the opening message; the status keeps its head.
-        parts.push(note.split_once(':').map_or(note, |(head, _)| head).to_owned());
+        parts.push(
+            note.split_once(':')
+                .map_or(note, |(head, _)| head)
+                .to_owned(),
+        );
     }
     cut(
         Line::from(Span::styled(
