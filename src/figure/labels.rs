@@ -271,13 +271,15 @@ fn best_spot(
             .sum::<usize>()
     };
     let mut best: Option<(usize, usize, Placed)> = None;
-    for (rank, (baseline, anchor, leader)) in spots(label).into_iter().enumerate() {
+    for (rank, (baseline, anchor, leader, last_resort)) in spots(label).into_iter().enumerate() {
         let rect = text_box(&label.text, label.size, baseline, label.boxed);
         let leader = leader.map(|l| [l, anchor]);
         if !free(&rect, leader) {
             continue;
         }
-        let c = cost(&rect) + if leader.is_some() { 3 } else { 0 };
+        let c = cost(&rect)
+            + if leader.is_some() { 3 } else { 0 }
+            + if last_resort { LAST_RESORT } else { 0 };
         if best
             .as_ref()
             .is_none_or(|(bc, br, _)| (c, rank) < (*bc, *br))
@@ -298,9 +300,14 @@ fn best_spot(
     best.map(|(_, _, p)| p)
 }
 
+/// What a last-resort spot costs on top of its lines: more than any ordinary
+/// spot's, so it is taken only where no ordinary spot is free.
+const LAST_RESORT: usize = 1_000_000;
+
 /// Candidate baselines for a label, nearest first: touching the target, then
-/// farther out with a leader from the box's nearest point.
-fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
+/// farther out with a leader from the box's nearest point; each says whether
+/// it is a last resort.
+fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>, bool)> {
     let (w, below) = extent(&label.text, label.size);
     let s = f64::from(label.size);
     // Baseline offset that puts the text box's center at a given point.
@@ -337,14 +344,14 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
                 (middle, top),
                 (middle, bottom),
             ];
-            out.extend(classic.map(|(x, y)| (DVec2::new(x, y), *at, None)));
+            out.extend(classic.map(|(x, y)| (DVec2::new(x, y), *at, None, false)));
             // Then all round, touching, and farther out in rings a label's
             // height or more apart, with a leader.
             for far in [0.0, 1.5, 3.0, 5.0, 8.0, 12.0] {
                 for &d in &dirs {
                     let c = touching(*at, d, clearance + 2.0 + far * s);
                     let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, *at));
-                    out.push((centered(c), *at, leader));
+                    out.push((centered(c), *at, leader, false));
                 }
             }
         }
@@ -354,7 +361,22 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>)> {
                     let d = (p - *inside).normalize_or(DVec2::Y);
                     let c = touching(p, d, 1.0 + far);
                     let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, p));
-                    out.push((centered(c), p, leader));
+                    out.push((centered(c), p, leader, false));
+                }
+            }
+            // Last resorts, for a small outline in a crowd: every direction
+            // from the point of the outline farthest along it, out to a third
+            // of a figure, so a leader can find a gap between the labels
+            // around it.
+            for far in [40.0, 80.0, 140.0, 220.0, 320.0] {
+                for &d in &dirs {
+                    let Some(&p) = points.iter().max_by(|a, b| a.dot(d).total_cmp(&b.dot(d)))
+                    else {
+                        continue;
+                    };
+                    let c = touching(p, d, 1.0 + far);
+                    let leader = Some(nearest_on_box(c, w, s, below, p));
+                    out.push((centered(c), p, leader, true));
                 }
             }
         }

@@ -406,6 +406,31 @@ fn labels_keep_apart_with_the_whole_tree_its_ticks_roots_and_steps() {
     assert!(placed > 300, "only {placed} labels placed");
 }
 
+/// A small object in a crowd of labels still gets its name, with a leader
+/// through a gap between them: lesson 10's glass ball, in the whole tree of
+/// its deepest pixel with every optional label, had its name left out.
+#[test]
+fn a_small_object_in_a_crowd_finds_a_gap_for_its_name() {
+    let (scene, trace) = traced("whitted.json", 416, 209);
+    let options = Options {
+        width: 1200,
+        height: 800,
+        fit: Fit::Tree,
+        ticks: true,
+        roots: true,
+        steps: true,
+        ..Options::default()
+    };
+    let drawn = draw_with_labels(&trace, &scene, &options).unwrap();
+    labels_keep_apart(&drawn, "whitted.json 416,209 Tree 1200×800");
+    let glass = drawn.labels.iter().find(|p| p.label.text == "glass");
+    assert!(
+        glass.is_some_and(|p| p.leader.is_some()),
+        "'glass' is placed with a leader; left out: {:?}",
+        lost(&drawn)
+    );
+}
+
 /// Checks the diagram's promise for one figure: no label leaves the frame,
 /// covers the legend or another label, and each touches what it names or has
 /// a leader line to it. Returns how many labels were placed.
