@@ -323,9 +323,17 @@ fn side_panel(
     fig.line(DVec2::new(n, -ht), DVec2::new(n, ht), plane);
     let eye = DVec2::ZERO;
     let p = DVec2::new(n, stage.v_r);
+    let dim = scale_pen(scale, Pen::solid(palette::OBJECT, 1.0));
+    // The view direction −n, the axis through the image plane's center.
+    let axis = DVec2::new(1.5 * n, 0.0);
+    fig.arrow(eye, axis, dim);
+    // The ray runs on past P to at most 1.1 half-heights off the axis, so
+    // a corner pixel's ray stays in the panel.
+    let beyond = 1.5_f64.min(1.1 * ht / stage.v_r.abs().max(f64::MIN_POSITIVE));
+    let end = eye + (p - eye) * beyond;
     fig.arrow(
         eye,
-        eye + (p - eye) * 1.5,
+        end,
         scale_pen(scale, Pen::solid(palette::PRIMARY, 2.2)),
     );
     fig.dot(eye, (scale.text * 0.35).max(3.0), palette::INK, None);
@@ -335,32 +343,34 @@ fn side_panel(
         palette::REFRACTED,
         Some(palette::INK),
     );
-    let dim = scale_pen(scale, Pen::solid(palette::OBJECT, 1.0));
-    fig.arrow(DVec2::new(0.0, -1.1 * ht), DVec2::new(n, -1.1 * ht), dim);
+    // N is measured on the side the ray does not take.
+    let y_dim = if stage.v_r < 0.0 { 1.1 * ht } else { -1.1 * ht };
+    fig.arrow(DVec2::new(0.0, y_dim), DVec2::new(n, y_dim), dim);
     let sz = scale.text - 1.0;
     let labels = vec![
         label(&fig, "eye".to_owned(), eye, sz, 6.0),
         label(
             &fig,
             format!("N = {}", num(n)),
-            DVec2::new(n / 2.0, -1.1 * ht),
+            DVec2::new(n / 2.0, y_dim),
             sz,
             3.0,
         ),
         label(
             &fig,
             "image plane, n = −N".to_owned(),
-            DVec2::new(n, ht),
+            DVec2::new(n, if stage.v_r < 0.0 { -ht } else { ht }),
             sz,
             3.0,
         ),
         label(&fig, "t = 1: P(r, c)".to_owned(), p, sz, 6.0),
-        label(&fig, "−n".to_owned(), DVec2::new(1.5 * n, 0.0), sz, 3.0),
+        label(&fig, "−n".to_owned(), axis, sz, 3.0),
     ];
     let lines = [
         [DVec2::new(n, -ht), DVec2::new(n, ht)],
-        [eye, eye + (p - eye) * 1.5],
-        [DVec2::new(0.0, -1.1 * ht), DVec2::new(n, -1.1 * ht)],
+        [eye, end],
+        [eye, axis],
+        [DVec2::new(0.0, y_dim), DVec2::new(n, y_dim)],
     ];
     place(&mut fig, labels, &lines);
     fig.frame_border();

@@ -604,6 +604,32 @@ fn ticks_and_step_numbers_follow_the_trace() {
     }
 }
 
+/// Seen from the side, a corner pixel's ray ends inside its panel: the
+/// panel's bottom rows (the side view is the page's lower left) hold none of
+/// the ray's blue, which ran out of the panel before.
+#[test]
+fn the_side_view_keeps_a_corner_pixels_ray_in_its_panel() {
+    let (_, trace) = traced("whitted.json", 0, 479);
+    let cam = raytree::views::diagram::camera_view::draw(&trace, 1200, 800).unwrap();
+    let blue = raytree::figure::pen::palette::PRIMARY;
+    let at = |x: u32, y: u32| pixel(&cam, DVec2::new(f64::from(x), f64::from(y)));
+    // The panel's bottom border: the lowest row darker than the paper in
+    // column 300, which no label or ray reaches that low.
+    let border = (600..800)
+        .rev()
+        .find(|&y| at(300, y).iter().all(|&v| v < 230))
+        .expect("the side panel's border");
+    for y in border - 6..border {
+        for x in 0..600 {
+            // 60 levels: the ray's antialiased edge on the light panel.
+            assert!(
+                !near(at(x, y), blue, 60),
+                "the ray's blue at {x},{y}, by the border at row {border}"
+            );
+        }
+    }
+}
+
 #[test]
 fn the_camera_and_object_space_views() {
     let (scene, trace) = traced("whitted.json", 416, 209);
