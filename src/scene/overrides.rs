@@ -68,7 +68,7 @@ overrides! {
     /// Reflection/refraction weights of transparent surfaces: constant k_rfl/k_rfa, Schlick, or Fresnel [default: constant].
     #[arg(long, value_enum)]
     weights: Weights,
-    /// Anti-aliasing: grid (the --spp grid), corners (one ray through each pixel corner, four averaged to a pixel: the SPD protocol's) or adaptive corner subdivision (Whitted 1980; ignores --spp) with an optional threshold in linear RGB (adaptive alone: 0.05) [default: grid].
+    /// Anti-aliasing: grid (the --spp grid; --spp is refused with the others), corners (one ray through each pixel corner, four averaged to a pixel: the SPD protocol's) or adaptive corner subdivision (Whitted 1980) with an optional threshold in linear RGB (adaptive alone: 0.05) [default: grid].
     #[arg(long, value_name = "grid|corners|adaptive[=T]")]
     aa: Antialiasing,
     /// Ray–triangle intersection: Woop et al.'s watertight test, or the textbook Möller–Trumbore [default: watertight].

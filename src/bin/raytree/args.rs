@@ -7,6 +7,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use glam::DVec3;
 use raytree::math::ray::Ray;
+use raytree::methods::{Antialiasing, Weights};
 use raytree::scene::Scene;
 use raytree::scene::limits;
 use raytree::scene::overrides::{Overrides, Protocol};
@@ -47,7 +48,7 @@ pub fn is_usage(e: &anyhow::Error) -> bool {
 pub struct SceneArgs {
     /// Scene file (JSON, see scenes/README.md, or NFF, by the extension .nff); the built-in Whitted scene if omitted.
     pub scene: Option<PathBuf>,
-    /// Render as a benchmark prescribes: spd, the Standard Procedural Databases' protocol (512×512, rays through the 513×513 pixel corners averaged four to a pixel, max depth 5, no cutoff, Fresnel weights, so every transmitting hit also reflects); the flags below, given beside it, win.
+    /// Render as a benchmark prescribes: spd, the Standard Procedural Databases' protocol (512×512, rays through the 513×513 pixel corners averaged four to a pixel, max depth 5, no cutoff, and its rule that every transmitting hit spawns a reflected and a refracted ray, which raytree meets by Fresnel weights; the shading the SPD leaves to the renderer); the flags below, given beside it, win, but --weights constant, which breaks that rule, is refused.
     #[arg(long, value_enum)]
     pub protocol: Option<Protocol>,
     #[command(flatten)]
@@ -69,6 +70,25 @@ impl SceneArgs {
     pub fn settings(&self, own: &RenderSettings) -> Result<RenderSettings> {
         let own = self.protocol.map_or(*own, |p| p.overrides().apply(own));
         let settings = self.overrides.apply(&own);
+        // Flags that would be ignored, or would break the protocol asked for,
+        // are refused: the counts printed must be what the user asked for.
+        if self.overrides.spp.is_some() && settings.aa != Antialiasing::Grid {
+            let why = match settings.aa {
+                Antialiasing::Corners if self.overrides.aa.is_none() => {
+                    "--protocol spd traces one ray through each pixel corner; give --aa grid beside it to sample a grid"
+                }
+                Antialiasing::Corners => "--aa corners traces one ray through each pixel corner",
+                _ => "--aa adaptive takes as many samples as each pixel needs",
+            };
+            return Err(usage(format_args!(
+                "--spp: samples the --aa grid only, and {why}"
+            )));
+        }
+        if self.protocol == Some(Protocol::Spd) && settings.weights == Weights::Constant {
+            return Err(usage(
+                "--weights constant: --protocol spd spawns a reflected and a refracted ray at every transmitting hit, which raytree meets by Fresnel (or Schlick) weights; constant weights reflect only where the material's own reflection is above 0, so the counts would not be the protocol's",
+            ));
+        }
         if let Err((field, message)) = settings.validate() {
             return Err(usage(format_args!(
                 "--{}: {message}",

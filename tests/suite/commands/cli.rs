@@ -909,4 +909,11 @@ fn the_spd_protocol_sets_what_it_fixes_and_flags_beside_it_win() {
         )
     );
     assert_eq!(settings(&["--max-depth", "3"])["max_depth"], 3);
+    // Sampling a grid again takes --aa grid beside --spp; Schlick's weights
+    // keep the protocol's reflected ray at every transmitting hit.
+    let grid = settings(&["--aa", "grid", "--spp", "4", "--weights", "schlick"]);
+    assert_eq!(
+        (&grid["spp"], &grid["weights"]),
+        (&serde_json::json!(4), &serde_json::json!("schlick"))
+    );
 }

@@ -386,6 +386,26 @@ fn flag_combinations_and_missing_lessons_are_usage_errors() {
             "--vary max_depth and --max-depth both set max_depth: give one",
         ),
         (
+            "spd-constant-weights",
+            &["render", "--protocol", "spd", "--weights", "constant"],
+            "--weights constant: --protocol spd spawns a reflected and a refracted ray at every transmitting hit",
+        ),
+        (
+            "spd-spp",
+            &["render", "--protocol", "spd", "--spp", "4"],
+            "--spp: samples the --aa grid only, and --protocol spd traces one ray through each pixel corner",
+        ),
+        (
+            "corners-spp",
+            &["trace", "--pixel", "1,1", "--aa", "corners", "--spp", "4"],
+            "--spp: samples the --aa grid only, and --aa corners traces",
+        ),
+        (
+            "adaptive-spp",
+            &["render", "--aa", "adaptive", "--spp", "1"],
+            "--spp: samples the --aa grid only, and --aa adaptive takes",
+        ),
+        (
             "lesson-99",
             &["lesson", "99", "--lessons", &lessons],
             "no lesson 99 (there are: 1, 2,",
