@@ -8,6 +8,7 @@ pub mod plane; // ray–plane
 pub mod cuboid; // ray–box by slabs
 pub mod triangle; // watertight and Möller–Trumbore
 pub mod polygon; // planar polygons and patches, any number of vertices: the crossing-number test in the watertight frame
+pub mod polygon_plane; // a polygon's plane (the first three vertices, every vertex on it) and the Newell normal
 pub mod mesh; // many triangles, one object, a hierarchy of their own
 pub mod transform; // transformed primitives: the inverse-transformed ray
 pub mod unit_cone; // the open cylinder and cone in its own space: a quadratic, roots kept for 0 ≤ z ≤ 1

@@ -52,6 +52,7 @@
 use glam::DVec3;
 
 use crate::geometry::hit::{Roots, Surface};
+use crate::geometry::polygon_plane::{PlaneError, plane_normal};
 use crate::geometry::triangle::{ShearedRay, by_axis_order};
 use crate::math::bounds::Bounds;
 use crate::math::float::gamma;
@@ -123,28 +124,17 @@ impl Polygon {
         if let Some(k) = vertices.iter().position(|v| !v.is_finite()) {
             return Err(format!("vertices[{k}] must be finite, got {}", vertices[k]));
         }
-        let (e1, e2) = (vertices[1] - vertices[0], vertices[2] - vertices[0]);
-        let cross = e1.cross(e2);
-        if cross.length() <= COLLINEAR_SINE * e1.length() * e2.length() || !cross.is_finite() {
-            return Err(
-                "vertices[0], vertices[1] and vertices[2] lie on one line: they give the polygon no plane"
-                    .to_owned(),
-            );
-        }
-        let normal = cross.normalize();
         let bounds = Bounds::around(vertices.iter().copied());
         let scale = (bounds.min.abs().max(bounds.max.abs())).max_element();
-        let extent = (bounds.max - bounds.min).max_element();
-        let tolerance = PLANE_TOLERANCE * extent.max(scale);
-        for (k, v) in vertices.iter().enumerate().skip(3) {
-            let off = (*v - vertices[0]).dot(normal);
-            if off.abs() > tolerance {
-                return Err(format!(
-                    "vertices[{k}] lies {:e} off the plane of the first three (allowed: {tolerance:e})",
-                    off.abs()
-                ));
+        let normal = plane_normal(&vertices).map_err(|e| match e {
+            PlaneError::Collinear => {
+                "vertices[0], vertices[1] and vertices[2] lie on one line: they give the polygon no plane"
+                    .to_owned()
             }
-        }
+            PlaneError::OffPlane { vertex, off, allowed } => format!(
+                "vertices[{vertex}] lies {off:e} off the plane of the first three (allowed: {allowed:e})"
+            ),
+        })?;
         let normals = match normals {
             None => None,
             Some(ns) if ns.len() != vertices.len() => {

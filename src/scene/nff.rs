@@ -38,6 +38,8 @@
 //!   polygonal patches: the SPD uses them only for the teapot, whose protocol
 //!   asks for a two-sided teapot (its lid does not fit, so its inside shows).
 //! - `hither` is read and checked but unused: a ray tracer has no near plane.
+//! - **Inside-only objects** (a negative radius, NFF's sphere or cone seen
+//!   only from inside) are refused: raytree has no one-sided quadrics.
 
 use std::collections::HashMap;
 
@@ -45,7 +47,6 @@ use glam::DVec3;
 use serde_json::{Value, json};
 
 use crate::geometry::cone::cone_object;
-use crate::geometry::polygon::Polygon;
 use crate::io::image::srgb_to_linear;
 use crate::scene::limits;
 use crate::scene::nff_json::{NffScene, View, material_json, xyz};
@@ -96,13 +97,32 @@ fn past_word_limit(text: &str) -> Option<usize> {
     past.map(|i| i + 1)
 }
 
+/// The words that begin a line of an NFF file: the entities' keywords and
+/// the view's lines.
+const KEYWORDS: [&str; 14] = [
+    "v",
+    "b",
+    "l",
+    "f",
+    "s",
+    "c",
+    "p",
+    "pp",
+    "from",
+    "at",
+    "up",
+    "angle",
+    "hither",
+    "resolution",
+];
+
 /// A line of the file: its number and its words with their columns.
-struct Line<'t> {
-    number: usize,
-    words: Vec<(usize, &'t str)>,
+pub(super) struct Line<'t> {
+    pub(super) number: usize,
+    pub(super) words: Vec<(usize, &'t str)>,
 }
 
-struct Reader<'t> {
+pub(super) struct Reader<'t> {
     file: &'t str,
     lines: Box<dyn Iterator<Item = Line<'t>> + 't>,
     /// The line the file ended after, for "ends early" errors.
@@ -135,7 +155,12 @@ impl<'t> Reader<'t> {
         }
     }
 
-    fn error(&self, line: usize, column: usize, message: impl Into<String>) -> SceneError {
+    pub(super) fn error(
+        &self,
+        line: usize,
+        column: usize,
+        message: impl Into<String>,
+    ) -> SceneError {
         SceneError::Syntax {
             file: self.file.to_owned(),
             line,
@@ -145,7 +170,7 @@ impl<'t> Reader<'t> {
     }
 
     /// The next line, which entity `what` (begun on line `from`) needs.
-    fn next_for(&mut self, what: &str, from: usize) -> Result<Line<'t>, SceneError> {
+    pub(super) fn next_for(&mut self, what: &str, from: usize) -> Result<Line<'t>, SceneError> {
         self.lines.next().ok_or_else(|| {
             self.error(
                 self.last.max(1),
@@ -180,11 +205,11 @@ impl<'t> Reader<'t> {
                 }
                 "l" => {
                     let (position, color) = match line.words.len() {
-                        4 => (self.point(&line, 1)?, None),
+                        4 => (self.point(&line, 1, "a light's position")?, None),
                         7 => {
                             let [_, _, _, r, g, b] = self.numbers(&line)?;
                             let color = self.color(&line, DVec3::new(r, g, b))?;
-                            (self.point(&line, 1)?, Some(color))
+                            (self.point(&line, 1, "a light's position")?, Some(color))
                         }
                         _ => {
                             return Err(self.error(
@@ -251,7 +276,7 @@ impl<'t> Reader<'t> {
     }
 
     /// Checks that `line` holds its keyword and `n` more words.
-    fn count(&self, line: &Line, n: usize) -> Result<(), SceneError> {
+    pub(super) fn count(&self, line: &Line, n: usize) -> Result<(), SceneError> {
         let (column, keyword) = line.words[0];
         let got = line.words.len() - 1;
         if got != n {
@@ -305,11 +330,42 @@ impl<'t> Reader<'t> {
         Ok(out)
     }
 
-    /// The point of words `first..first + 3` of `line`, within the limits.
-    fn point(&self, line: &Line, first: usize) -> Result<DVec3, SceneError> {
+    /// The three numbers of words `first..first + 3` of `line`, within the
+    /// limits of a point; `what` they are (a vertex, a normal) names them.
+    pub(super) fn point(&self, line: &Line, first: usize, what: &str) -> Result<DVec3, SceneError> {
         let [x, y, z] = self.numbers_from(line, first)?;
         limits::point(DVec3::new(x, y, z))
-            .map_err(|e| self.error(line.number, line.words[first].0, format!("a point: {e}")))
+            .map_err(|e| self.error(line.number, line.words[first].0, format!("{what}: {e}")))
+    }
+
+    /// Checks that `line`, which must hold `what` (an end of a cone, a
+    /// vertex), holds `n` numbers: a keyword there means the entity before
+    /// it was cut short, and says so.
+    pub(super) fn expect_numbers(
+        &self,
+        line: &Line,
+        n: usize,
+        what: &str,
+    ) -> Result<(), SceneError> {
+        let (column, first) = line.words[0];
+        if KEYWORDS.contains(&first) {
+            return Err(self.error(
+                line.number,
+                column,
+                format!("expected {what}, found the keyword '{first}'"),
+            ));
+        }
+        if line.words.len() != n {
+            return Err(self.error(
+                line.number,
+                column,
+                format!(
+                    "{what} takes {n} numbers, got {} (a wrong count?)",
+                    line.words.len()
+                ),
+            ));
+        }
+        Ok(())
     }
 
     /// A color as NFF gives it, for a display (sRGB), checked and made linear.
@@ -347,11 +403,17 @@ impl<'t> Reader<'t> {
         let angle_line = keyed("angle", 1)?;
         let hither_line = keyed("hither", 1)?;
         let resolution_line = keyed("resolution", 2)?;
-        let from = self.point(&from_line, 1)?;
-        let at = self.point(&at_line, 1)?;
-        let up = self.point(&up_line, 1)?;
-        if from == at {
-            return Err(self.error(at_line.number, 1, "'at' must differ from 'from'"));
+        let from = self.point(&from_line, 1, "'from'")?;
+        let at = self.point(&at_line, 1, "'at'")?;
+        let up = self.point(&up_line, 1, "'up'")?;
+        // So close that their difference has no direction (its square
+        // underflows) is as equal as equal: the view would look nowhere.
+        if (at - from).try_normalize().is_none() {
+            return Err(self.error(
+                at_line.number,
+                1,
+                "'at' must differ from 'from', and they are equal or so nearly equal that the view has no direction",
+            ));
         }
         if up.cross(at - from).length() <= 1e-9 * up.length() * (at - from).length() {
             return Err(self.error(
@@ -366,7 +428,10 @@ impl<'t> Reader<'t> {
             return Err(self.error(
                 angle_line.number,
                 angle_line.words[1].0,
-                format!("'angle' must be from {low} to {high} degrees, got {angle}"),
+                format!(
+                    "'angle' must be from {low} to {high} degrees, got {}",
+                    limits::num(angle)
+                ),
             ));
         }
         let [hither] = self.numbers_from(&hither_line, 1)?;
@@ -374,7 +439,7 @@ impl<'t> Reader<'t> {
             return Err(self.error(
                 hither_line.number,
                 hither_line.words[1].0,
-                format!("'hither' must not be negative, got {hither}"),
+                format!("'hither' must not be negative, got {}", limits::num(hither)),
             ));
         }
         let side = |k: usize| -> Result<u32, SceneError> {
@@ -415,7 +480,11 @@ impl<'t> Reader<'t> {
                 Err(self.error(
                     line.number,
                     at(k),
-                    format!("{name} must be from 0 to {}, got {x}", limits::num(max)),
+                    format!(
+                        "{name} must be from 0 to {}, got {}",
+                        limits::num(max),
+                        limits::num(x)
+                    ),
                 ))
             }
         };
@@ -428,7 +497,7 @@ impl<'t> Reader<'t> {
             return Err(self.error(
                 line.number,
                 at(5),
-                format!("Ks + T must be at most 1 (a surface passes on no more light than arrives), got {ks} + {t}"),
+                format!("Ks + T must be at most 1 (a surface passes on no more light than arrives), got {} + {}", limits::num(ks), limits::num(t)),
             ));
         }
         let ior = if t == 0.0 {
@@ -439,7 +508,7 @@ impl<'t> Reader<'t> {
                 return Err(self.error(
                     line.number,
                     at(8),
-                    format!("a transmitting material's index of refraction must be from {low} to {high}, got {ior}"),
+                    format!("a transmitting material's index of refraction must be from {low} to {high}, got {}", limits::num(ior)),
                 ));
             }
             ior
@@ -449,14 +518,13 @@ impl<'t> Reader<'t> {
 
     fn sphere(&self, line: &Line) -> Result<Value, SceneError> {
         let [_, _, _, r] = self.numbers(line)?;
-        let center = self.point(line, 1)?;
-        let r = limits::length(r).map_err(|e| {
-            self.error(
-                line.number,
-                line.words[4].0,
-                format!("a sphere's radius {e}"),
-            )
-        })?;
+        let center = self.point(line, 1, "a sphere's center")?;
+        let column = line.words[4].0;
+        if r < 0.0 {
+            return Err(self.error(line.number, column, inside_only("sphere (s)", "radius")));
+        }
+        let r = limits::length(r)
+            .map_err(|e| self.error(line.number, column, format!("a sphere's radius {e}")))?;
         Ok(json!({
             "name": format!("sphere at line {}", line.number),
             "sphere": { "center": xyz(center), "radius": r },
@@ -467,36 +535,30 @@ impl<'t> Reader<'t> {
     /// own line (as the SPD's generators write it) or on the two lines after
     /// it (as NFF's description does).
     fn cone(&mut self, line: &Line) -> Result<Value, SceneError> {
-        let ends: [f64; 8] = match line.words.len() - 1 {
+        // Each end's center, radius, and where its radius is (line, column).
+        let end = |words: &Line, first: usize, which: &str| {
+            let center = self.point(words, first, &format!("the cone's {which}"))?;
+            let [r] = self.numbers_from(words, first + 3)?;
+            Ok::<_, SceneError>((center, r, (words.number, words.words[first + 3].0)))
+        };
+        let (base, apex) = match line.words.len() - 1 {
             8 => {
                 let _: [f64; 8] = self.numbers_from(line, 1)?;
-                let base = self.point(line, 1)?;
-                let apex = self.point(line, 5)?;
-                let [r0] = self.numbers_from(line, 4)?;
-                let [r1] = self.numbers_from(line, 8)?;
-                [base.x, base.y, base.z, r0, apex.x, apex.y, apex.z, r1]
+                (end(line, 1, "base")?, end(line, 5, "apex")?)
             }
             0 => {
-                let mut end = || -> Result<[f64; 4], SceneError> {
-                    let end = self.next_for("cylinder or cone (c)", line.number)?;
-                    if end.words.len() != 4 {
-                        return Err(self.error(
-                            end.number,
-                            end.words[0].0,
-                            format!(
-                                "an end of the cone (c) on line {} takes 4 numbers X Y Z R, got {}",
-                                line.number,
-                                end.words.len()
-                            ),
-                        ));
-                    }
-                    let center = self.point(&end, 0)?;
-                    let [r] = self.numbers_from(&end, 3)?;
-                    Ok([center.x, center.y, center.z, r])
+                let mut next = |which: &str| {
+                    let words = self.next_for("cylinder or cone (c)", line.number)?;
+                    let what = format!(
+                        "the {which} X Y Z R of the cone (c) on line {}",
+                        line.number
+                    );
+                    self.expect_numbers(&words, 4, &what)?;
+                    let center = self.point(&words, 0, &format!("the cone's {which}"))?;
+                    let [r] = self.numbers_from(&words, 3)?;
+                    Ok::<_, SceneError>((center, r, (words.number, words.words[3].0)))
                 };
-                let [x0, y0, z0, r0] = end()?;
-                let [x1, y1, z1, r1] = end()?;
-                [x0, y0, z0, r0, x1, y1, z1, r1]
+                (next("base")?, next("apex")?)
             }
             n => {
                 return Err(self.error(
@@ -508,12 +570,37 @@ impl<'t> Reader<'t> {
                 ));
             }
         };
-        let base = DVec3::new(ends[0], ends[1], ends[2]);
-        let apex = DVec3::new(ends[4], ends[5], ends[6]);
-        let (base_radius, apex_radius) = (ends[3], ends[7]);
+        let ((base, base_radius, base_at), (apex, apex_radius, apex_at)) = (base, apex);
+        for (r, (number, column), which) in [
+            (base_radius, base_at, "base"),
+            (apex_radius, apex_at, "apex"),
+        ] {
+            if r < 0.0 {
+                let radius = format!("{which} radius");
+                return Err(self.error(
+                    number,
+                    column,
+                    inside_only("cylinder or cone (c)", &radius),
+                ));
+            }
+        }
         let name = format!("cone at line {}", line.number);
-        cone_object(name.clone(), base, base_radius, apex, apex_radius, 0)
-            .map_err(|e| self.error(line.number, line.words[0].0, format!("a cone: {e}")))?;
+        let at = line.words[0].0;
+        let refuse = |why: String| Err(self.error(line.number, at, why));
+        if base_radius == 0.0 && apex_radius == 0.0 {
+            return refuse(
+                "the base and apex radii of the cone (c) are both 0: it would be a line".into(),
+            );
+        }
+        if base == apex {
+            return refuse(
+                "the base and apex of the cone (c) are the same point: it would have no length"
+                    .into(),
+            );
+        }
+        if let Err(e) = cone_object(name.clone(), base, base_radius, apex, apex_radius, 0) {
+            return refuse(format!("a cone (c): {e}"));
+        }
         Ok(json!({
             "name": name,
             "cone": {
@@ -524,76 +611,12 @@ impl<'t> Reader<'t> {
             },
         }))
     }
+}
 
-    /// `p N` then N lines `X Y Z`, or `pp N` then N lines `X Y Z NX NY NZ`.
-    fn polygon(
-        &mut self,
-        line: &Line,
-        patch: bool,
-        transparent: bool,
-    ) -> Result<Value, SceneError> {
-        self.count(line, 1)?;
-        let keyword = if patch { "pp" } else { "p" };
-        let (column, word) = line.words[1];
-        let count = word
-            .parse::<usize>()
-            .ok()
-            .filter(|n| (3..=MAX_POLYGON_VERTICES).contains(n))
-            .ok_or_else(|| {
-                self.error(
-                    line.number,
-                    column,
-                    format!(
-                        "{} is not a vertex count for '{keyword}' (a whole number from 3 to {MAX_POLYGON_VERTICES})",
-                        quote(word, "'")
-                    ),
-                )
-            })?;
-        let per_line = if patch { 6 } else { 3 };
-        let mut vertices = Vec::with_capacity(count);
-        let mut normals = Vec::with_capacity(if patch { count } else { 0 });
-        for k in 0..count {
-            let what = if patch {
-                "polygonal patch (pp)"
-            } else {
-                "polygon (p)"
-            };
-            let v = self.next_for(what, line.number)?;
-            if v.words.len() != per_line {
-                return Err(self.error(
-                    v.number,
-                    v.words[0].0,
-                    format!(
-                        "vertex {} of {count} of the {what} on line {} takes {per_line} numbers, got {} (a wrong count?)",
-                        k + 1,
-                        line.number,
-                        v.words.len()
-                    ),
-                ));
-            }
-            vertices.push(self.point(&v, 0)?);
-            if patch {
-                let n = self.point(&v, 3)?;
-                normals.push(n);
-            }
-        }
-        let normals: Option<Vec<DVec3>> = patch.then_some(normals);
-        let one_sided = !patch && !transparent;
-        Polygon::new(vertices.clone(), normals.clone(), one_sided)
-            .map_err(|e| self.error(line.number, column, format!("a polygon: {e}")))?;
-        let kind = if patch { "patch" } else { "polygon" };
-        let mut polygon = json!({
-            "vertices": vertices.iter().map(|&v| xyz(v)).collect::<Vec<_>>(),
-        });
-        if let Some(normals) = normals {
-            polygon["normals"] = json!(normals.iter().map(|&n| xyz(n)).collect::<Vec<_>>());
-        }
-        if one_sided {
-            polygon["one_sided"] = json!(true);
-        }
-        Ok(json!({
-            "name": format!("{kind} at line {}", line.number),
-            "polygon": polygon,
-        }))
-    }
+/// The refusal of a negative radius, which NFF gives an object seen only
+/// from inside: raytree's objects are seen from both sides or from outside.
+fn inside_only(object: &str, radius: &str) -> String {
+    format!(
+        "a negative {radius} makes NFF's inside-only {object}, seen only from inside, which raytree does not support"
+    )
 }

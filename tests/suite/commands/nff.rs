@@ -110,13 +110,13 @@ const BAD: &[(&str, &str, usize, &str)] = &[
     (
         "collinear polygon",
         "p 3\n0 0 0\n1 1 1\n2 2 2\n",
-        10,
+        13,
         "polygon",
     ),
     ("degenerate cone", "c\n0 0 0 0\n0 0 1 0\n", 10, "cone"),
     ("zero-length cylinder", "c 0 0 0 1 0 0 0 1\n", 10, "cone"),
     ("a cone of 7 numbers", "c 0 0 0 1 0 0 1\n", 10, "8 numbers"),
-    ("negative radius", "c\n0 0 0 -1\n0 0 1 1\n", 10, "cone"),
+    ("negative radius", "c\n0 0 0 -1\n0 0 1 1\n", 11, "cone"),
     ("sphere of radius 0", "s 0 0 0 0\n", 10, "radius"),
     (
         "more light than arrives",
@@ -132,7 +132,7 @@ const BAD: &[(&str, &str, usize, &str)] = &[
     ),
     ("a light with two numbers", "l 1 2\n", 10, "light"),
     ("an unknown keyword", "q 1 2 3\n", 10, "not an NFF keyword"),
-    ("a huge coordinate", "s 0 0 1e300 1\n", 10, "point"),
+    ("a huge coordinate", "s 0 0 1e300 1\n", 10, "center"),
 ];
 
 /// The view the bad inputs follow (lines 1 to 7), then a material (line 8)
@@ -155,6 +155,80 @@ fn every_bad_nff_input_is_one_line_naming_the_file_and_line() {
         );
         assert!(message.contains(says), "{name}: says '{says}': {message}");
     }
+}
+
+/// The review of issue 27's reader: each refusal in NFF's own terms, at the
+/// line (and column) a reader of the file looks at: vertices counted from 1
+/// on their own lines, numbers short, negative radii named as NFF's
+/// inside-only objects, an entity cut short by the next keyword said so.
+#[test]
+fn refusals_speak_nff_at_the_line_at_fault() {
+    for (tail, want) in [
+        (
+            "p 4\n2 -1 0\n1 0 0\n2 1 0\n0 0 0\n",
+            "12:1: the polygon (p) on line 10 has a reflex first corner, at vertex 2: NFF takes the normal from the first two edges, which must make a convex angle, and these turn it away from the outline's own winding (start the outline at a convex corner)",
+        ),
+        (
+            "p 3\n0 0 0\n1 1 1\n2 2 2\n",
+            "13:1: vertices 1 to 3 of the polygon (p) on line 10 lie on one line: they give it no plane (NFF takes the plane from them)",
+        ),
+        (
+            "p 4\n0 0 0\n1 0 0\n1 1 0\n0 1 1\n",
+            "14:1: vertex 4 of the polygon (p) on line 10 lies 1 off the plane of vertices 1 to 3 (allowed: 1e-5)",
+        ),
+        (
+            "pp 3\n0 0 0 0 0 0\n1 0 0 0 0 1\n0 1 0 0 0 1\n",
+            "11:7: the normal of vertex 1 of 3 of the polygonal patch (pp) on line 10 must not be zero",
+        ),
+        (
+            "pp 3\n0 0 0 0 0 1e300\n1 0 0 0 0 1\n0 1 0 0 0 1\n",
+            "11:7: a normal: every coordinate must be within ±1e9, got [0, 0, 1e300]",
+        ),
+        (
+            "p 3\n0 0 0\n1 0 0\ns 0 0 0 1\n",
+            "13:1: expected vertex 3 of 3 of the polygon (p) on line 10, found the keyword 's'",
+        ),
+        (
+            "c\n0 0 0 1\nf 1 1 1 1 0 10 0 0\n",
+            "12:1: expected the apex X Y Z R of the cone (c) on line 10, found the keyword 'f'",
+        ),
+        (
+            "f 1 1 1 1 0 1e300 0 0\n",
+            "10:13: Shine must be from 0 to 1e6, got 1e300",
+        ),
+        (
+            "s 0 0 0 -2\n",
+            "10:9: a negative radius makes NFF's inside-only sphere (s), seen only from inside, which raytree does not support",
+        ),
+        (
+            "c\n0 0 0 1\n0 0 1 -0.5\n",
+            "12:7: a negative apex radius makes NFF's inside-only cylinder or cone (c), seen only from inside, which raytree does not support",
+        ),
+        (
+            "c 0 0 0 0 0 0 1 0\n",
+            "10:1: the base and apex radii of the cone (c) are both 0: it would be a line",
+        ),
+    ] {
+        let text = format!("{HEAD}{tail}");
+        let e = loader::parse_file(&text, "bad.nff")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(e, format!("bad.nff:{want}"), "{tail}");
+    }
+    // The arrow begun at a convex corner is the same outline, accepted, and
+    // faces +z as its winding says.
+    let arrow = format!("{HEAD}p 4\n0 0 0\n2 -1 0\n1 0 0\n2 1 0\n");
+    let json = nff::to_json(&arrow, "arrow.nff").unwrap();
+    assert!(json.contains("one_sided"), "{json}");
+    assert!(loader::parse_file(&arrow, "arrow.nff").is_ok());
+    // From and at so close their difference has no direction: named as the
+    // view's fault, not up's.
+    let view = "v\nfrom 1e-300 0 0\nat 0 0 0\nup 0 1 0\nangle 40\nhither 1\nresolution 6 4\n";
+    let e = loader::parse_file(view, "v.nff").unwrap_err().to_string();
+    assert_eq!(
+        e,
+        "v.nff:3:1: 'at' must differ from 'from', and they are equal or so nearly equal that the view has no direction"
+    );
 }
 
 #[test]
