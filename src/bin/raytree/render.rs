@@ -102,17 +102,22 @@ pub fn run(args: &Args) -> Result<()> {
             .map_err(no_memory)?;
         (image, None)
     };
-    let seconds = started.elapsed().as_secs_f64();
+    let rendering = started.elapsed().as_secs_f64();
     progress.finish_and_clear();
     pending.commit(&image_file::encode(&image, format)?)?;
     if !args.quiet {
+        // Each time named by what it covers: the scene's reading, then the
+        // rendering (starting the threads, building the hierarchy, tracing);
+        // encoding and writing the image are not timed.
         output::note(&format!(
-            "wrote {} ({}×{}, {}, max depth {}) in {seconds:.3} s on {}",
+            "wrote {} ({}×{}, {}, max depth {}): {} s reading the scene, {} s building and tracing on {}",
             path.display(),
             s.width,
             s.height,
             s.sampling(),
             s.max_depth,
+            seconds(read_seconds),
+            seconds(rendering),
             threads_word(threads)
         ))?;
     }

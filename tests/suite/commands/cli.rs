@@ -802,6 +802,18 @@ fn stats_print_rays_and_tests_per_ray_on_stdout() {
         assert!(out.status.success(), "{stderr}");
         assert!(stderr.starts_with("wrote s.png (32×24"), "{stderr}");
         assert!(!stderr.contains("rays:"), "{stderr}");
+        // The summary names what each of its times covers, as the stats'
+        // own line does: reading, then building and tracing together.
+        let (_, times) = stderr.split_once("max depth 8): ").expect(&stderr);
+        let words: Vec<&str> = times.split_whitespace().collect();
+        assert_eq!(
+            (words[1..5].join(" "), words[6..11].join(" ")),
+            (
+                "s reading the scene,".to_owned(),
+                "s building and tracing on".to_owned()
+            ),
+            "{stderr}"
+        );
         String::from_utf8(out.stdout).unwrap()
     };
     let stdout = run();
