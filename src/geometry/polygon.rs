@@ -58,17 +58,6 @@ use crate::math::bounds::Bounds;
 use crate::math::float::gamma;
 use crate::math::ray::Ray;
 
-/// How far a vertex may lie off the plane of the first three, relative to the
-/// larger of the polygon's extent and its largest coordinate: numbers printed
-/// with 6 significant digits (C's `%g`, as NFF files are) are off by at most
-/// half a unit in the sixth digit, 5e-6 of their size. The SPD's polygons are
-/// planar to 1e-16.
-pub const PLANE_TOLERANCE: f64 = 1e-5;
-
-/// The sine of the angle at the first vertex below which the first three
-/// vertices count as one line: there their normal is mostly rounding.
-pub const COLLINEAR_SINE: f64 = 1e-9;
-
 /// A planar polygon, or a polygonal patch with a normal per vertex.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Polygon {
@@ -107,8 +96,9 @@ impl Polygon {
     ///
     /// Refused, with a one-line reason: fewer than 3 vertices, a number that is
     /// not finite, the first three vertices on one line (within
-    /// [`COLLINEAR_SINE`]), a vertex off their plane by more than
-    /// [`PLANE_TOLERANCE`], a count of normals other than the vertices', a zero
+    /// [`COLLINEAR_SINE`](crate::geometry::polygon_plane::COLLINEAR_SINE)), a
+    /// vertex off their plane by more than
+    /// [`PLANE_TOLERANCE`](crate::geometry::polygon_plane::PLANE_TOLERANCE), a count of normals other than the vertices', a zero
     /// normal.
     pub fn new(
         vertices: Vec<DVec3>,

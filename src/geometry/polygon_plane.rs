@@ -6,8 +6,18 @@
 
 use glam::DVec3;
 
-use crate::geometry::polygon::{COLLINEAR_SINE, PLANE_TOLERANCE};
 use crate::math::bounds::Bounds;
+
+/// How far a vertex may lie off the plane of the first three, relative to the
+/// larger of the polygon's extent and its largest coordinate: numbers printed
+/// with 6 significant digits (C's `%g`, as NFF files are) are off by at most
+/// half a unit in the sixth digit, 5e-6 of their size. The SPD's polygons are
+/// planar to 1e-16.
+pub const PLANE_TOLERANCE: f64 = 1e-5;
+
+/// The sine of the angle at the first vertex below which the first three
+/// vertices count as one line: there their normal is mostly rounding.
+pub const COLLINEAR_SINE: f64 = 1e-9;
 
 /// Why vertices give a polygon no plane.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -46,10 +46,9 @@ use std::collections::HashMap;
 use glam::DVec3;
 use serde_json::{Value, json};
 
-use crate::geometry::cone::cone_object;
 use crate::io::image::srgb_to_linear;
 use crate::scene::limits;
-use crate::scene::nff_json::{NffScene, View, material_json, xyz};
+use crate::scene::nff_json::{NffScene, View, material_json};
 use crate::scene::quote::{printable, quote};
 use crate::scene::scene_error::SceneError;
 use crate::scene::settings::RenderSettings;
@@ -295,13 +294,13 @@ impl<'t> Reader<'t> {
     }
 
     /// The `N` numbers after `line`'s keyword: finite, and exactly `N`.
-    fn numbers<const N: usize>(&self, line: &Line) -> Result<[f64; N], SceneError> {
+    pub(super) fn numbers<const N: usize>(&self, line: &Line) -> Result<[f64; N], SceneError> {
         self.count(line, N)?;
         self.numbers_from(line, 1)
     }
 
     /// `N` finite numbers of `line` from word `first` on (the words must be there).
-    fn numbers_from<const N: usize>(
+    pub(super) fn numbers_from<const N: usize>(
         &self,
         line: &Line,
         first: usize,
@@ -515,108 +514,4 @@ impl<'t> Reader<'t> {
         };
         Ok(material_json(color, kd, ks, shine, t, ior))
     }
-
-    fn sphere(&self, line: &Line) -> Result<Value, SceneError> {
-        let [_, _, _, r] = self.numbers(line)?;
-        let center = self.point(line, 1, "a sphere's center")?;
-        let column = line.words[4].0;
-        if r < 0.0 {
-            return Err(self.error(line.number, column, inside_only("sphere (s)", "radius")));
-        }
-        let r = limits::length(r)
-            .map_err(|e| self.error(line.number, column, format!("a sphere's radius {e}")))?;
-        Ok(json!({
-            "name": format!("sphere at line {}", line.number),
-            "sphere": { "center": xyz(center), "radius": r },
-        }))
-    }
-
-    /// `c` and the base `X Y Z R` and the apex `X Y Z R`: eight numbers on its
-    /// own line (as the SPD's generators write it) or on the two lines after
-    /// it (as NFF's description does).
-    fn cone(&mut self, line: &Line) -> Result<Value, SceneError> {
-        // Each end's center, radius, and where its radius is (line, column).
-        let end = |words: &Line, first: usize, which: &str| {
-            let center = self.point(words, first, &format!("the cone's {which}"))?;
-            let [r] = self.numbers_from(words, first + 3)?;
-            Ok::<_, SceneError>((center, r, (words.number, words.words[first + 3].0)))
-        };
-        let (base, apex) = match line.words.len() - 1 {
-            8 => {
-                let _: [f64; 8] = self.numbers_from(line, 1)?;
-                (end(line, 1, "base")?, end(line, 5, "apex")?)
-            }
-            0 => {
-                let mut next = |which: &str| {
-                    let words = self.next_for("cylinder or cone (c)", line.number)?;
-                    let what = format!(
-                        "the {which} X Y Z R of the cone (c) on line {}",
-                        line.number
-                    );
-                    self.expect_numbers(&words, 4, &what)?;
-                    let center = self.point(&words, 0, &format!("the cone's {which}"))?;
-                    let [r] = self.numbers_from(&words, 3)?;
-                    Ok::<_, SceneError>((center, r, (words.number, words.words[3].0)))
-                };
-                (next("base")?, next("apex")?)
-            }
-            n => {
-                return Err(self.error(
-                    line.number,
-                    line.words[0].0,
-                    format!(
-                        "a cone (c) takes 8 numbers, base X Y Z R and apex X Y Z R, on its line or on the two after it; got {n}"
-                    ),
-                ));
-            }
-        };
-        let ((base, base_radius, base_at), (apex, apex_radius, apex_at)) = (base, apex);
-        for (r, (number, column), which) in [
-            (base_radius, base_at, "base"),
-            (apex_radius, apex_at, "apex"),
-        ] {
-            if r < 0.0 {
-                let radius = format!("{which} radius");
-                return Err(self.error(
-                    number,
-                    column,
-                    inside_only("cylinder or cone (c)", &radius),
-                ));
-            }
-        }
-        let name = format!("cone at line {}", line.number);
-        let at = line.words[0].0;
-        let refuse = |why: String| Err(self.error(line.number, at, why));
-        if base_radius == 0.0 && apex_radius == 0.0 {
-            return refuse(
-                "the base and apex radii of the cone (c) are both 0: it would be a line".into(),
-            );
-        }
-        if base == apex {
-            return refuse(
-                "the base and apex of the cone (c) are the same point: it would have no length"
-                    .into(),
-            );
-        }
-        if let Err(e) = cone_object(name.clone(), base, base_radius, apex, apex_radius, 0) {
-            return refuse(format!("a cone (c): {e}"));
-        }
-        Ok(json!({
-            "name": name,
-            "cone": {
-                "base": xyz(base),
-                "base_radius": base_radius,
-                "apex": xyz(apex),
-                "apex_radius": apex_radius,
-            },
-        }))
-    }
-}
-
-/// The refusal of a negative radius, which NFF gives an object seen only
-/// from inside: raytree's objects are seen from both sides or from outside.
-fn inside_only(object: &str, radius: &str) -> String {
-    format!(
-        "a negative {radius} makes NFF's inside-only {object}, seen only from inside, which raytree does not support"
-    )
 }
