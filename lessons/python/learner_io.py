@@ -534,7 +534,8 @@ def write_atomically(path, data):
 
 
 def ppm(width, height, colors):
-    """A binary PPM (P6) of rows from the top, each color linear RGB."""
+    """A binary PPM (P6) of rows from the top: the colors given are linear RGB
+    (what the tracer computes), each channel written as 8-bit sRGB."""
     body = bytearray()
     for c in colors:
         body += bytes(srgb8(x) for x in c)

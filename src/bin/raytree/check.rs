@@ -9,7 +9,6 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 use raytree::course::learner::{image, read, report};
-use raytree::io::image::to_rgb8;
 use raytree::io::{image_diff, image_file};
 use raytree::scene::overrides::Overrides;
 use raytree::trace::progress::Progress;
@@ -160,7 +159,7 @@ fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result
     let check = image::check_image(
         (&names.0, &names.1),
         &theirs,
-        to_rgb8(&ours),
+        &ours,
         args.tolerance.unwrap_or(1),
         args.worst.unwrap_or(10),
     );

@@ -8,6 +8,8 @@ use std::fmt::Write;
 
 use serde_json::json;
 
+use crate::course::learner::whole_image::{Explained, explain, words};
+use crate::io::image::{Image, to_rgb8};
 use crate::io::image_diff::per_pixel;
 use crate::methods::Antialiasing;
 use crate::scene::settings::RenderSettings;
@@ -52,6 +54,8 @@ pub struct ImageCheck {
     pub worst: Vec<Off>,
     /// raytree's render, 8-bit sRGB, rows from the top.
     pub ours: Vec<u8>,
+    /// The whole-image mistakes that explain the learner's image, if any.
+    pub explained: Option<Explained>,
 }
 
 /// The settings raytree renders the learner's image with: `settings` at the
@@ -78,18 +82,20 @@ pub fn settings_for(
     Ok(out)
 }
 
-/// Compares the learner's image `yours` with raytree's render `ours` (8-bit
-/// sRGB, rows from the top, the same size); `names` are the scene's and the
-/// learner's files, `worst` caps the pixels listed.
+/// Compares the learner's image `yours` with raytree's render `render`
+/// (linear RGB, the same size: it is written as 8-bit sRGB to compare, and
+/// kept linear to recognise an image written without that encoding); `names`
+/// are the scene's and the learner's files, `worst` caps the pixels listed.
 pub fn check_image(
     names: (&str, &str),
     yours: &image::RgbImage,
-    ours: Vec<u8>,
+    render: &Image,
     tolerance: u8,
     worst: usize,
 ) -> ImageCheck {
     let (width, height) = yours.dimensions();
     let theirs = yours.as_raw();
+    let ours = to_rgb8(render);
     let diff = per_pixel(theirs, &ours);
     let mut off: Vec<Off> = diff
         .iter()
@@ -107,6 +113,7 @@ pub fn check_image(
         })
         .collect();
     let count = off.len() as u64;
+    let explained = explain(theirs, render, tolerance, count);
     off.sort_by_key(|o| (std::cmp::Reverse(o.levels), o.y, o.x));
     off.truncate(worst);
     ImageCheck {
@@ -119,6 +126,7 @@ pub fn check_image(
         max: diff.iter().copied().max().unwrap_or(0),
         worst: off,
         ours,
+        explained,
     }
 }
 
@@ -169,9 +177,30 @@ impl ImageCheck {
             if self.tolerance == 1 { "" } else { "s" },
             self.max
         );
+        if let Some(e) = &self.explained {
+            for id in &e.ids {
+                let _ = writeln!(out, "{}.", words(id));
+            }
+            let _ = writeln!(
+                out,
+                "With {} fixed, {} of {total} pixels would still be off{}",
+                if e.ids.len() == 1 { "that" } else { "those" },
+                e.off,
+                if e.off == 0 {
+                    "."
+                } else {
+                    "; after fixing, check the image again."
+                }
+            );
+        }
         let _ = writeln!(
             out,
-            "the worst, each with the command that checks its rays (write the pixel's learner trace first):"
+            "the worst, each with the command that checks its rays (write the pixel's learner trace first{}):",
+            if self.explained.is_some() {
+                "; a trace shows the mistakes above only where they are in the camera, not in writing the image"
+            } else {
+                ""
+            }
         );
         for o in &self.worst {
             let _ = writeln!(
@@ -205,6 +234,11 @@ impl ImageCheck {
                 })
             })
             .collect();
+        let mistakes: Vec<_> = self
+            .explained
+            .iter()
+            .flat_map(|e| e.ids.iter().map(|id| json!({"id": id, "words": words(id)})))
+            .collect();
         let doc = json!({
             "format": "raytree-image-check",
             "version": 1,
@@ -218,6 +252,8 @@ impl ImageCheck {
             "max": self.max,
             "agree": self.agrees(),
             "worst": worst,
+            "mistakes": mistakes,
+            "off_if_fixed": self.explained.as_ref().map(|e| e.off),
         });
         serde_json::to_string_pretty(&doc).expect("a JSON value prints") + "\n"
     }

@@ -12,3 +12,4 @@ pub mod compare; // pairing the learner's rays with ours, each quantity within i
 pub mod diagnose; // the classic mistakes, each recognised from its numbers
 pub mod report; // the check: the first divergence in the lecture's words, text or JSON
 pub mod image; // a learner's whole image beside raytree's render: pixels off, the worst, their commands
+pub mod whole_image; // the mistakes that change a whole image at once: no sRGB, flipped, mirrored, BGR

@@ -170,3 +170,82 @@ fn bad_images_are_one_line_and_exit_2() {
         assert!(!fig.exists(), "{args:?} left a figure behind");
     }
 }
+
+/// The teacher's Python solution writing its image with one whole-image
+/// mistake (in the writer, where a learner makes it): raytree names the
+/// mistake before the pixel list and, with it fixed, no pixel is off; the
+/// unmutated image checks clean. The Python writes the linear bytes by
+/// truncating, as `int(v * 255)` does, one level below rounding.
+#[test]
+fn whole_image_mistakes_of_the_python_writer_are_named() {
+    use crate::tools::{Need, available};
+    if !available("", &[Need::Python3], "runs the course's Python tracer") {
+        return;
+    }
+    const WRITER: &str = r#"
+import importlib.util, sys
+sys.path.insert(0, "lessons/python")
+import learner_io
+spec = importlib.util.spec_from_file_location("solution", "lessons/python/teacher/solution.py")
+sol = importlib.util.module_from_spec(spec)
+spec.loader.exec_module(sol)
+mistake, scene, out = sys.argv[1:]
+encode = learner_io.srgb8
+if mistake == "no-srgb":
+    encode = lambda v: int(min(max(v, 0.0), 1.0) * 255.0)
+def ppm(w, h, colors):
+    rows = [list(colors[y * w:(y + 1) * w]) for y in range(h)]
+    if mistake == "rows-flipped":
+        rows.reverse()
+    if mistake == "columns-mirrored":
+        rows = [r[::-1] for r in rows]
+    if mistake == "channels-swapped":
+        rows = [[(c[2], c[1], c[0]) for c in r] for r in rows]
+    body = bytes(encode(v) for r in rows for c in r for v in c)
+    return b"P6\n%d %d\n255\n" % (w, h) + body
+learner_io.ppm = ppm
+sys.exit(learner_io.main(sol, [scene, "--width", "32", "--height", "24", "-o", out]))
+"#;
+    let dir = workdir("check-image-mistakes");
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let w = whitted();
+    for mistake in [
+        "none",
+        "no-srgb",
+        "rows-flipped",
+        "columns-mirrored",
+        "channels-swapped",
+    ] {
+        let ppm = dir.join(format!("{mistake}.ppm")).display().to_string();
+        let made = std::process::Command::new("python3")
+            .args(["-c", WRITER, mistake, &w, &ppm])
+            .current_dir(root)
+            .output()
+            .unwrap();
+        assert!(
+            made.status.success(),
+            "{mistake}: {}",
+            String::from_utf8_lossy(&made.stderr)
+        );
+        let out = raytree(&["check", &w, "--image", &ppm, "--json"], &dir);
+        let doc: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+        if mistake == "none" {
+            assert_eq!(out.status.code(), Some(0), "{doc:#}");
+            assert_eq!(doc["mistakes"], serde_json::json!([]), "{doc:#}");
+            continue;
+        }
+        assert_eq!(out.status.code(), Some(1), "{mistake}: {doc:#}");
+        let ids: Vec<&str> = doc["mistakes"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|m| m["id"].as_str().unwrap())
+            .collect();
+        assert_eq!(ids, [mistake], "{doc:#}");
+        assert_eq!(doc["off_if_fixed"], 0, "{mistake}: {doc:#}");
+        let text = raytree(&["check", &w, "--image", &ppm], &dir);
+        let text = String::from_utf8_lossy(&text.stdout);
+        let named = text.find("With that fixed, 0 of 768 pixels").expect(&text);
+        assert!(named < text.find("the worst").unwrap(), "{text}");
+    }
+}
