@@ -33,7 +33,7 @@ from learner_io import (  # noqa: E402,F401  (the path is set just above)
 
 
 def todo(lesson, what):
-    raise NotImplementedError("%s: write it (lessons/%s/lesson.md, vectors: `tracer.py test %s`)"
+    raise NotImplementedError("%s: write it (book/src/lessons/%s.md, vectors: `tracer.py test %s`)"
                               % (what, lesson, lesson[:2]))
 
 
@@ -155,11 +155,12 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
         {"kind": kind, "origin": [...], "direction": [...],
          "hit": None or {"object": name, "t": t, "point": [...], "normal": [...], "entering": bool},
          "shadows": [{"light": name, "blocked": bool, "by": name or None,
-                      "transmitted": share}, ...],
+                      "transmitted": share, "origin": [...], "direction": [...]}, ...],
          "local": [...], "k_rfl": k, "k_rfa": k, "tir": bool,
          "reflected": node or None, "refracted": node or None, "color": [...]}
 
-    (vec_json turns a tuple into a list.) The plumbing gives you:
+    (vec_json turns a tuple into a list; a shadow ray's origin and direction
+    may be left out, and with them written the check compares them first.) The plumbing gives you:
     tracer.closest_hit(origin, direction) -> (object index, t) or None;
     tracer.surface(i, origin, direction, t) -> (point, outward normal, pattern point);
     tracer.side(i, direction, outward normal, media) -> (entering, n1, n2, media beyond);

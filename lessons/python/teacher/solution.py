@@ -218,6 +218,8 @@ def raytrace(tracer, kind, origin, direction, depth, weight, media):
         s = shadow_ray(tracer, point, n, k)
         shadows.append({"light": light.name, "blocked": s["blocked"], "by": s["by"],
                         "transmitted": s["transmitted"]})
+        if not s["faces_away"]:
+            shadows[-1].update(origin=vec_json(s["origin"]), direction=vec_json(s["direction"]))
         if not s["blocked"]:
             lit.append((normalize(sub(light.position, point)), scale(light.color, s["transmitted"])))
     local = phong(material, color, scene.ambient_light, n, to_viewer, lit)

@@ -439,15 +439,13 @@ impl Walk<'_, '_> {
             let step = ctx.step(i, StepKind::Shadow(k));
             let q = |f: &str| format!("shadows[{k}].{f}");
             if s.light != ours.name {
-                self.push(
-                    path,
-                    q("light"),
-                    s.light.clone(),
-                    ours.name.clone(),
-                    step,
-                    None,
-                    true,
-                );
+                let learner = if ctx.scene.lights.iter().any(|l| l.name == s.light) {
+                    format!("'{}'", s.light)
+                } else {
+                    format!("'{}' (the scene has no light of that name)", s.light)
+                };
+                let ours = format!("'{}' (the scene's light number {k})", ours.name);
+                self.push(path, q("light"), learner, ours, step, None, true);
                 continue;
             }
             let ours_by = match &ours.outcome {
@@ -456,19 +454,61 @@ impl Walk<'_, '_> {
                 ShadowOutcomeRecord::Blocked { name, .. } => Some(name.as_str()),
                 ShadowOutcomeRecord::Reaches { .. } => None,
             };
+            // The ray before what it found, as for every other ray: a
+            // shadow ray sent the wrong way finds the wrong things.
+            let mut cast_agrees = agrees;
+            if let Some(o) = s.origin
+                && !same_point(o, ours.origin, ours.origin, tol + PER_LEVEL)
+            {
+                cast_agrees = false;
+                self.push(
+                    path,
+                    q("origin"),
+                    vec_words(o),
+                    vec_words(ours.origin),
+                    step,
+                    None,
+                    true,
+                );
+            }
+            if let Some(d) = s.direction
+                && !same_direction(d, ours.direction, tol + PER_LEVEL)
+            {
+                let why = cast_agrees
+                    .then(|| {
+                        crate::course::learner::signs::shadow_direction(
+                            ctx,
+                            s,
+                            d,
+                            ours,
+                            tol + PER_LEVEL,
+                        )
+                    })
+                    .flatten();
+                cast_agrees = false;
+                self.push(
+                    path,
+                    q("direction (as a unit vector)"),
+                    vec_words(d.normalize()),
+                    vec_words(ours.direction.normalize()),
+                    step,
+                    why,
+                    true,
+                );
+            }
             if s.blocked != ours_by.is_some() {
-                let why = agrees.then(|| diagnose::shadow(ctx, s, i, k)).flatten();
+                let why = cast_agrees
+                    .then(|| diagnose::shadow(ctx, s, i, k))
+                    .flatten();
                 let words = |b: Option<&str>| {
                     b.map_or("reaches the light".to_owned(), |o| {
                         format!("blocked by '{o}'")
                     })
                 };
-                let learner = if s.blocked {
-                    words(Some(
-                        s.by.clone().flatten().as_deref().unwrap_or("something"),
-                    ))
-                } else {
-                    words(None)
+                let learner = match (s.blocked, s.by.clone().flatten()) {
+                    (true, Some(by)) => words(Some(&by)),
+                    (true, None) => "blocked (no blocker named)".to_owned(),
+                    (false, _) => words(None),
                 };
                 self.push(path, q("blocked"), learner, words(ours_by), step, why, true);
                 continue;
@@ -496,32 +536,6 @@ impl Walk<'_, '_> {
                     q("transmitted"),
                     num(t),
                     num(*transmitted),
-                    step,
-                    None,
-                    true,
-                );
-            }
-            if let Some(o) = s.origin
-                && !same_point(o, ours.origin, ours.origin, tol + PER_LEVEL)
-            {
-                self.push(
-                    path,
-                    q("origin"),
-                    vec_words(o),
-                    vec_words(ours.origin),
-                    step,
-                    None,
-                    true,
-                );
-            }
-            if let Some(d) = s.direction
-                && !same_direction(d, ours.direction, tol + PER_LEVEL)
-            {
-                self.push(
-                    path,
-                    q("direction (as a unit vector)"),
-                    vec_words(d.normalize()),
-                    vec_words(ours.direction.normalize()),
                     step,
                     None,
                     true,

@@ -38,6 +38,7 @@ pub const MISTAKES: &[(&str, &str)] = &[
     ("normal-not-turned", "lessons/10-refraction"),
     ("normal-inward", "lessons/10-refraction"),
     ("normal-transform", "lessons/06-transforms"),
+    ("shadow-reversed", "lessons/08-shadows"),
     ("shadow-beyond-light", "lessons/08-shadows"),
     ("transparent-blocks", "lessons/08-shadows"),
     ("not-clamped", "lessons/07-phong"),
@@ -45,12 +46,14 @@ pub const MISTAKES: &[(&str, &str)] = &[
     ("reflection-sign", "lessons/09-reflection"),
     ("not-normalized", "lessons/09-reflection"),
     ("eta-swapped", "lessons/10-refraction"),
+    ("refraction-root-sign", "lessons/10-refraction"),
+    ("refraction-cos-sign", "lessons/10-refraction"),
     ("wrong-medium", "lessons/10-refraction"),
     ("tir-not-handled", "lessons/10-refraction"),
     ("coefficients", "lessons/11-recursion"),
 ];
 
-fn found(id: &'static str, words: String) -> Option<Diagnosis> {
+pub(super) fn found(id: &'static str, words: String) -> Option<Diagnosis> {
     let lesson = MISTAKES
         .iter()
         .find(|(i, _)| *i == id)
@@ -142,6 +145,9 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
                         "your refracted direction is Snell's with η = n₂/n₁ = {n2}/{n1}: the lecture's η is n₁/n₂ = {n1}/{n2} (from the side the ray comes from to the side it goes to)"
                     ),
                 );
+            }
+            if let Some(d) = crate::course::learner::signs::refracted(c, n, n1 / n2, &same) {
+                return Some(d);
             }
             let raw = ctx.tree().nodes[ctx.tree().nodes[i].parent?].direction;
             if (raw.length() - 1.0).abs() > 1e-3 && same(refract(raw, n, n1 / n2)) {
