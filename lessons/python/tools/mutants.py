@@ -45,6 +45,12 @@ MUTANTS = [
     ("pixel-corner", "04-rays",
      "c, r = x, camera.rows - 1 - y", "c, r = x + 0.5, camera.rows - 1 - y + 0.5",
      WHITTED, (416, 209), "pixel-corner", "primary"),
+    ("pixel-spacing", None,
+     "camera.half_width * 2.0 * c / (camera.columns - 1)\n"
+     "    v_r = -camera.half_height + camera.half_height * 2.0 * r / (camera.rows - 1)",
+     "camera.half_width * 2.0 * c / camera.columns\n"
+     "    v_r = -camera.half_height + camera.half_height * 2.0 * r / camera.rows",
+     WHITTED, (416, 209), "pixel-spacing", "primary"),
     ("far-root", "05-sphere",
      "for t in sorted(roots):", "for t in sorted(roots, reverse=True):",
      WHITTED, (416, 209), "far-root", "primary"),
@@ -61,6 +67,17 @@ MUTANTS = [
      "r_dot_v = dot(mirrored, to_viewer)\n"
      "        if material.specular > 0.0:",
      "lessons/07-phong/broad.json", (145, 35), "not-clamped", "primary"),
+    ("ambient-forgotten", None,
+     "local = scale(mul(color, ambient_light), material.ambient)", "local = ZERO",
+     "lessons/07-phong/ball.json", (135, 83), "ambient-forgotten", "primary"),
+    ("specular-colored", None,
+     "scale(arriving, material.specular * r_dot_v", "scale(mul(color, arriving), material.specular * r_dot_v",
+     "lessons/07-phong/ball.json", (135, 83), "specular-colored", "primary"),
+    ("transparent-per-surface", None,
+     'out["transmitted"] *= obj.material.transparent\n',
+     'out["transmitted"] *= obj.material.transparent ** len(\n'
+     '            [t for t in tracer.roots(obj, origin, direction) if 0.0 < t < SHADOW_T_MAX])\n',
+     WHITTED, GLASS_SHADOW, "transparent-per-surface", "primary"),
     ("shadow-beyond-light", "08-shadows",
      "SHADOW_T_MAX = 1.0 - 1e-9", "SHADOW_T_MAX = math.inf",
      "lessons/08-shadows/ceiling.json", (130, 90), "shadow-beyond-light", "primary"),

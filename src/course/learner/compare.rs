@@ -13,6 +13,7 @@ use crate::course::learner::format::{LearnerRay, LearnerTrace};
 use crate::course::learner::measure::{
     COLOR, Context, PER_LEVEL, same_color, same_direction, same_point, tolerance,
 };
+use crate::course::learner::terms;
 use crate::trace::recorder::Branch;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::tree::steps::StepKind;
@@ -531,13 +532,16 @@ impl Walk<'_, '_> {
                 (s.transmitted, &ours.outcome)
                 && (t - transmitted).abs() > COLOR
             {
+                let why = cast_agrees
+                    .then(|| terms::transmitted(ctx, s, t, ours, *transmitted))
+                    .flatten();
                 self.push(
                     path,
                     q("transmitted"),
                     num(t),
                     num(*transmitted),
                     step,
-                    None,
+                    why,
                     true,
                 );
             }

@@ -32,6 +32,7 @@ pub struct Diagnosis {
 pub const MISTAKES: &[(&str, &str)] = &[
     ("rows-flipped", "lessons/03-camera"),
     ("pixel-corner", "lessons/03-camera"),
+    ("pixel-spacing", "lessons/03-camera"),
     ("far-root", "lessons/05-sphere"),
     ("negative-root", "lessons/05-sphere"),
     ("no-offset", "lessons/08-shadows"),
@@ -41,7 +42,10 @@ pub const MISTAKES: &[(&str, &str)] = &[
     ("shadow-reversed", "lessons/08-shadows"),
     ("shadow-beyond-light", "lessons/08-shadows"),
     ("transparent-blocks", "lessons/08-shadows"),
+    ("transparent-per-surface", "lessons/08-shadows"),
     ("not-clamped", "lessons/07-phong"),
+    ("ambient-forgotten", "lessons/07-phong"),
+    ("specular-colored", "lessons/07-phong"),
     ("view-sign", "lessons/07-phong"),
     ("reflection-sign", "lessons/09-reflection"),
     ("not-normalized", "lessons/09-reflection"),
@@ -109,7 +113,8 @@ pub fn direction(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
                 );
             }
         }
-        return None;
+        let size = (ctx.scene.settings.width, ctx.scene.settings.height);
+        return crate::course::learner::pixel_grid::spacing(&camera, size, (x, y), &same);
     }
     let (_, h) = parent_hit(ctx, i)?;
     let (c, n) = (h.incoming, h.shading_normal);
@@ -434,6 +439,9 @@ pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
             "lessons/07-phong",
             "your local color is Phong's with L = light − P unnormalized: L must be a unit vector, (light − P)/|light − P|, or N·L and R·V are no cosines".to_owned(),
         );
+    }
+    if let Some(d) = crate::course::learner::terms::local(rec, got) {
+        return Some(d);
     }
     // The normal the learner wrote, if it is not of unit length: used as it is?
     let normal = l.hit.as_ref()?.as_ref()?.normal?.length();
