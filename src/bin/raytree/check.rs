@@ -27,9 +27,9 @@ pub struct Args {
     /// The scene the learner's tracer rendered (JSON, see scenes/README.md, or NFF). The settings flags below change it as render's do; with --image, the image sets the width and height.
     scene: PathBuf,
     /// The pixel the learner traced, in image coordinates: x to the right, y down from the top-left.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, requires = "learner", required_unless_present = "image")]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, requires = "learner")]
     pixel: Option<(u32, u32)>,
-    /// The learner's trace of that pixel (docs/learner-trace.md): JSON, at most 8 MiB.
+    /// The learner's trace of that pixel (docs/learner-trace.md): JSON, at most 8.4 MB.
     learner: Option<PathBuf>,
     /// Instead of one pixel's rays: the learner's whole image (PNG or PPM), compared with raytree's render at its size, one ray through each pixel's center.
     #[arg(long, value_name = "YOURS.png", conflicts_with_all = ["pixel", "learner"])]
@@ -64,12 +64,20 @@ pub fn run(args: &Args) -> Result<ExitCode> {
         protocol: None,
         overrides: args.overrides,
     };
+    // Neither mode given: name both (clap would name only --pixel).
+    if args.pixel.is_none() && args.image.is_none() {
+        return Err(usage(
+            "give --pixel X,Y and your trace of that pixel (TRACE.json), or --image YOURS.png for a whole image",
+        ));
+    }
     let (scene, source) = scene_args.load()?;
     if let Some(yours) = &args.image {
         return run_image(args, &scene, yours);
     }
     let (Some(pixel), Some(learner)) = (args.pixel, &args.learner) else {
-        anyhow::bail!("give --pixel X,Y and the learner's trace, or --image YOURS.png");
+        return Err(usage(
+            "give --pixel X,Y and your trace of that pixel (TRACE.json)",
+        ));
     };
     let (x, y) = pixel;
     let (width, height) = (scene.settings.width, scene.settings.height);

@@ -169,7 +169,13 @@ impl Walk<'_, '_> {
                 let why = agrees
                     .then(|| diagnose::coefficient(ctx, i, refracted_direction(l)))
                     .flatten();
-                self.push(path, name, vec_words(k), num(ours_k), step, why, true);
+                // A number written as one is said as one.
+                let yours = if k.x == k.y && k.y == k.z {
+                    num(k.x)
+                } else {
+                    vec_words(k)
+                };
+                self.push(path, name, yours, num(ours_k), step, why, true);
             }
             let child_name = if kind == StepKind::Reflect {
                 "reflected"

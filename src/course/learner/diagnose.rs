@@ -255,18 +255,27 @@ pub fn hit(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
         .iter()
         .map(|r| r.t)
         .find(|&r| (r - tl).abs() <= tol && ours.is_none_or(|o| (o - r).abs() > tol))?;
+    // The t here counts in raytree's direction; the report above, distances.
+    let length = node.direction.length();
+    let units = if (length - 1.0).abs() > 1e-9 {
+        format!(
+            " (t counts in units of raytree's direction, of length {length:.4}; the distances above are t·{length:.4})"
+        )
+    } else {
+        String::new()
+    };
     if root < 0.0 {
         found(
             "negative-root",
             format!(
-                "your t = {root:.4} for '{name}' is its negative root, behind the ray's origin: only roots with t > 0 are hits (lecture: the smallest positive t)"
+                "your t = {root:.4} for '{name}' is its negative root, behind the ray's origin: only roots with t > 0 are hits (lecture: the smallest positive t){units}"
             ),
         )
     } else {
         found(
             "far-root",
             format!(
-                "your t = {root:.4} for '{name}' is its far root; the closest hit is the smallest positive root{}",
+                "your t = {root:.4} for '{name}' is its far root; the closest hit is the smallest positive root{}{units}",
                 ours.map_or(String::new(), |o| format!(", t = {o:.4}"))
             ),
         )

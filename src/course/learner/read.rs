@@ -30,7 +30,7 @@ pub fn read(path: &Path) -> Result<LearnerTrace, String> {
 /// Parses a learner trace's text. The error is one line to follow the file's
 /// name: `L:C: …` for JSON syntax, else ` path: …`.
 pub fn parse(text: &str) -> Result<LearnerTrace, String> {
-    let value: Value = serde_json::from_str(text).map_err(|e| syntax(text, &e))?;
+    let Unique(value) = serde_json::from_str(text).map_err(|e| syntax(text, &e))?;
     let mut walk = Walk { rays: 0 };
     walk.trace(&value).map_err(|(path, message)| {
         let path = if path.is_empty() { "(document)" } else { &path };
@@ -61,12 +61,83 @@ fn syntax(text: &str, e: &serde_json::Error) -> String {
     };
     // Columns count from 1, as the scene reader's do (serde gives 0 at the
     // start of a line the file ends on).
+    let kind = if message.starts_with(TWICE) {
+        ""
+    } else {
+        "not JSON: "
+    };
     format!(
-        "{}:{}: not JSON: {}",
+        "{}:{}: {kind}{}",
         e.line(),
         e.column().max(1),
         printable(&message)
     )
+}
+
+/// How a key given twice in one object begins its error.
+const TWICE: &str = "the key ";
+
+/// A JSON value as serde_json reads it, except that a key given twice in one
+/// object is refused (serde_json keeps the last): a learner's writer that
+/// emits `"t"` twice has a bug the check must not hide by picking one.
+struct Unique(Value);
+
+impl<'de> serde::Deserialize<'de> for Unique {
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        d.deserialize_any(UniqueVisitor).map(Unique)
+    }
+}
+
+struct UniqueVisitor;
+
+impl<'de> serde::de::Visitor<'de> for UniqueVisitor {
+    type Value = Value;
+
+    fn expecting(&self, f: &mut std::fmt::Formatter) -> std::fmt::Result {
+        f.write_str("a JSON value")
+    }
+    fn visit_bool<E>(self, b: bool) -> Result<Value, E> {
+        Ok(Value::Bool(b))
+    }
+    fn visit_i64<E>(self, n: i64) -> Result<Value, E> {
+        Ok(Value::from(n))
+    }
+    fn visit_u64<E>(self, n: u64) -> Result<Value, E> {
+        Ok(Value::from(n))
+    }
+    fn visit_f64<E>(self, n: f64) -> Result<Value, E> {
+        Ok(Value::from(n))
+    }
+    fn visit_str<E>(self, s: &str) -> Result<Value, E> {
+        Ok(Value::from(s))
+    }
+    fn visit_string<E>(self, s: String) -> Result<Value, E> {
+        Ok(Value::String(s))
+    }
+    fn visit_unit<E>(self) -> Result<Value, E> {
+        Ok(Value::Null)
+    }
+    fn visit_seq<A: serde::de::SeqAccess<'de>>(self, mut seq: A) -> Result<Value, A::Error> {
+        let mut out = Vec::new();
+        while let Some(Unique(v)) = seq.next_element()? {
+            out.push(v);
+        }
+        Ok(Value::Array(out))
+    }
+    fn visit_map<A: serde::de::MapAccess<'de>>(self, mut map: A) -> Result<Value, A::Error> {
+        let mut out = Map::new();
+        while let Some(key) = map.next_key::<String>()? {
+            if out.contains_key(&key) {
+                return Err(serde::de::Error::custom(format_args!(
+                    "{TWICE}{} is given twice in one object",
+                    quote(&key, "`")
+                )));
+            }
+            let Unique(v) = map.next_value()?;
+            out.insert(key, v);
+        }
+        Ok(Value::Object(out))
+    }
 }
 
 /// The byte offset of 1-based line `line`, column `column` (serde_json's

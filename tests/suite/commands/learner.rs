@@ -745,6 +745,11 @@ fn bad_learner_files_are_one_line_and_exit_2() {
             good.replacen("\"entering\"", "\"entring\"", 1),
             "ray.hit.entring: unknown field",
         ),
+        (
+            "duplicate-key",
+            good.replacen("\"t\": ", "\"t\": 1, \"t\": ", 1),
+            "the key `t` is given twice in one object",
+        ),
         ("deep-json", deep, "nested too deep"),
         ("deep-rays", nested, "deeper than the 64 rays"),
         (
@@ -866,4 +871,59 @@ fn the_schema_and_the_examples_agree_with_the_reader() {
         assert!(r.agrees(), "{}:\n{}", path.display(), r.text());
     }
     assert!(n >= 2);
+}
+
+/// A light's name mistyped is said to be no light of the scene, and a
+/// shadow blocked with `"by": null` is said as blocked, naming no blocker
+/// (not "blocked by 'something'"). Pixel 168,120 lights the floor from both
+/// lights, so both shadow rays reach their lights.
+#[test]
+fn a_mistyped_light_and_an_unnamed_blocker_are_said_plainly() {
+    let (scene, src, _, ours) = whitted(168, 120);
+    let mut typo = ours.clone();
+    let shadows = typo.ray.shadows.as_mut().unwrap();
+    let name = shadows[0].light.clone();
+    shadows[0].light = format!("{name}y");
+    let report = check(&scene, &src, (168, 120), &typo);
+    let first = report.divergences().next().expect("a divergence");
+    assert_eq!(first.quantity, "shadows[0].light", "{}", report.text());
+    assert!(
+        first
+            .learner
+            .contains("the scene has no light of that name"),
+        "{}",
+        report.text()
+    );
+    let mut unnamed = ours.clone();
+    let s = &mut unnamed.ray.shadows.as_mut().unwrap()[0];
+    s.blocked = true;
+    s.by = Some(None);
+    s.transmitted = None;
+    let report = check(&scene, &src, (168, 120), &unnamed);
+    let first = report.divergences().next().expect("a divergence");
+    assert_eq!(first.quantity, "shadows[0].blocked", "{}", report.text());
+    assert_eq!(first.learner, "blocked (no blocker named)");
+}
+
+/// `check` with neither mode names both, as a usage error (exit 2); a
+/// coefficient written as one number is said as one.
+#[test]
+fn neither_mode_names_both_and_a_scalar_coefficient_reads_as_written() {
+    let dir = crate::commands::cli::workdir("check-neither");
+    let scene_file = crate::commands::cli::scenes().join("whitted.json");
+    let out = crate::commands::cli::raytree(&["check", scene_file.to_str().unwrap()], &dir);
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("--pixel X,Y") && err.contains("--image YOURS.png"),
+        "{err}"
+    );
+    assert_eq!(err.lines().count(), 1, "{err}");
+    let (scene, src, _, ours) = whitted(200, 280);
+    let mut k = ours.clone();
+    k.ray.k_rfl = Some(DVec3::splat(0.5));
+    let report = check(&scene, &src, (200, 280), &k);
+    let first = report.divergences().next().expect("a divergence");
+    assert_eq!(first.quantity, "k_rfl", "{}", report.text());
+    assert_eq!(first.learner, "0.5", "{}", report.text());
 }
