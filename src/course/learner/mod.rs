@@ -9,6 +9,7 @@ pub mod read; // the strict reader: bounded, every error one line with its JSON 
 pub mod reduce; // raytree's own trace reduced to the learner's fields
 pub mod measure; // the tolerances and why, and what a comparison works with
 pub mod compare; // pairing the learner's rays with ours, each quantity within its tolerance
+pub mod mistake; // what a diagnosis is, and every id with its lesson
 pub mod diagnose; // the classic mistakes, each recognised from its numbers
 pub mod pixel_grid; // primary rays spaced by 2W/N, not the lecture's 2W/(N − 1)
 pub mod signs; // the sign mistakes: a shadow ray reversed, Snell's formula with a sign turned

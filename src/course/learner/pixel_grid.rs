@@ -6,7 +6,7 @@
 
 use glam::DVec3;
 
-use crate::course::learner::diagnose::{Diagnosis, found};
+use crate::course::learner::mistake::{Diagnosis, found};
 use crate::scene::camera::Camera;
 
 /// The diagnosis when the learner's primary direction, accepted by `same`,

@@ -6,9 +6,9 @@
 
 use glam::DVec3;
 
-use crate::course::learner::diagnose::{Diagnosis, found};
 use crate::course::learner::format::LearnerShadow;
 use crate::course::learner::measure::{Context, same_direction};
+use crate::course::learner::mistake::{Diagnosis, found};
 use crate::tree::ray_tree::ShadowRecord;
 
 /// A shadow ray's direction `d` that differs from raytree's `ours`: the

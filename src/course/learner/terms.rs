@@ -7,9 +7,9 @@
 
 use glam::DVec3;
 
-use crate::course::learner::diagnose::{Diagnosis, found};
 use crate::course::learner::format::LearnerShadow;
 use crate::course::learner::measure::{COLOR, Context, same_color};
+use crate::course::learner::mistake::{Diagnosis, found};
 use crate::math::ray::Ray;
 use crate::shading::phong::power;
 use crate::tree::ray_tree::{LocalRecord, ShadowRecord};
