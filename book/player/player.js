@@ -134,12 +134,18 @@
       lines.join("\n") + (known(r, step) ? "" : "\n(what it meets: not found yet at step " + step + ")");
   };
 
-  // A number as a reader types it: a typographic minus (−), thousands
-  // separated by commas (336,120) or a decimal comma (0,5), a unit after it.
+  // A number as a reader types it: a typographic minus (−), a decimal comma
+  // (0,9514) or point, thousands apart by spaces (336 120), a unit after it.
+  // A lone comma is always a decimal comma: "0,9514" is read as the 9514 of
+  // thousands only where nothing else fits, commas grouping by three before
+  // a point (1,234.5) or more than one of them (1,234,567).
   function parseAnswer(text) {
     var t = text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
-    if (/^[-+]?\d{1,3}(,\d{3})+(\.\d*)?/.test(t)) t = t.replace(/,/g, "");
-    else t = t.replace(",", ".");
+    if (/^[-+]?\d{1,3}(,\d{3})+\./.test(t) || /^[-+]?\d{1,3}(,\d{3}){2,}(?![\d,])/.test(t)) {
+      t = t.replace(/,/g, "");
+    } else {
+      t = t.replace(",", ".");
+    }
     var m = /^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?/i.exec(t);
     return m ? Number(m[0]) : NaN;
   }
@@ -183,6 +189,10 @@
     });
     return { input: input, check: check, verdict: verdict, answer: answer, within: within };
   }
+
+  // Typed answers for the probe; browser.rs knows what each should read as.
+  var PARSE_CASES = ["0,9514", "\u22120,2328", "1,5", "0.5", "\u22120.2328",
+    "336 120", "1,234.5", "1,234,567", "2,5 px", "\u2212 7"];
 
   // ?selftest: the browser test's probe. It presses the real buttons and keys
   // and writes what the page then shows; the test judges it against the trace.
@@ -232,15 +242,20 @@
       q.input.value = String(q.answer);
       q.check.click();
       out.right = q.verdict.className;
-      // As a reader types it: a typographic minus, thousands with commas.
+      // As a reader types it: a typographic minus, thousands apart by
+      // spaces, a decimal comma.
       var abs = Math.abs(q.answer).toString();
-      if (Math.abs(q.answer) >= 1000 && Number.isInteger(q.answer)) abs = abs.replace(/\B(?=(\d{3})+$)/g, ",");
+      if (Number.isInteger(q.answer)) abs = abs.replace(/\B(?=(\d{3})+$)/g, " ");
+      else abs = abs.replace(".", ",");
       q.input.value = (q.answer < 0 ? "\u2212" : "") + abs;
       q.check.click();
       out.typed = q.input.value;
       out.typedVerdict = q.verdict.className;
       report.questions.push(out);
     });
+    // The reading of answers typed the ways readers type them; the test
+    // holds each to the number meant.
+    report.parsed = PARSE_CASES.map(function (c) { return [c, parseAnswer(c)]; });
     report.scrollWidth = document.documentElement.scrollWidth;
     report.width = document.documentElement.clientWidth;
     var pre = el("pre", "", JSON.stringify(report));

@@ -62,6 +62,7 @@ fn the_books_players_and_questions_work_in_a_real_browser() {
         );
         failures.extend(check_player(&e.name, e.number, &report, &loaded, &walk));
         failures.extend(check_questions(&e.name, &report, e.spec.questions.len()));
+        failures.extend(check_parsing(&e.name, &report));
         failures.extend(check_width(&e.name, &report));
     }
     for other in [
@@ -265,6 +266,45 @@ fn check_questions(name: &str, report: &Value, count: usize) -> Vec<String> {
             out.push(format!(
                 "{name}: question {}: a wrong answer got '{wrong}', the right one '{right}'",
                 k + 1
+            ));
+        }
+    }
+    out
+}
+
+/// Answers typed as readers type them are read as the numbers they mean. A
+/// lone comma is a decimal comma: "0,9514" was once read as 9514, and a
+/// reader typing the right answer the European way was told "too high".
+fn check_parsing(name: &str, report: &Value) -> Vec<String> {
+    let want = [
+        ("0,9514", 0.9514),
+        ("\u{2212}0,2328", -0.2328),
+        ("1,5", 1.5),
+        ("0.5", 0.5),
+        ("\u{2212}0.2328", -0.2328),
+        ("336 120", 336_120.0),
+        ("1,234.5", 1234.5),
+        ("1,234,567", 1_234_567.0),
+        ("2,5 px", 2.5),
+        ("\u{2212} 7", -7.0),
+    ];
+    let parsed = report["parsed"].as_array().cloned().unwrap_or_default();
+    let mut out = Vec::new();
+    if parsed.len() != want.len() {
+        out.push(format!(
+            "{name}: the probe read {} typed answers, not {}",
+            parsed.len(),
+            want.len()
+        ));
+    }
+    for (got, (text, value)) in parsed.iter().zip(want) {
+        let read = got[1].as_f64();
+        // Both sides are the nearest double to the same decimal; the
+        // tolerance only allows for a different rounding in the parse.
+        if got[0] != text || !read.is_some_and(|r| (r - value).abs() <= 1e-12 * value.abs()) {
+            out.push(format!(
+                "{name}: the answer typed {} is read as {}, not {value}",
+                got[0], got[1]
             ));
         }
     }
