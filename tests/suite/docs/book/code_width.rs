@@ -26,7 +26,7 @@ fn too_wide(markdown: &str) -> Vec<(usize, usize)> {
     out
 }
 
-fn markdown_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
+pub(super) fn markdown_files(dir: &Path, out: &mut Vec<std::path::PathBuf>) {
     for entry in std::fs::read_dir(dir).unwrap().flatten() {
         let p = entry.path();
         if p.is_dir() {

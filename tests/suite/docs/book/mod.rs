@@ -15,6 +15,7 @@ mod frame;
 mod links;
 mod make;
 mod page;
+mod stray_lists;
 pub(super) mod run;
 
 use std::process::Command;
