@@ -233,7 +233,8 @@ pub fn values(trace: &TraceDocument, sample: usize, step: usize) -> BTreeMap<Str
                 }
                 ShadowOutcomeRecord::Blocked { name, t, .. } => {
                     put("blocker_t", num(*t));
-                    format!("blocked by {name}")
+                    // Read in a sentence: "the shadow ray is blocked by the ball".
+                    format!("blocked by the {name}")
                 }
                 ShadowOutcomeRecord::FacesAway => {
                     "not cast: the light is behind the surface".to_owned()
