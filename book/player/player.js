@@ -69,7 +69,9 @@
     });
     this.diagram.addEventListener("click", function (e) {
       var t = e.target.closest ? e.target.closest("[data-ray]") : null;
-      if (t) self.pick(Number(t.getAttribute("data-ray")));
+      if (!t) return;
+      var shadow = t.getAttribute("data-shadow");
+      self.pick(Number(t.getAttribute("data-ray")), shadow === null ? undefined : Number(shadow));
     });
     this.go(0);
   }
@@ -84,8 +86,6 @@
       var until = p.getAttribute("data-until");
       var shown = stepOf(p) <= stop.step && (until === null || stop.step <= Number(until));
       p.style.display = shown ? "inline" : "none";
-      var current = shown && Number(p.getAttribute("data-ray")) === stop.ray;
-      p.classList.toggle("rp-current", current);
     });
     this.where.textContent = "stop " + (i + 1) + " of " + stops.length +
       " · step " + stop.step + " of " + this.data.steps;
@@ -104,31 +104,59 @@
     return r.found !== null && r.found <= step;
   }
 
+  // The list holds what the diagram draws: its rays, each with the shadow
+  // rays its hit has cast so far.
   Player.prototype.drawTree = function (stop) {
     var rays = this.data.rays, self = this;
     this.tree.textContent = "";
     var lists = {};
-    rays.forEach(function (r, i) {
-      if (r.spawn > stop.step) return;
+    function item(parent, cls, text, ray, shadow) {
       var li = el("li");
-      var meets = known(r, stop.step) ? " → " + (r.hit || "nothing") : "";
-      var b = el("button", "rp-node" + (i === stop.ray ? " rp-current" : ""),
-        "ray " + (i + 1) + " · " + r.kind + " (depth " + r.depth + ")" + meets);
-      b.setAttribute("data-ray", i);
-      b.addEventListener("click", function () { self.pick(i); });
+      var b = el("button", cls, text);
+      b.setAttribute("data-ray", ray);
+      if (shadow !== undefined) b.setAttribute("data-shadow", shadow);
+      b.addEventListener("click", function () { self.pick(ray, shadow); });
       li.appendChild(b);
+      parent.appendChild(li);
+      return li;
+    }
+    rays.forEach(function (r, i) {
+      if (r.spawn > stop.step || !r.drawn) return;
+      var meets = known(r, stop.step) ? " → " + (r.hit || "nothing") : "";
+      var parent = (r.parent === null ? null : lists[r.parent]) || self.tree;
+      var li = item(parent, "rp-node", "ray " + (i + 1) + " · " + r.kind +
+        " (depth " + r.depth + ")" + meets, i);
       var sub = el("ul");
       li.appendChild(sub);
       lists[i] = sub;
-      var parent = r.parent === null ? self.tree : lists[r.parent];
-      (parent || self.tree).appendChild(li);
+      r.shadows.forEach(function (s, k) {
+        if (s.step <= stop.step) item(sub, "rp-node rp-shadow", "shadow ray → " + s.light, i, k);
+      });
     });
   };
 
-  // Rays are numbered from 1, as raytree's tree graph numbers them.
-  Player.prototype.pick = function (i) {
+  // Shows ray i's numbers (shadow ray k of it, if given), marked in the list
+  // and the diagram. Rays are numbered from 1, as raytree's tree graph
+  // numbers them.
+  Player.prototype.pick = function (i, k) {
     var r = this.data.rays[i], step = this.data.stops[this.at].step;
     if (!r || r.spawn > step) return;
+    var s = k === undefined ? null : r.shadows[k];
+    if (s && s.step > step) return;
+    var mine = function (node) {
+      var shadow = node.getAttribute("data-shadow");
+      return Number(node.getAttribute("data-ray")) === i &&
+        (s ? shadow === String(k) : shadow === null);
+    };
+    this.parts.forEach(function (p) { p.classList.toggle("rp-current", mine(p)); });
+    Array.prototype.forEach.call(this.tree.querySelectorAll(".rp-node"), function (b) {
+      b.classList.toggle("rp-current", mine(b));
+    });
+    if (s) {
+      this.ray.textContent = "shadow ray to '" + s.light + "', cast from ray " + (i + 1) +
+        "'s hit\n" + s.lines.join("\n");
+      return;
+    }
     var lines = known(r, step) ? r.lines : r.lines.slice(0, r.spawn_lines);
     this.ray.textContent = "ray " + (i + 1) + ": " + r.kind + ", depth " + r.depth + "\n" +
       lines.join("\n") + (known(r, step) ? "" : "\n(what it meets: not found yet at step " + step + ")");
@@ -201,14 +229,20 @@
     players.forEach(function (p) {
       var seen = [];
       function look(how) {
-        var shown = {};
+        var shown = {}, shadows = {};
         p.parts.forEach(function (part) {
-          if (part.getAttribute("class").split(" ").indexOf("ray") < 0) return;
-          if (getComputedStyle(part).display !== "none") shown[part.getAttribute("data-ray")] = 1;
+          if (getComputedStyle(part).display === "none") return;
+          var cls = part.getAttribute("class").split(" ");
+          if (cls.indexOf("ray") >= 0) shown[part.getAttribute("data-ray")] = 1;
+          if (cls.indexOf("shadow") >= 0) {
+            shadows[part.getAttribute("data-ray") + "/" + part.getAttribute("data-shadow")] = 1;
+          }
         });
         seen.push({ how: how, stop: p.at, step: p.data.stops[p.at].step,
           rays: Object.keys(shown).map(Number).sort(function (a, b) { return a - b; }),
-          tree: p.tree.querySelectorAll(".rp-node").length });
+          tree: p.tree.querySelectorAll(".rp-node:not(.rp-shadow)").length,
+          shadows: p.tree.querySelectorAll(".rp-shadow").length,
+          shadowsShown: Object.keys(shadows).length });
       }
       look("start");
       while (!p.next.disabled) { p.next.click(); look("next"); }
@@ -219,12 +253,25 @@
       // Click the last ray the tree lists at the last stop, and the diagram's
       // primary ray: each shows its own numbers.
       p.go(p.data.stops.length - 1);
-      var nodes = p.tree.querySelectorAll(".rp-node");
+      var nodes = p.tree.querySelectorAll(".rp-node:not(.rp-shadow)");
       var last = nodes[nodes.length - 1];
       var clicked = [];
       if (last) {
         last.click();
         clicked.push({ ray: Number(last.getAttribute("data-ray")), shows: p.ray.textContent.split("\n")[0] });
+      }
+      // A listed shadow ray shows its own line, and the diagram marks it.
+      var shadows = p.tree.querySelectorAll(".rp-shadow");
+      var shadow = null;
+      if (shadows.length) {
+        var sb = shadows[shadows.length - 1];
+        sb.click();
+        var marked = p.diagram.querySelectorAll(".rp-current");
+        shadow = { ray: Number(sb.getAttribute("data-ray")), shadow: Number(sb.getAttribute("data-shadow")),
+          shows: p.ray.textContent.split("\n")[0], marked: marked.length,
+          markedShadow: Array.prototype.every.call(marked, function (m) {
+            return m.getAttribute("data-shadow") === sb.getAttribute("data-shadow");
+          }) };
       }
       var line = p.diagram.querySelector('.ray[data-ray="0"]');
       if (line) {
@@ -232,7 +279,8 @@
         clicked.push({ ray: 0, shows: p.ray.textContent.split("\n")[0] });
       }
       p.go(0);
-      report.players.push({ lesson: p.data.lesson, stops: p.data.stops.length, seen: seen, clicked: clicked });
+      report.players.push({ lesson: p.data.lesson, stops: p.data.stops.length, seen: seen, clicked: clicked,
+        shadow: shadow });
     });
     questions.forEach(function (q) {
       var out = {};

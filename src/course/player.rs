@@ -12,6 +12,7 @@ use crate::methods::Accel;
 use crate::tree::steps::StepKind;
 use crate::views::diagram::draw;
 use crate::views::diagram::options::{Fit, Options};
+use crate::views::diagram::reveal::Reveal;
 use crate::views::text;
 
 /// Everything a player shows.
@@ -68,6 +69,22 @@ pub struct PlayerRay {
     pub found: Option<usize>,
     /// What it hit, if anything.
     pub hit: Option<String>,
+    /// Whether the diagram draws it (the script's `[player] depth`): the
+    /// list names only what the reader can find in the drawing.
+    pub drawn: bool,
+    /// Its shadow rays, in the order cast, when the diagram draws them.
+    pub shadows: Vec<PlayerShadow>,
+}
+
+/// One shadow ray, listed under the ray whose hit casts it.
+#[derive(Serialize)]
+pub struct PlayerShadow {
+    /// The light it goes to.
+    pub light: String,
+    /// The step that casts it.
+    pub step: usize,
+    /// Its lines in the trace.
+    pub lines: Vec<String>,
 }
 
 /// The diagram's size: wide enough for its labels in a page's column.
@@ -120,6 +137,7 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         })
         .collect();
     let tree = &trace.samples[sample].tree;
+    let reveal = Reveal::of(trace, sample);
     let step_of = |node: usize, kinds: &[StepKind]| {
         steps
             .iter()
@@ -133,6 +151,24 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
             let spawn_step = step_of(i, &[StepKind::Spawn]);
             let spawn = spawn_step.map(lines);
             let end = step_of(i, &[StepKind::Hit, StepKind::Miss]);
+            let drawn = lesson.script.player.depth.is_none_or(|d| n.depth <= d);
+            let shadows = n
+                .shadow_rays
+                .iter()
+                .enumerate()
+                .filter(|_| drawn && !lesson.script.player.no_shadows)
+                // Only what the diagram draws: a light behind the surface
+                // casts no ray, and one wholly outside the frame is not seen.
+                .filter(|&(k, _)| svg.contains(&reveal.shadow(i, k)))
+                .filter_map(|(k, s)| {
+                    let step = step_of(i, &[StepKind::Shadow(k)])?;
+                    Some(PlayerShadow {
+                        light: s.name.clone(),
+                        step: step + 1,
+                        lines: lines(step),
+                    })
+                })
+                .collect();
             PlayerRay {
                 parent: n.parent,
                 kind: n.kind.name(),
@@ -146,6 +182,8 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
                     .collect(),
                 found: end.map(|k| k + 1),
                 hit: n.hit.as_ref().map(|h| h.name.clone()),
+                drawn,
+                shadows,
             }
         })
         .collect();

@@ -212,6 +212,28 @@ impl Figure {
         }
     }
 
+    /// [`Figure::arrow`] in the SVG only, as [`Figure::svg_only_line`].
+    pub fn svg_only_arrow(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        let (pa, pb) = (self.to_px(a), self.to_px(b));
+        let (Some(svg), Some(dir)) = (&mut self.svg, (pb - pa).try_normalize()) else {
+            return;
+        };
+        let head = (4.0 * f64::from(pen.width)).max(9.0);
+        let (base, side) = (pb - dir * head, dir.perp() * head * 0.4);
+        let stroke = SvgPaint {
+            fill: None,
+            stroke: Some(pen),
+            clip: true,
+        };
+        svg.path(&[pa, base], false, stroke);
+        let fill = SvgPaint {
+            fill: Some((pen.color, pen.alpha)),
+            stroke: None,
+            clip: true,
+        };
+        svg.path(&[pb, base + side, base - side], true, fill);
+    }
+
     /// A line from `a` to `b` with an arrowhead at `b`.
     pub fn arrow(&mut self, a: DVec2, b: DVec2, pen: Pen) {
         let (pa, pb) = (self.to_px(a), self.to_px(b));

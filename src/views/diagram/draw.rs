@@ -281,11 +281,14 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
         let Some(tag) = reveal.pending(s.node) else {
             continue;
         };
-        // On past the hit by more than the frame: the frame clips it.
-        let far = s.to + (s.to - s.from).normalize_or_zero() * (vhi - vlo).length() * 2.0;
-        if let Some((a, b)) = clip_segment(s.from, far, vlo, vhi) {
+        // A short arrow from where it enters the frame, never past half the
+        // way to the hit: a ray not yet traced crosses nothing it will
+        // miss, nor tells where it stops.
+        if let Some((a, b)) = clip_segment(s.from, s.to, vlo, vhi) {
+            let stub = ((b - a).length() / 2.0).min((vhi - vlo).length() / 14.0);
             fig.tag(&tag);
-            fig.svg_only_line(a, b, scale.pen(s.stroke.pen()));
+            let pen = scale.pen(s.stroke.pen()).passing();
+            fig.svg_only_arrow(a, a + (b - a).normalize_or_zero() * stub, pen);
         }
     }
     for s in &lay.segments {

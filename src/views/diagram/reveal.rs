@@ -69,9 +69,10 @@ impl Reveal {
         tag(Part::Ray, node, found)
     }
 
-    /// The attributes of a ray's stand-in between its spawn and its hit: the
-    /// line runs on to the frame's edge, so the figure does not tell where
-    /// the ray stops before the algorithm has found it. Hidden unless a
+    /// The attributes of a ray's stand-in between its spawn and its hit: a
+    /// short faint arrow from its start, so the figure neither tells where
+    /// the ray stops before the algorithm has found it nor draws it through
+    /// what it will miss. Hidden unless a
     /// player shows it; `None` when the ray's hit is found at its spawn.
     pub fn pending(&self, node: usize) -> Option<String> {
         let (&spawn, &hit) = (self.spawn.get(&node)?, self.hit.get(&node)?);
@@ -85,7 +86,8 @@ impl Reveal {
 
     /// The attributes of shadow ray `k` of `node`.
     pub fn shadow(&self, node: usize, k: usize) -> String {
-        tag(Part::Shadow, node, self.shadow.get(&(node, k)))
+        let tag = tag(Part::Shadow, node, self.shadow.get(&(node, k)));
+        format!("{tag} data-shadow=\"{k}\"")
     }
 
     /// The attributes of `node`'s hit and what is marked there.

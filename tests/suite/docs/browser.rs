@@ -13,6 +13,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use raytree::course::lesson;
+use raytree::tree::ray_tree::ShadowOutcomeRecord;
 use raytree::tree::steps::StepKind;
 use serde_json::Value;
 
@@ -160,15 +161,37 @@ fn check_player(
     }
     let steps = walk.trace.steps(loaded.script.sample);
     let tree = &walk.trace.samples[loaded.script.sample].tree;
-    // The diagram draws rays to the script's [player] depth; the tree lists all.
+    // The diagram draws rays to the script's [player] depth, and the list
+    // names what it draws: those rays, and their shadow rays unless the
+    // script leaves them out (lessons 3 to 5 once listed eleven rays beside
+    // a diagram of one).
     let depth = loaded.script.player.depth.unwrap_or(u32::MAX);
-    let spawned_by = |step: usize, drawn: bool| -> Vec<u64> {
+    let drawn = |s: &&raytree::tree::steps::Step| tree.nodes[s.node].depth <= depth;
+    let spawned_by = |step: usize| -> Vec<u64> {
         steps[..step]
             .iter()
             .filter(|s| s.kind == StepKind::Spawn)
-            .filter(|s| !drawn || tree.nodes[s.node].depth <= depth)
+            .filter(drawn)
             .map(|s| s.node as u64)
             .collect()
+    };
+    // Shadow rays cast by then (a light behind the surface casts none).
+    let shadows_by = |step: usize| -> u64 {
+        let cast = steps[..step]
+            .iter()
+            .filter(|s| match s.kind {
+                StepKind::Shadow(k) => !matches!(
+                    tree.nodes[s.node].shadow_rays[k].outcome,
+                    ShadowOutcomeRecord::FacesAway
+                ),
+                _ => false,
+            })
+            .filter(drawn);
+        if loaded.script.player.no_shadows {
+            0
+        } else {
+            cast.count() as u64
+        }
     };
     let seen = player["seen"].as_array().unwrap();
     let n = walk.stops.len();
@@ -183,9 +206,9 @@ fn check_player(
     }
     for (look, &stop) in seen.iter().zip(&order) {
         let step = walk.stops[stop].step;
-        let mut want = spawned_by(step, true);
+        let mut want = spawned_by(step);
         want.sort_unstable();
-        let listed = spawned_by(step, false).len();
+        let listed = want.len();
         let shown: Vec<u64> = look["rays"]
             .as_array()
             .unwrap()
@@ -204,11 +227,39 @@ fn check_player(
             ));
         } else if look["tree"] != listed {
             out.push(format!(
-                "{name}: at stop {} the tree lists {} rays, not {listed}",
+                "{name}: at stop {} the tree lists {} rays, not the {listed} drawn",
                 stop + 1,
                 look["tree"],
             ));
+        } else if look["shadows"] != look["shadowsShown"]
+            || look["shadows"]
+                .as_u64()
+                .is_none_or(|n| n > shadows_by(step))
+        {
+            // Every listed shadow ray is drawn, and none the trace has not cast.
+            out.push(format!(
+                "{name}: at stop {} the tree lists {} shadow rays, the diagram shows {}, the trace has cast {}",
+                stop + 1,
+                look["shadows"],
+                look["shadowsShown"],
+                shadows_by(step)
+            ));
         }
+    }
+    // A shadow ray clicked in the list shows its own line, and the diagram
+    // marks that shadow ray alone.
+    let listed = seen.iter().any(|l| l["shadows"].as_u64() > Some(0));
+    let shadow = &player["shadow"];
+    if listed
+        && !(shadow["shows"]
+            .as_str()
+            .is_some_and(|s| s.starts_with("shadow ray to '"))
+            && shadow["marked"].as_u64().is_some_and(|m| m > 0)
+            && shadow["markedShadow"] == true)
+    {
+        out.push(format!(
+            "{name}: clicking the last listed shadow ray gave {shadow}, not its line and its mark in the diagram"
+        ));
     }
     if tree.nodes.is_empty() {
         out.push(format!("{name}: the traced pixel has no rays"));
