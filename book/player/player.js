@@ -130,7 +130,7 @@
       li.appendChild(sub);
       lists[i] = sub;
       r.shadows.forEach(function (s, k) {
-        if (s.step <= stop.step) item(sub, "rp-node rp-shadow", "shadow ray → " + s.light, i, k);
+        if (s.step <= stop.step) item(sub, "rp-node rp-shadow", "shadow ray → " + s.light + " · " + s.outcome, i, k);
       });
     });
   };

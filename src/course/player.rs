@@ -9,6 +9,7 @@ use serde::Serialize;
 
 use crate::course::lesson::{Lesson, StepThrough};
 use crate::methods::Accel;
+use crate::tree::ray_tree::ShadowOutcomeRecord;
 use crate::tree::steps::StepKind;
 use crate::views::diagram::draw;
 use crate::views::diagram::options::{Fit, Options};
@@ -83,6 +84,8 @@ pub struct PlayerShadow {
     pub light: String,
     /// The step that casts it.
     pub step: usize,
+    /// What it found, in a word for the list: reaches, dimmed or blocked.
+    pub outcome: &'static str,
     /// Its lines in the trace.
     pub lines: Vec<String>,
 }
@@ -163,6 +166,14 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
                 .filter_map(|(k, s)| {
                     let step = step_of(i, &[StepKind::Shadow(k)])?;
                     Some(PlayerShadow {
+                        outcome: match s.outcome {
+                            ShadowOutcomeRecord::Reaches { transmitted } if transmitted < 1.0 => {
+                                "dimmed"
+                            }
+                            ShadowOutcomeRecord::Reaches { .. } => "reaches",
+                            ShadowOutcomeRecord::Blocked { .. } => "blocked",
+                            ShadowOutcomeRecord::FacesAway => "not cast",
+                        },
                         light: s.name.clone(),
                         step: step + 1,
                         lines: lines(step),
