@@ -287,7 +287,11 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
         if let Some((a, b)) = clip_segment(s.from, s.to, vlo, vhi) {
             let stub = ((b - a).length() / 2.0).min((vhi - vlo).length() / 14.0);
             fig.tag(&tag);
-            let pen = scale.pen(s.stroke.pen()).passing();
+            // Faint in its kind's own dashes: dotted would read as passing.
+            let pen = Pen {
+                alpha: 110,
+                ..scale.pen(s.stroke.pen())
+            };
             fig.svg_only_arrow(a, a + (b - a).normalize_or_zero() * stub, pen);
         }
     }
