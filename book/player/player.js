@@ -178,6 +178,16 @@
     return m ? Number(m[0]) : NaN;
   }
 
+  // Every reading of a typed answer. "336,120" is 336.12 with a decimal
+  // comma and 336120 with a thousands comma; a question takes the reading
+  // nearer its answer, so neither way of writing is told it is wrong.
+  function readings(text) {
+    var first = parseAnswer(text);
+    var t = text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
+    var m = /^([-+]?[1-9]\d{0,2}),(\d{3})(?![\d.,])/.exec(t);
+    return m ? [first, Number(m[1] + m[2])] : [first];
+  }
+
   function Question(root) {
     var answer = Number(root.getAttribute("data-answer"));
     var within = Number(root.getAttribute("data-within"));
@@ -201,7 +211,9 @@
     if (worked) worked.style.display = "none";
     form.addEventListener("submit", function (e) {
       e.preventDefault();
-      var given = parseAnswer(input.value);
+      var given = readings(input.value).reduce(function (a, b) {
+        return Math.abs(b - answer) < Math.abs(a - answer) ? b : a;
+      });
       if (isNaN(given)) {
         verdict.textContent = "Type a number.";
         verdict.className = "rq-verdict";
@@ -299,6 +311,13 @@
       q.check.click();
       out.typed = q.input.value;
       out.typedVerdict = q.verdict.className;
+      if (Number.isInteger(q.answer) && Math.abs(q.answer) >= 1000) {
+        // The English way: thousands apart by commas.
+        q.input.value = q.answer.toString().replace(/\B(?=(\d{3})+$)/g, ",");
+        q.check.click();
+        out.commas = q.input.value;
+        out.commasVerdict = q.verdict.className;
+      }
       report.questions.push(out);
     });
     // The reading of answers typed the ways readers type them; the test

@@ -313,6 +313,17 @@ fn check_questions(name: &str, report: &Value, count: usize) -> Vec<String> {
                 q["typed"]
             ));
         }
+        // A whole answer of 1,000 or more typed with thousands commas
+        // ("336,120", which could also be 336.12) is right too.
+        if let Some(commas) = q["commasVerdict"].as_str()
+            && !commas.contains("rq-right")
+        {
+            out.push(format!(
+                "{name}: question {}: the right answer typed with thousands commas, {}, got '{commas}'",
+                k + 1,
+                q["commas"]
+            ));
+        }
         if !wrong.contains("rq-wrong") || !right.contains("rq-right") {
             out.push(format!(
                 "{name}: question {}: a wrong answer got '{wrong}', the right one '{right}'",
