@@ -9,7 +9,8 @@
 #   - each side's wall time for the whole command (start-up, parsing, building,
 #     rendering, writing the PNG) and their ratio, and
 #   - each side's own report of its rendering time (POV-Ray's "Trace Time",
-#     raytree's "in … s", both without start-up, parsing and writing the file)
+#     raytree's "… s building and tracing", both without start-up, parsing and
+#     writing the file)
 #     and their ratio: POV-Ray's fixed start-up (about 0.7 s) flatters small
 #     images in the first ratio, not in this one,
 # and how far the images differ in 8-bit.
@@ -46,6 +47,13 @@ wall() {
     awk -v a="$start" -v b="$end" 'BEGIN { printf "%.6f\n", b - a }'
 }
 
+# raytree's own time from its "wrote" line: "…, 0.31 s building and tracing on
+# 2 threads", or "in 0.31 s on" from a build older than 2026-11-26 (BEFORE).
+own_time() {
+    sed -n -e 's/.*, \([0-9.]*\) s building and tracing on .*/\1/p' \
+        -e 's/.* in \([0-9.]*\) s on .*/\1/p' "$1"
+}
+
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2fx", a / b }'; }
 
 wait_for_idle
@@ -62,11 +70,11 @@ for scene in whitted spheres; do
             if [[ -n ${BEFORE:-} ]]; then
                 wall "$BEFORE" render "$root/scenes/$scene.json" --width "$w" --height "$h" \
                     --spp 1 --max-depth 8 --threads "$cores" -o "$out/before.png" >/dev/null
-                before_own+=("$(sed -n 's/.* in \([0-9.]*\) s on .*/\1/p' "$out/stderr")")
+                before_own+=("$(own_time "$out/stderr")")
             fi
             ours+=("$(wall "$raytree" render "$root/scenes/$scene.json" --width "$w" --height "$h" \
                 --spp 1 --max-depth 8 --threads "$cores" -o "$out/raytree.png")")
-            ours_own+=("$(sed -n 's/.* in \([0-9.]*\) s on .*/\1/p' "$out/stderr")")
+            ours_own+=("$(own_time "$out/stderr")")
             # POV-Ray finds spheres.inc in the working folder; +GS prints its statistics (the trace time).
             theirs+=("$(cd "$here" && wall povray "+I$scene.pov" "+O$out/povray.png" "+W$w" "+H$h" \
                 -D -A +FN8 File_Gamma=sRGB "+WT$cores" -V +GS)")
