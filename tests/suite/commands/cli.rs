@@ -28,12 +28,36 @@ pub fn scenes() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes")
 }
 
-/// A fresh empty folder for one test.
-pub fn workdir(name: &str) -> PathBuf {
+/// A fresh empty folder for one test, removed when the test ends, passed or
+/// failed: each run of the suite had left its folders behind (hundreds of
+/// them, a few hundred kilobytes each, in the temporary directory).
+pub fn workdir(name: &str) -> Workdir {
     let dir = std::env::temp_dir().join(format!("raytree-cli-{name}-{}", std::process::id()));
     let _ = std::fs::remove_dir_all(&dir);
     std::fs::create_dir_all(&dir).unwrap();
-    dir
+    Workdir(dir)
+}
+
+/// A test's folder; see [`workdir`].
+pub struct Workdir(PathBuf);
+
+impl std::ops::Deref for Workdir {
+    type Target = Path;
+    fn deref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl AsRef<Path> for Workdir {
+    fn as_ref(&self) -> &Path {
+        &self.0
+    }
+}
+
+impl Drop for Workdir {
+    fn drop(&mut self) {
+        let _ = std::fs::remove_dir_all(&self.0);
+    }
 }
 
 /// Runs `render` on `scene_text` (written to `bad.json`) with extra arguments and
