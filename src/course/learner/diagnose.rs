@@ -314,7 +314,7 @@ pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Di
     let index = ctx.scene.objects.iter().position(|o| o.name == by)?;
     let object = &ctx.scene.objects[index];
     let ray = Ray::new(ours.origin, ours.direction);
-    let roots = object.roots(&ray, ctx.scene.settings.sphere);
+    let roots = object.roots(&ray, ctx.scene.settings.intersection_methods());
     let before_light = roots.as_slice().iter().any(|&t| t > 1e-9 && t < 1.0);
     let beyond = roots.as_slice().iter().any(|&t| t >= 1.0);
     if beyond && !before_light {
