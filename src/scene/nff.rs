@@ -200,14 +200,14 @@ impl<'t> Reader<'t> {
                     if scene.background.is_some() {
                         return Err(self.error(n, column, "a second background (b): give one"));
                     }
-                    scene.background = Some(self.color(&line, DVec3::new(r, g, b))?);
+                    scene.background = Some(self.color(&line, 1, DVec3::new(r, g, b))?);
                 }
                 "l" => {
                     let (position, color) = match line.words.len() {
                         4 => (self.point(&line, 1, "a light's position")?, None),
                         7 => {
                             let [_, _, _, r, g, b] = self.numbers(&line)?;
-                            let color = self.color(&line, DVec3::new(r, g, b))?;
+                            let color = self.color(&line, 4, DVec3::new(r, g, b))?;
                             (self.point(&line, 1, "a light's position")?, Some(color))
                         }
                         _ => {
@@ -367,10 +367,12 @@ impl<'t> Reader<'t> {
         Ok(())
     }
 
-    /// A color as NFF gives it, for a display (sRGB), checked and made linear.
-    fn color(&self, line: &Line, c: DVec3) -> Result<DVec3, SceneError> {
+    /// A color as NFF gives it, for a display (sRGB), checked and made linear;
+    /// an error names word `first`, its R, where the color begins on the line
+    /// (a light's `l X Y Z R G B` puts it after the position).
+    fn color(&self, line: &Line, first: usize, c: DVec3) -> Result<DVec3, SceneError> {
         let c = limits::color(c)
-            .map_err(|e| self.error(line.number, line.words[1].0, format!("a color: {e}")))?;
+            .map_err(|e| self.error(line.number, line.words[first].0, format!("a color: {e}")))?;
         Ok(DVec3::new(
             srgb_to_linear(c.x),
             srgb_to_linear(c.y),
@@ -470,7 +472,7 @@ impl<'t> Reader<'t> {
 
     fn material(&self, line: &Line, v: [f64; 8]) -> Result<Value, SceneError> {
         let [r, g, b, kd, ks, shine, t, ior] = v;
-        let color = self.color(line, DVec3::new(r, g, b))?;
+        let color = self.color(line, 1, DVec3::new(r, g, b))?;
         let at = |k: usize| line.words[k].0;
         let coefficient = |k: usize, name: &str, x: f64, max: f64| {
             if (0.0..=max).contains(&x) {
