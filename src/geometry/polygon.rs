@@ -98,7 +98,8 @@ impl Polygon {
     /// not finite, the first three vertices on one line (within
     /// [`COLLINEAR_SINE`](crate::geometry::polygon_plane::COLLINEAR_SINE)), a
     /// vertex off their plane by more than
-    /// [`PLANE_TOLERANCE`](crate::geometry::polygon_plane::PLANE_TOLERANCE), a count of normals other than the vertices', a zero
+    /// [`PLANE_TOLERANCE`](crate::geometry::polygon_plane::PLANE_TOLERANCE), a reflex
+    /// corner at the second vertex, a count of normals other than the vertices', a zero
     /// normal.
     pub fn new(
         vertices: Vec<DVec3>,
@@ -124,6 +125,7 @@ impl Polygon {
             PlaneError::OffPlane { vertex, off, allowed } => format!(
                 "vertices[{vertex}] lies {off:e} off the plane of the first three (allowed: {allowed:e})"
             ),
+            PlaneError::ReflexFirstCorner => "vertices[1] is a reflex corner: the polygon's front and normal come from vertices[0], vertices[1] and vertices[2], which here turn against the outline's own winding, so it would face away (start the outline at a convex corner)".to_owned(),
         })?;
         let normals = match normals {
             None => None,
@@ -558,6 +560,8 @@ mod tests {
         let mut bent = sq.clone();
         bent[3].z = 0.01;
         assert!(refused(bent, None).contains("vertices[3] lies 1e-2 off"));
+        let arrow = vec![v(2., -1., 0.), v(1., 0., 0.), v(2., 1., 0.), v(0., 0., 0.)];
+        assert!(refused(arrow, None).contains("vertices[1] is a reflex corner"));
         // Within the tolerance (1e-5 of the size 2): accepted.
         let mut nearly = sq.clone();
         nearly[3].z = 1e-5;

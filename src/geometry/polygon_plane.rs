@@ -1,5 +1,5 @@
 //! A polygon's plane, as NFF defines it: the normal of the first three
-//! vertices, every other vertex on their plane. Apart from the polygon itself
+//! vertices, every other vertex on their plane, the first corner convex. Apart from the polygon itself
 //! so that a reader can name what is wrong in its own format's terms (NFF's
 //! "vertices 1 to 3", the scene JSON's `vertices[0]`), by the one rule the
 //! intersection uses.
@@ -34,11 +34,17 @@ pub enum PlaneError {
         /// How far it might lie, at this polygon's size.
         allowed: f64,
     },
+    /// The corner at the second vertex is reflex: the first three vertices
+    /// turn against the whole outline's winding (their normal against its
+    /// [`newell_normal`]), so the polygon would face away from the side its
+    /// outline runs counter-clockwise on. Checked here, not by each reader, so
+    /// the JSON and NFF readers cannot disagree on which polygons they take.
+    ReflexFirstCorner,
 }
 
 /// The unit normal of the first three of `vertices` (at least three, finite),
 /// counter-clockwise seen from the front, once every vertex is checked to lie
-/// on their plane.
+/// on their plane and the first corner to turn the outline's way.
 pub fn plane_normal(vertices: &[DVec3]) -> Result<DVec3, PlaneError> {
     let (e1, e2) = (vertices[1] - vertices[0], vertices[2] - vertices[0]);
     let cross = e1.cross(e2);
@@ -59,6 +65,9 @@ pub fn plane_normal(vertices: &[DVec3]) -> Result<DVec3, PlaneError> {
                 allowed,
             });
         }
+    }
+    if newell_normal(vertices).dot(normal) < 0.0 {
+        return Err(PlaneError::ReflexFirstCorner);
     }
     Ok(normal)
 }
@@ -111,8 +120,12 @@ mod tests {
     fn newell_sees_a_reflex_first_corner_that_the_first_three_hide() {
         let arrow =
             [(2.0, -1.0), (1.0, 0.0), (2.0, 1.0), (0.0, 0.0)].map(|(x, y)| DVec3::new(x, y, 0.0));
-        assert_eq!(plane_normal(&arrow), Ok(DVec3::NEG_Z));
+        assert_eq!(plane_normal(&arrow), Err(PlaneError::ReflexFirstCorner));
         assert!(newell_normal(&arrow).z > 0.0);
+        // The same outline begun at its convex corner (0, 0) faces +z.
+        let mut begun = arrow.to_vec();
+        begun.rotate_left(3);
+        assert_eq!(plane_normal(&begun), Ok(DVec3::Z));
         // Convex first corner: both agree, with twice the area.
         assert_eq!(newell_normal(&square()), DVec3::new(0.0, 0.0, 2.0));
         let far: Vec<DVec3> = square().iter().map(|v| *v + DVec3::splat(1e8)).collect();

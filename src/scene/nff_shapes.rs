@@ -9,14 +9,15 @@
 //! from the outline's own winding: the polygon would face away, unseen from
 //! the side its vertices say is the front. Newell's normal of the whole
 //! outline knows the winding whichever corner comes first, so where the two
-//! disagree the file is refused, naming the corner.
+//! disagree the file is refused, naming the corner (the check is
+//! [`plane_normal`]'s, which the scene JSON's polygons share).
 
 use glam::DVec3;
 use serde_json::{Value, json};
 
 use crate::geometry::cone::cone_object;
 use crate::geometry::polygon::Polygon;
-use crate::geometry::polygon_plane::{PlaneError, newell_normal, plane_normal};
+use crate::geometry::polygon_plane::{PlaneError, plane_normal};
 use crate::scene::limits;
 use crate::scene::nff::{Line, MAX_POLYGON_VERTICES, Reader};
 use crate::scene::nff_json::xyz;
@@ -182,7 +183,7 @@ impl Reader<'_> {
             }
             at.push((v.number, v.words[0].0));
         }
-        let normal = plane_normal(&vertices).map_err(|e| match e {
+        plane_normal(&vertices).map_err(|e| match e {
             PlaneError::Collinear => self.error(
                 at[2].0,
                 at[2].1,
@@ -206,17 +207,15 @@ impl Reader<'_> {
                     distance(allowed)
                 ),
             ),
-        })?;
-        if newell_normal(&vertices).dot(normal) < 0.0 {
-            return Err(self.error(
+            PlaneError::ReflexFirstCorner => self.error(
                 at[1].0,
                 at[1].1,
                 format!(
                     "the {what} on line {} has a reflex first corner, at vertex 2: NFF takes the normal from the first two edges, which must make a convex angle, and these turn it away from the outline's own winding (start the outline at a convex corner)",
                     line.number
                 ),
-            ));
-        }
+            ),
+        })?;
         let normals: Option<Vec<DVec3>> = patch.then_some(normals);
         let one_sided = !patch && !transparent;
         Polygon::new(vertices.clone(), normals.clone(), one_sided)

@@ -231,6 +231,11 @@ fn each_validation_error_names_its_field() {
             "objects[0].polygon: vertices[3] lies 5e-1 off the plane of the first three",
         ),
         (
+            "reflex-polygon",
+            r#"{"objects": [{"polygon": {"vertices": [[2, -1, 0], [1, 0, 0], [2, 1, 0], [0, 0, 0]], "one_sided": true}}]}"#,
+            "objects[0].polygon: vertices[1] is a reflex corner",
+        ),
+        (
             "patch-normals-count",
             r#"{"objects": [{"polygon": {"vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "normals": [[0, 0, 1]]}}]}"#,
             "objects[0].polygon.normals: give one normal per vertex: 3 vertices, 1 normals",
