@@ -164,6 +164,8 @@
 
   // A number as a reader types it: a typographic minus (−), a decimal comma
   // (0,9514) or point, thousands apart by spaces (336 120), a unit after it.
+  // Anything else after the number makes it no number ("1,2,3", "1.234,5",
+  // "1e"), rather than the number its first digits happen to spell.
   // A lone comma is always a decimal comma: "0,9514" is read as the 9514 of
   // thousands only where nothing else fits, commas grouping by three before
   // a point (1,234.5) or more than one of them (1,234,567).
@@ -174,8 +176,8 @@
     } else {
       t = t.replace(",", ".");
     }
-    var m = /^[-+]?(\d+\.?\d*|\.\d+)(e[-+]?\d+)?/i.exec(t);
-    return m ? Number(m[0]) : NaN;
+    var m = /^([-+]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?)([^\d.,e+\-][^\d.,]*)?$/i.exec(t);
+    return m ? Number(m[1]) : NaN;
   }
 
   // Every reading of a typed answer. "336,120" is 336.12 with a decimal
@@ -232,7 +234,8 @@
 
   // Typed answers for the probe; browser.rs knows what each should read as.
   var PARSE_CASES = ["0,9514", "\u22120,2328", "1,5", "0.5", "\u22120.2328",
-    "336 120", "1,234.5", "1,234,567", "2,5 px", "\u2212 7"];
+    "336 120", "1,234.5", "1,234,567", "2,5 px", "\u2212 7", "45\u00b0", "1e3",
+    "1,2,3", "1.234,5", "1e"];
 
   // ?selftest: the browser test's probe. It presses the real buttons and keys
   // and writes what the page then shows; the test judges it against the trace.
