@@ -11,7 +11,8 @@ use glam::DVec3;
 use crate::course::learner::diagnose::{self, Diagnosis};
 use crate::course::learner::format::{LearnerRay, LearnerTrace};
 use crate::course::learner::measure::{
-    COLOR, Context, PER_LEVEL, same_color, same_direction, same_point, tolerance,
+    COLOR, Context, PER_LEVEL, before_light, same_color, same_direction, same_distance, same_point,
+    shadow_roots, tolerance,
 };
 use crate::course::learner::terms;
 use crate::trace::recorder::Branch;
@@ -356,7 +357,7 @@ impl Walk<'_, '_> {
         }
         if let Some(t) = h.t {
             let (dl, d) = (t * l.direction.length(), ours.t * node.direction.length());
-            if (dl - d).abs() > tol * 1f64.max(d).max(node.origin.length()) {
+            if !same_distance(dl, d, node.origin, tol) {
                 let why = why(diagnose::hit);
                 self.push(
                     path,
@@ -561,17 +562,16 @@ fn refracted_direction(l: &LearnerRay) -> Option<DVec3> {
 }
 
 /// Whether object `by` is opaque and meets raytree's shadow ray `ours`
-/// between the point and the light (0 < t < its `t_max`, just short of the
+/// between the point and the light ([`before_light`]: 0 < t < its `t_max`, just short of the
 /// light, as raytree's own shadow test):
 /// where two opaque objects stand in the way, a tracer may name either.
 fn blocks(ctx: &Context, by: &str, ours: &crate::tree::ray_tree::ShadowRecord) -> bool {
     let Some(i) = ctx.scene.objects.iter().position(|o| o.name == by) else {
         return false;
     };
-    let ray = crate::math::ray::Ray::new(ours.origin, ours.direction);
     ctx.scene.material_of(i).transparent == 0.0
-        && ctx.scene.objects[i]
-            .roots(&ray, ctx.scene.settings.intersection_methods())
-            .first_in(0.0, ours.t_max)
-            .is_some()
+        && shadow_roots(ctx, i, ours)
+            .as_slice()
+            .iter()
+            .any(|&t| before_light(t, ours))
 }

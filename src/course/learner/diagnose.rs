@@ -10,11 +10,12 @@
 use glam::DVec3;
 
 use crate::course::learner::format::{Kind, LearnerRay, LearnerShadow};
-use crate::course::learner::measure::{Context, same_color, same_direction, tolerance};
+use crate::course::learner::measure::{
+    Context, before_light, phong, same_color, same_direction, same_distance, shadow_roots,
+    tolerance, unclamped_extra,
+};
 use crate::geometry::object::Shape;
-use crate::math::ray::Ray;
 use crate::shading::optics::{reflect, refract};
-use crate::shading::phong::power;
 use crate::tree::ray_tree::{HitRecord, LocalRecord, RayNode, ShadowOutcomeRecord};
 
 use crate::course::learner::mistake::found;
@@ -187,10 +188,10 @@ pub fn hit(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
         .as_deref()
         .or(node.hit.as_ref().map(|o| o.name.as_str()))?;
     let distance = t * l.direction.length();
-    let scale = 1f64.max(node.origin.length());
+    let tol = tolerance(node.depth);
     if let Some((_, ph)) = parent_hit(ctx, i)
         && ph.name == name
-        && distance.abs() <= tolerance(node.depth) * scale
+        && same_distance(distance, 0.0, node.origin, tol)
     {
         return found(
             "no-offset",
@@ -202,14 +203,12 @@ pub fn hit(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
     }
     let test = node.tests.iter().find(|r| r.name == name)?;
     let ours = node.hit.as_ref().filter(|o| o.name == name).map(|o| o.t);
-    // The learner's t in the units of raytree's direction.
-    let tl = distance / node.direction.length();
-    let tol = tolerance(node.depth) * scale / node.direction.length();
-    let root = test
-        .roots
-        .iter()
-        .map(|r| r.t)
-        .find(|&r| (r - tl).abs() <= tol && ours.is_none_or(|o| (o - r).abs() > tol))?;
+    // Distances along raytree's ray, compared as the hit's t is.
+    let along = |t: f64| t * node.direction.length();
+    let root = test.roots.iter().map(|r| r.t).find(|&r| {
+        same_distance(distance, along(r), node.origin, tol)
+            && ours.is_none_or(|o| !same_distance(along(o), along(r), node.origin, tol))
+    })?;
     // The t here counts in raytree's direction; the report above, distances.
     let length = node.direction.length();
     let units = if (length - 1.0).abs() > 1e-9 {
@@ -312,12 +311,10 @@ pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Di
     }
     let ours = &node.shadow_rays[k];
     let index = ctx.scene.objects.iter().position(|o| o.name == by)?;
-    let object = &ctx.scene.objects[index];
-    let ray = Ray::new(ours.origin, ours.direction);
-    let roots = object.roots(&ray, ctx.scene.settings.intersection_methods());
-    let before_light = roots.as_slice().iter().any(|&t| t > 1e-9 && t < 1.0);
+    let roots = shadow_roots(ctx, index, ours);
+    let before = roots.as_slice().iter().any(|&t| before_light(t, ours));
     let beyond = roots.as_slice().iter().any(|&t| t >= 1.0);
-    if beyond && !before_light {
+    if beyond && !before {
         return found(
             "shadow-beyond-light",
             format!(
@@ -327,7 +324,7 @@ pub fn shadow(ctx: &Context, s: &LearnerShadow, i: usize, k: usize) -> Option<Di
         );
     }
     let k_rfa = ctx.scene.material_of(index).transparent;
-    if before_light && k_rfa > 0.0 && matches!(ours.outcome, ShadowOutcomeRecord::Reaches { .. }) {
+    if before && k_rfa > 0.0 && matches!(ours.outcome, ShadowOutcomeRecord::Reaches { .. }) {
         return found(
             "transparent-blocks",
             format!(
@@ -350,12 +347,9 @@ pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
         let lv = (light.position - h.point).normalize();
         let nl = n.dot(lv);
         let r = 2.0 * nl * n - lv;
-        let rv = r.dot(v);
-        if nl < 0.0 {
-            diffuse += rec.k_d * nl * rec.color * light.color;
-        } else if rv < 0.0 {
-            specular += rec.k_s * rv.powf(rec.shininess) * light.color;
-        }
+        let (d, s) = unclamped_extra(rec, nl, r.dot(v), light.color);
+        diffuse += d;
+        specular += s;
     }
     // The learner's number is this mistake's, and the mistake changes it.
     let matches = |c: DVec3| !same_color(c, rec.total) && same_color(got, c);
@@ -442,9 +436,7 @@ pub fn local(ctx: &Context, l: &LearnerRay, i: usize) -> Option<Diagnosis> {
 
 /// raytree's local color at hit `h` made again with each arriving light's N, L
 /// and V changed by `change(N, L, V, distance to the light)`: the ambient term,
-/// plus for each light k_d·(N·L)·color·light where N·L > 0, and
-/// k_s·max(0, R·V)^shininess·light with R = 2(N·L)N − L (the lecture's Phong,
-/// as [`crate::shading::phong::direct`] computes it).
+/// plus each light's [`phong`] terms with R = 2(N·L)N − L.
 fn phong_with(
     ctx: &Context,
     h: &HitRecord,
@@ -459,14 +451,10 @@ fn phong_with(
         let d = (at.position - h.point).length();
         let (n, l, v) = change(h.shading_normal, p.l, p.v, d);
         let n_dot_l = n.dot(l);
-        if n_dot_l <= 0.0 {
-            continue;
-        }
-        total += rec.k_d * n_dot_l * rec.color * p.arriving;
-        let r_dot_v = (2.0 * n_dot_l * n - l).dot(v).max(0.0);
-        if rec.k_s > 0.0 && r_dot_v > 0.0 {
-            total += rec.k_s * power(r_dot_v, rec.shininess) * p.arriving;
-        }
+        let r_dot_v = (2.0 * n_dot_l * n - l).dot(v);
+        let (diffuse, specular) = phong(rec, n_dot_l, r_dot_v, p.arriving);
+        total += diffuse;
+        total += specular;
     }
     total
 }

@@ -74,12 +74,20 @@ pub fn settings_for(
             "{learner}: {width}×{height} pixels; the check renders at most {MAX_PIXELS} (render yours smaller)"
         ));
     }
-    let mut out = *settings;
+    let mut out = one_ray_per_pixel(settings);
     out.width = width;
     out.height = height;
+    Ok(out)
+}
+
+/// `settings` with one sample through each pixel's center, whatever the
+/// scene's sampling: what a learner's tracer makes, for the image check and
+/// the one-pixel check alike.
+pub fn one_ray_per_pixel(settings: &RenderSettings) -> RenderSettings {
+    let mut out = *settings;
     out.spp = 1;
     out.aa = Antialiasing::Grid;
-    Ok(out)
+    out
 }
 
 /// Compares the learner's image `yours` with raytree's render `render`

@@ -13,7 +13,7 @@ use serde_json::{Value, json};
 use crate::course::learner::compare::{Difference, compare};
 use crate::course::learner::format::LearnerTrace;
 use crate::course::learner::measure::Context;
-use crate::methods::Antialiasing;
+use crate::course::learner::image::one_ray_per_pixel;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
@@ -82,8 +82,7 @@ pub fn ours(
     pixel: (u32, u32),
 ) -> Result<TraceDocument, String> {
     let mut one = scene.clone();
-    one.settings.spp = 1;
-    one.settings.aa = Antialiasing::Grid;
+    one.settings = one_ray_per_pixel(&scene.settings);
     record::pixel(&one, source, pixel.0, pixel.1, None).map_err(|e| e.to_string())
 }
 

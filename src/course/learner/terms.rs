@@ -8,10 +8,10 @@
 use glam::DVec3;
 
 use crate::course::learner::format::LearnerShadow;
-use crate::course::learner::measure::{COLOR, Context, same_color};
+use crate::course::learner::measure::{
+    COLOR, Context, before_light, phong, same_color, shadow_roots,
+};
 use crate::course::learner::mistake::{Diagnosis, found};
-use crate::math::ray::Ray;
-use crate::shading::phong::power;
 use crate::tree::ray_tree::{LocalRecord, ShadowRecord};
 
 /// A local color `got` that is raytree's `rec.total` without the ambient
@@ -29,8 +29,7 @@ pub fn local(rec: &LocalRecord, got: DVec3) -> Option<Diagnosis> {
         .lights
         .iter()
         .filter_map(|l| l.phong.as_ref())
-        .filter(|p| p.n_dot_l > 0.0 && p.r_dot_v > 0.0 && rec.k_s > 0.0)
-        .map(|p| rec.k_s * power(p.r_dot_v, rec.shininess) * p.arriving)
+        .map(|p| phong(rec, p.n_dot_l, p.r_dot_v, p.arriving).1)
         .sum();
     if matches(rec.total - specular + specular * rec.color) {
         return found(
@@ -52,16 +51,13 @@ pub fn transmitted(
     ours: &ShadowRecord,
     transmitted: f64,
 ) -> Option<Diagnosis> {
-    let ray = Ray::new(ours.origin, ours.direction);
-    let methods = ctx.scene.settings.intersection_methods();
     let mut per_surface = 1.0;
-    for (i, object) in ctx.scene.objects.iter().enumerate() {
+    for i in 0..ctx.scene.objects.len() {
         let k = ctx.scene.material_of(i).transparent;
-        let crossed = object
-            .roots(&ray, methods)
+        let crossed = shadow_roots(ctx, i, ours)
             .as_slice()
             .iter()
-            .filter(|&&t| t > 0.0 && t < ours.t_max)
+            .filter(|&&t| before_light(t, ours))
             .count();
         if k > 0.0 && crossed > 0 {
             per_surface *= k.powi(crossed as i32);
