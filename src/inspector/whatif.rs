@@ -17,6 +17,7 @@ use serde_json::{Map, Value};
 use crate::io::output::PendingFile;
 use crate::scene::Scene;
 use crate::scene::scene_error::SceneError;
+use crate::scene::settings::RenderSettings;
 use crate::scene::source::SceneSource;
 
 /// The material fields an edit may change, as the scene file names them.
@@ -31,8 +32,50 @@ pub const MATERIAL_FIELDS: &[&str] = &[
     "ior",
 ];
 
-/// The method choices an edit may change (the scene file's `render` fields).
-pub const METHOD_FIELDS: &[&str] = &["sphere", "offset", "weights", "max_depth", "cutoff"];
+/// A method choice an edit may change: its name among the scene file's
+/// `render` fields, how the edited file's setting is copied into the scene's
+/// (whose other settings keep the command line's overrides), and whether it
+/// takes a number or a word. One table, so a field cannot be accepted and
+/// then change nothing.
+struct MethodField {
+    name: &'static str,
+    copy: fn(&mut RenderSettings, &RenderSettings),
+    number: bool,
+}
+
+/// The method choices an edit may change.
+const METHOD_FIELDS: &[MethodField] = &[
+    MethodField {
+        name: "sphere",
+        copy: |to, from| to.sphere = from.sphere,
+        number: false,
+    },
+    MethodField {
+        name: "offset",
+        copy: |to, from| to.offset = from.offset,
+        number: false,
+    },
+    MethodField {
+        name: "weights",
+        copy: |to, from| to.weights = from.weights,
+        number: false,
+    },
+    MethodField {
+        name: "max_depth",
+        copy: |to, from| to.max_depth = from.max_depth,
+        number: true,
+    },
+    MethodField {
+        name: "cutoff",
+        copy: |to, from| to.cutoff = from.cutoff,
+        number: true,
+    },
+];
+
+/// The method field named `field`, if it is one.
+fn method_field(field: &str) -> Option<&'static MethodField> {
+    METHOD_FIELDS.iter().find(|m| m.name == field)
+}
 
 /// Applies `field=value` to material `material` (or, for a method field, to the
 /// render settings) in `json` (the scene file's, without its objects:
@@ -52,7 +95,8 @@ pub fn apply(
         .ok_or_else(|| format!("'{typed}': type field=value, e.g. ior=1.0"))?;
     let value = parse_value(raw);
     let mut edited = json.clone();
-    if METHOD_FIELDS.contains(&field) {
+    let method = method_field(field);
+    if method.is_some() {
         let render = edited
             .as_object_mut()
             .ok_or("the scene is not a JSON object")?
@@ -77,21 +121,15 @@ pub fn apply(
         return Err(format!(
             "'{field}' cannot be edited: try one of {}, {}",
             MATERIAL_FIELDS.join(", "),
-            METHOD_FIELDS.join(", ")
+            METHOD_FIELDS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
         ));
     }
     let text = serde_json::to_string(&edited).map_err(|e| e.to_string())?;
     let read =
         crate::scene::loader::parse(&text, file).map_err(|e| refused(field, raw, &value, e))?;
     let mut settings = scene.settings;
-    let new = read.settings;
-    match field {
-        "sphere" => settings.sphere = new.sphere,
-        "offset" => settings.offset = new.offset,
-        "weights" => settings.weights = new.weights,
-        "max_depth" => settings.max_depth = new.max_depth,
-        "cutoff" => settings.cutoff = new.cutoff,
-        _ => {}
+    if let Some(m) = method {
+        (m.copy)(&mut settings, &read.settings);
     }
     let mut materials = scene.materials.clone();
     if let Some(name) = material.filter(|_| MATERIAL_FIELDS.contains(&field)) {
@@ -110,12 +148,12 @@ pub fn apply(
     })
 }
 
-/// Whether `field` takes a number: every field an edit may change but the
-/// color (r,g,b) and the methods named by a word.
+/// Whether `field` takes a number: every material field but the color
+/// (r,g,b), and the methods their table says.
 fn takes_a_number(field: &str) -> bool {
-    match field {
-        "color" | "sphere" | "offset" | "weights" => false,
-        _ => MATERIAL_FIELDS.contains(&field) || METHOD_FIELDS.contains(&field),
+    match method_field(field) {
+        Some(m) => m.number,
+        None => field != "color" && MATERIAL_FIELDS.contains(&field),
     }
 }
 
@@ -421,5 +459,26 @@ mod tests {
             (&scene.objects, &scene.materials),
             (&loaded.objects, &loaded.materials)
         );
+    }
+
+    /// Every method field the edit accepts changes the scene's setting: none
+    /// is taken and then dropped.
+    #[test]
+    fn every_method_field_accepted_changes_the_setting() {
+        let loaded = whitted();
+        for (typed, number) in [
+            ("sphere=lecture", false),
+            ("offset=none", false),
+            ("weights=fresnel", false),
+            ("max_depth=3", true),
+            ("cutoff=0.25", true),
+        ] {
+            let field = typed.split('=').next().unwrap();
+            let mut json = whitted_json();
+            let scene = apply(&mut json, None, typed, &loaded, "whitted.json").unwrap();
+            assert_ne!(scene.settings, loaded.settings, "{typed}");
+            assert_eq!(takes_a_number(field), number, "{typed}");
+        }
+        assert_eq!(METHOD_FIELDS.len(), 5);
     }
 }
