@@ -230,7 +230,10 @@ impl Walk<'_, '_> {
         if let Some(c) = l.color {
             let expected = node.color() + extra;
             if !same_color(c, expected) {
-                let why = diagnose::color(ctx, l, i);
+                // Consequences get no diagnosis: the sum is remade with
+                // raytree's k_rfl and k_rfa, which are the learner's only
+                // where the hit is.
+                let why = agrees.then(|| diagnose::color(ctx, l, i)).flatten();
                 let step = ctx.step(i, StepKind::Combine);
                 self.push(
                     path,
@@ -485,7 +488,6 @@ impl Walk<'_, '_> {
                 let why = cast_agrees
                     .then(|| {
                         crate::course::learner::signs::shadow_direction(
-                            ctx,
                             s,
                             d,
                             ours,
