@@ -7,7 +7,7 @@
 use glam::DVec3;
 
 use crate::course::learner::format::LearnerShadow;
-use crate::course::learner::measure::{Context, same_direction};
+use crate::course::learner::measure::same_direction;
 use crate::course::learner::mistake::{Diagnosis, found};
 use crate::tree::ray_tree::ShadowRecord;
 
@@ -15,7 +15,6 @@ use crate::tree::ray_tree::ShadowRecord;
 /// learner's is `origin − light` (the lecture's is `light − origin`), within
 /// `tol` as a unit vector.
 pub fn shadow_direction(
-    _ctx: &Context,
     s: &LearnerShadow,
     d: DVec3,
     ours: &ShadowRecord,
