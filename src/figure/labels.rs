@@ -161,6 +161,19 @@ impl Placed {
 /// From one line's baseline to the next, in font sizes.
 const LEADING: f64 = 1.2;
 
+/// How far a line's letters reach above its baseline, in font sizes (the
+/// label font's capitals and ascenders).
+const ASCENT: f64 = 0.95;
+/// How far they reach below it (descenders), in font sizes.
+const DESCENT: f64 = 0.3;
+/// From the baseline down to the middle of a line's box, in font sizes:
+/// (ASCENT − DESCENT)/2 = 0.325, as first written rounded; kept so that no
+/// label moves.
+const MIDDLE: f64 = 0.33;
+/// Half a line's box height, in font sizes: (ASCENT + DESCENT)/2 = 0.625,
+/// rounded as first written, as [`MIDDLE`] is.
+const HALF_HEIGHT: f64 = 0.62;
+
 /// The width of the widest line of `text`, and how far its last baseline
 /// lies below its first.
 fn extent(text: &str, size: f32) -> (f64, f64) {
@@ -179,8 +192,8 @@ pub fn text_box(text: &str, size: f32, at: DVec2, boxed: bool) -> PxRect {
     let s = f64::from(size);
     let pad = if boxed { 4.0 } else { 1.0 };
     PxRect {
-        min: DVec2::new(at.x - pad, at.y - 0.95 * s - pad),
-        max: DVec2::new(at.x + w + pad, at.y + 0.3 * s + below + pad),
+        min: DVec2::new(at.x - pad, at.y - ASCENT * s - pad),
+        max: DVec2::new(at.x + w + pad, at.y + DESCENT * s + below + pad),
     }
 }
 
@@ -311,10 +324,10 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>, bool)> {
     let (w, below) = extent(&label.text, label.size);
     let s = f64::from(label.size);
     // Baseline offset that puts the text box's center at a given point.
-    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + 0.33 * s - below / 2.0);
+    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + MIDDLE * s - below / 2.0);
     // The box center that makes the box touch a point from direction `dir`, `gap` away.
     let touching = |p: DVec2, dir: DVec2, gap: f64| {
-        let half = DVec2::new(w / 2.0 + 2.0, 0.62 * s + below / 2.0 + 2.0);
+        let half = DVec2::new(w / 2.0 + 2.0, HALF_HEIGHT * s + below / 2.0 + 2.0);
         // How far along `dir` the box's edge is from its center.
         let reach = (half.x / dir.x.abs().max(1e-9)).min(half.y / dir.y.abs().max(1e-9));
         p + dir * (reach + gap)
@@ -331,9 +344,9 @@ fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>, bool)> {
             // The cartographers' eight positions first: the point at a corner or
             // the middle of an edge of the label, upper right preferred.
             let g = clearance + 2.0;
-            let (top, bottom) = (at.y - g - 0.3 * s - below, at.y + g + 0.95 * s);
+            let (top, bottom) = (at.y - g - DESCENT * s - below, at.y + g + ASCENT * s);
             let (right, left, middle) = (at.x + g, at.x - g - w, at.x - w / 2.0);
-            let level = at.y + 0.33 * s - below / 2.0;
+            let level = at.y + MIDDLE * s - below / 2.0;
             let classic = [
                 (right, top),
                 (right, bottom),
@@ -394,13 +407,21 @@ fn segments_cross(a: DVec2, b: DVec2, c: DVec2, d: DVec2) -> bool {
 
 /// The point of the label box centered at `c` nearest to `p`: where a leader starts.
 fn nearest_on_box(c: DVec2, w: f64, s: f64, below: f64, p: DVec2) -> DVec2 {
-    let half = DVec2::new(w / 2.0 + 1.0, 0.62 * s + below / 2.0 + 1.0);
+    let half = DVec2::new(w / 2.0 + 1.0, HALF_HEIGHT * s + below / 2.0 + 1.0);
     p.clamp(c - half, c + half)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The rounded middle and half height stay the font metrics' own, within
+    /// their rounding: a change to the ascent or descent must change them too.
+    #[test]
+    fn the_box_middle_and_half_height_follow_the_font_metrics() {
+        assert!((MIDDLE - (ASCENT - DESCENT) / 2.0).abs() <= 0.005 + 1e-12);
+        assert!((HALF_HEIGHT - (ASCENT + DESCENT) / 2.0).abs() <= 0.005 + 1e-12);
+    }
 
     fn point(text: &str, at: DVec2) -> Label {
         Label::at_point(text.into(), 14.0, [0, 0, 0], at, 4.0)
