@@ -26,17 +26,15 @@ impl App {
                 Some(Action::ScrollDown) => self.screen.scroll_help(10),
                 Some(Action::Up) => self.screen.scroll_help(-1),
                 Some(Action::ScrollUp) => self.screen.scroll_help(-10),
-                // q still quits; any other key (Esc too) closes the help.
-                _ if key.code == KeyCode::Char('q') => self.ask_quit(quit_asked),
+                // Esc closes the help, as it closes a prompt; the other
+                // quit keys (q, Ctrl-C) still quit; any other key closes it.
+                Some(Action::Quit) if key.code != KeyCode::Esc => self.ask_quit(quit_asked),
                 _ => self.screen.close_help(),
             }
             return;
         }
         if let Some(action) = action {
-            match action {
-                Action::Quit => self.ask_quit(quit_asked),
-                _ => self.act(action),
-            }
+            self.act(action, quit_asked);
         }
     }
 
@@ -53,10 +51,10 @@ impl App {
                 .to_owned();
     }
 
-    /// Does what a key asks for.
-    fn act(&mut self, action: Action) {
+    /// Does what a key asks for; `quit_asked`: the key before asked to quit.
+    fn act(&mut self, action: Action, quit_asked: bool) {
         match action {
-            Action::Quit => self.ask_quit(false),
+            Action::Quit => self.ask_quit(quit_asked),
             Action::Help => self.screen.open_help(),
             Action::SwitchFocus => self.selection.set_focus(match self.focus() {
                 Focus::Image => Focus::Tree,
