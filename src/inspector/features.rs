@@ -142,9 +142,8 @@ impl FeatureMap {
         };
         let best = (0..self.cells.len())
             .max_by(|&a, &b| {
-                score(a)
-                    .partial_cmp(&score(b))
-                    .expect("distances are finite")
+                let (a, b) = (score(a), score(b));
+                a.0.cmp(&b.0).then(a.1.total_cmp(&b.1))
             })
             .unwrap_or(0) as u32;
         (
