@@ -121,7 +121,11 @@ pub fn apply(
         return Err(format!(
             "'{field}' cannot be edited: try one of {}, {}",
             MATERIAL_FIELDS.join(", "),
-            METHOD_FIELDS.iter().map(|m| m.name).collect::<Vec<_>>().join(", ")
+            METHOD_FIELDS
+                .iter()
+                .map(|m| m.name)
+                .collect::<Vec<_>>()
+                .join(", ")
         ));
     }
     let text = serde_json::to_string(&edited).map_err(|e| e.to_string())?;

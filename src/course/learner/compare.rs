@@ -487,12 +487,7 @@ impl Walk<'_, '_> {
             {
                 let why = cast_agrees
                     .then(|| {
-                        crate::course::learner::signs::shadow_direction(
-                            s,
-                            d,
-                            ours,
-                            tol + PER_LEVEL,
-                        )
+                        crate::course::learner::signs::shadow_direction(s, d, ours, tol + PER_LEVEL)
                     })
                     .flatten();
                 cast_agrees = false;

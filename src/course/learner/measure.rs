@@ -168,12 +168,21 @@ mod tests {
             total: DVec3::ZERO,
         };
         assert!((-0.5f64).powf(2.5).is_nan());
-        assert_eq!(unclamped_extra(&rec, 0.5, -0.5, DVec3::ONE), (DVec3::ZERO, DVec3::ZERO));
-        let whole = LocalRecord { shininess: 3.0, ..rec.clone() };
+        assert_eq!(
+            unclamped_extra(&rec, 0.5, -0.5, DVec3::ONE),
+            (DVec3::ZERO, DVec3::ZERO)
+        );
+        let whole = LocalRecord {
+            shininess: 3.0,
+            ..rec.clone()
+        };
         assert_eq!(
             unclamped_extra(&whole, 0.5, -0.5, DVec3::ONE).1,
             DVec3::splat(-0.0625)
         );
-        assert_eq!(phong(&rec, 0.5, -0.5, DVec3::ONE), (DVec3::splat(0.25), DVec3::ZERO));
+        assert_eq!(
+            phong(&rec, 0.5, -0.5, DVec3::ONE),
+            (DVec3::splat(0.25), DVec3::ZERO)
+        );
     }
 }

@@ -12,8 +12,8 @@ use serde_json::{Value, json};
 
 use crate::course::learner::compare::{Difference, compare};
 use crate::course::learner::format::LearnerTrace;
-use crate::course::learner::measure::Context;
 use crate::course::learner::image::one_ray_per_pixel;
+use crate::course::learner::measure::Context;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
