@@ -77,10 +77,10 @@ overrides! {
     /// Acceleration: none (test every object), bvh (a bounding volume hierarchy), grid (a uniform voxel grid), octree, bsp (a k-d tree), auto (a hierarchy from 16 bounded objects up) [default: auto].
     #[arg(long, value_enum)]
     accel: Accel,
-    /// With --accel grid: cells along the scene's longest side, 1 to 160, the other sides in proportion; auto gives about four cells an object [default: auto].
+    /// With --accel grid only (refused under the others and under auto, which never builds a grid): cells along the scene's longest side, 1 to 160, the other sides in proportion; auto gives about four cells an object [default: auto].
     #[arg(long, value_name = "auto|N")]
     grid_res: Level,
-    /// With --accel octree or bsp: the tree's deepest level, 0 (one leaf) to 48; auto is 10 for the octree, 8 + 1.3·log₂(objects) for the k-d tree [default: auto].
+    /// With --accel octree or bsp only (refused under the others and under auto, which never builds a tree): the tree's deepest level, 0 (one leaf) to 48; auto is 10 for the octree, 8 + 1.3·log₂(objects) for the k-d tree [default: auto].
     #[arg(long, value_name = "auto|D")]
     tree_depth: Level,
 }

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use anyhow::Result;
 use glam::DVec3;
 use raytree::math::ray::Ray;
-use raytree::methods::{Antialiasing, Weights};
+use raytree::methods::{Accel, Antialiasing, Weights};
 use raytree::scene::Scene;
 use raytree::scene::limits;
 use raytree::scene::overrides::{Overrides, Protocol};
@@ -64,10 +64,48 @@ impl SceneArgs {
         Ok((scene, source))
     }
 
+    /// [`SceneArgs::load`] for a command that builds every structure itself
+    /// (`structures`), where --grid-res and --tree-depth shape the grid and
+    /// the trees it builds whatever the scene's own `accel`.
+    pub fn load_for_every_structure(&self) -> Result<(Scene, SceneSource)> {
+        let (mut scene, source) = source::load(self.scene.as_deref())?;
+        scene.settings = self.checked(&scene.settings)?;
+        Ok((scene, source))
+    }
+
     /// `own` (a scene's settings, already checked when it was read) with the
     /// flags given put in place, checked: settings the flags make impossible
     /// are a [`Usage`] error naming the flag.
     pub fn settings(&self, own: &RenderSettings) -> Result<RenderSettings> {
+        let settings = self.checked(own)?;
+        // A structure's own flag under another structure would be ignored;
+        // auto builds a hierarchy or nothing, never a grid or a tree.
+        let grid = settings.accel == Accel::Grid;
+        let tree = matches!(settings.accel, Accel::Octree | Accel::Bsp);
+        let unused = if self.overrides.grid_res.is_some() && !grid {
+            Some(("--grid-res", "the grid's cells", "grid"))
+        } else if self.overrides.tree_depth.is_some() && !tree {
+            Some((
+                "--tree-depth",
+                "the octree's or the k-d tree's depth",
+                "octree or --accel bsp",
+            ))
+        } else {
+            None
+        };
+        if let Some((flag, what, needs)) = unused {
+            let now = match settings.accel {
+                Accel::Auto => "auto (a bounding volume hierarchy or none, never a grid or a tree)",
+                other => other.name(),
+            };
+            return Err(usage(format_args!(
+                "{flag}: sets {what}, and the scene is traced with --accel {now}; give --accel {needs} beside it"
+            )));
+        }
+        Ok(settings)
+    }
+
+    fn checked(&self, own: &RenderSettings) -> Result<RenderSettings> {
         let own = self.protocol.map_or(*own, |p| p.overrides().apply(own));
         let settings = self.overrides.apply(&own);
         // Flags that would be ignored, or would break the protocol asked for,
@@ -123,7 +161,7 @@ impl SceneArgs {
 #[command(group(clap::ArgGroup::new("target").required(true).args(["pixel", "ray"])))]
 pub struct TargetArgs {
     /// The pixel to trace, in image coordinates: x to the right, y down from the top-left, as in the rendered image.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, allow_hyphen_values = true)]
     pub pixel: Option<(u32, u32)>,
     /// Trace one ray instead of a pixel: its origin and direction in world coordinates, each number within ±1e9 as a scene's are. It starts in the media around its origin: from inside a glass ball, in glass.
     #[arg(long, value_name = "OX,OY,OZ:DX,DY,DZ", value_parser = parse_ray, allow_hyphen_values = true)]
@@ -168,15 +206,23 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
-/// `X,Y` in image coordinates.
+/// `X,Y` in image coordinates. A negative coordinate is read (its flag
+/// takes values starting with a hyphen) so that it is refused as a pixel
+/// outside the image, not as an unknown flag `-1`.
 pub fn parse_pixel(s: &str) -> Result<(u32, u32), String> {
     let (x, y) = s.split_once(',').ok_or("expected X,Y, e.g. 320,240")?;
-    let coord = |v: &str| {
-        v.trim()
-            .parse::<u32>()
-            .map_err(|_| format!("'{v}' is not a pixel coordinate (a whole number ≥ 0)"))
+    let coord = |name: &str, edge: &str, v: &str| {
+        let v = v.trim();
+        match v.parse::<i64>() {
+            Ok(n) if n < 0 => Err(format!(
+                "{name} {n} is outside the image: {name} counts from 0 at its {edge} edge"
+            )),
+            _ => v
+                .parse::<u32>()
+                .map_err(|_| format!("'{v}' is not a pixel coordinate (a whole number ≥ 0)")),
+        }
     };
-    Ok((coord(x)?, coord(y)?))
+    Ok((coord("x", "left", x)?, coord("y", "top", y)?))
 }
 
 /// `OX,OY,OZ:DX,DY,DZ`: an origin and a direction that is not zero, every

@@ -27,7 +27,7 @@ pub struct Args {
     /// The scene the learner's tracer rendered (JSON, see scenes/README.md, or NFF). The settings flags below change it as render's do; with --image, the image sets the width and height.
     scene: PathBuf,
     /// The pixel the learner traced, in image coordinates: x to the right, y down from the top-left.
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, requires = "learner")]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, allow_hyphen_values = true, requires = "learner")]
     pixel: Option<(u32, u32)>,
     /// The learner's trace of that pixel (docs/learner-trace.md): JSON, at most 8.4 MB.
     learner: Option<PathBuf>,

@@ -16,7 +16,7 @@ pub struct Args {
     #[command(flatten)]
     scene: SceneArgs,
     /// Start at this pixel (image coordinates) [default: a pixel worth a look: the deepest ray tree nearest the center].
-    #[arg(long, value_name = "X,Y", value_parser = parse_pixel)]
+    #[arg(long, value_name = "X,Y", value_parser = parse_pixel, allow_hyphen_values = true)]
     pixel: Option<(u32, u32)>,
     /// Open a saved trace (raytree trace --json) instead. Its scene is the SCENE given after it, or else the file the trace names, found beside the trace or from the current folder; a scene that changed since is left out (the trace is shown without its drawing).
     #[arg(long, value_name = "FILE.json", conflicts_with_all = ["pixel", "Overrides"])]

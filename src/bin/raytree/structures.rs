@@ -17,7 +17,14 @@ use raytree::views::structures_chart;
 use crate::args::{SceneArgs, parse_size, usage};
 use crate::output;
 
+// This command builds every structure itself, so the grid's and the trees'
+// flags apply to the grid and the trees it builds, whatever --accel says
+// elsewhere; --accel itself is refused.
 #[derive(clap::Args)]
+#[command(
+    mut_arg("grid_res", |a| a.help("For the grid: cells along the scene's longest side, 1 to 160, the other sides in proportion; auto gives about four cells an object [default: auto]")),
+    mut_arg("tree_depth", |a| a.help("For the octree and the k-d tree: the tree's deepest level, 0 (one leaf) to 48; auto is 10 for the octree, 8 + 1.3·log₂(objects) for the k-d tree [default: auto]")),
+)]
 pub struct Args {
     /// Scene files (JSON, or NFF by the extension .nff), 1 to 16; none with --from.
     #[arg(value_name = "SCENE", required_unless_present = "from")]
@@ -116,7 +123,7 @@ fn measure(args: &Args) -> Result<Comparison> {
             protocol: args.protocol,
             overrides: args.overrides,
         };
-        let (scene, _) = scene_args.load()?;
+        let (scene, _) = scene_args.load_for_every_structure()?;
         let name = path.file_name().map_or_else(
             || path.display().to_string(),
             |n| n.to_string_lossy().into_owned(),

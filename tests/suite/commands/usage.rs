@@ -406,6 +406,49 @@ fn flag_combinations_and_missing_lessons_are_usage_errors() {
             "--spp: samples the --aa grid only, and --aa adaptive takes",
         ),
         (
+            "grid-res-auto",
+            &["render", "--grid-res", "10"],
+            "--grid-res: sets the grid's cells, and the scene is traced with --accel auto",
+        ),
+        (
+            "grid-res-bvh",
+            &[
+                "trace",
+                "--pixel",
+                "1,1",
+                "--accel",
+                "bvh",
+                "--grid-res",
+                "10",
+            ],
+            "--accel bvh; give --accel grid beside it",
+        ),
+        (
+            "tree-depth-grid",
+            &["render", "--accel", "grid", "--tree-depth", "5"],
+            "--tree-depth: sets the octree's or the k-d tree's depth, and the scene is traced with --accel grid; give --accel octree or --accel bsp beside it",
+        ),
+        (
+            "trace-pixel-negative",
+            &["trace", "--pixel", "-1,5"],
+            "x -1 is outside the image: x counts from 0 at its left edge",
+        ),
+        (
+            "diagram-pixel-negative",
+            &["diagram", "--pixel", "3,-5"],
+            "y -5 is outside the image: y counts from 0 at its top edge",
+        ),
+        (
+            "check-pixel-negative",
+            &["check", "s.json", "--pixel", "-1,-1", "x.json"],
+            "x -1 is outside the image",
+        ),
+        (
+            "inspect-pixel-negative",
+            &["inspect", "--pixel", "-2,0"],
+            "x -2 is outside the image",
+        ),
+        (
             "lesson-99",
             &["lesson", "99", "--lessons", &lessons],
             "no lesson 99 (there are: 1, 2,",
