@@ -161,6 +161,9 @@ pub fn scene_with(
         render.extend(given);
     }
     let segments = segments(&full_path(path)).map_err(fail)?;
+    if let Some(Segment::Field(first)) = segments.first() {
+        unknown_first_step(first, &json).map_err(fail)?;
+    }
     set(&mut json, &segments, value).map_err(fail)?;
     let text = serde_json::to_string(&json).map_err(|e| fail(e.to_string()))?;
     loader::parse(&text, file).map_err(|e| {
@@ -181,6 +184,58 @@ fn full_path(path: &str) -> String {
         Some(_) => format!("render.{path}"),
         None => path.to_owned(),
     }
+}
+
+/// Refuses a path whose first step is neither a render setting nor a field
+/// the scene file has (the scene's top level holds no number a file may
+/// leave out), offering both lists, or the name one slip away from it: a
+/// learner who mistypes `max_depth` should not be told only the file's keys.
+fn unknown_first_step(first: &str, json: &Json) -> Result<(), String> {
+    let top: Vec<String> = json
+        .as_object()
+        .map_or_else(Vec::new, |o| o.keys().cloned().collect());
+    if first == "render" || top.iter().any(|k| k == first) {
+        return Ok(());
+    }
+    let settings = serde_json::to_value(RenderSettings::default()).unwrap_or_default();
+    let numeric: Vec<String> = settings
+        .as_object()
+        .map(|o| {
+            (o.iter()
+                .filter(|(_, v)| v.is_number())
+                .map(|(k, _)| k.clone()))
+            .collect()
+        })
+        .unwrap_or_default();
+    let near = (numeric.iter().chain(&top))
+        .map(|k| (edits(first, k), k))
+        .filter(|&(d, k)| d <= 2 && d < k.chars().count())
+        .min_by_key(|&(d, _)| d);
+    Err(match near {
+        Some((_, k)) => format!("no render setting or scene field '{first}': did you mean {k}?"),
+        None => format!(
+            "no render setting or scene field '{first}': the settings are {}; the scene's fields are {}",
+            numeric.join(", "),
+            top.join(", ")
+        ),
+    })
+}
+
+/// Levenshtein distance: the fewest inserted, deleted or replaced characters
+/// that turn `a` into `b`.
+fn edits(a: &str, b: &str) -> usize {
+    let b: Vec<char> = b.chars().collect();
+    let mut row: Vec<usize> = (0..=b.len()).collect();
+    for (i, ca) in a.chars().enumerate() {
+        let mut diagonal = row[0];
+        row[0] = i + 1;
+        for (j, &cb) in b.iter().enumerate() {
+            let replaced = diagonal + usize::from(ca != cb);
+            diagonal = row[j + 1];
+            row[j + 1] = replaced.min(row[j] + 1).min(diagonal + 1);
+        }
+    }
+    row[b.len()]
 }
 
 /// A step along a path: a field, or an index into a list.
@@ -423,6 +478,32 @@ mod tests {
         assert_eq!(
             parse("lights[0].position[1]=1,2").unwrap().file_word(),
             "lights-0-position-1"
+        );
+    }
+
+    #[test]
+    fn a_mistyped_field_is_offered_the_settings_too() {
+        let e = with("max_dept", 2.0).unwrap_err();
+        assert!(
+            e.ends_with("no render setting or scene field 'max_dept': did you mean max_depth?"),
+            "{e}"
+        );
+        let e = with("glow", 2.0).unwrap_err();
+        assert!(
+            e.contains("the settings are ") && e.contains("max_depth") && e.contains("spp"),
+            "{e}"
+        );
+        assert!(
+            e.contains("the scene's fields are ") && e.contains("materials"),
+            "{e}"
+        );
+        assert_eq!(
+            (
+                edits("kitten", "sitting"),
+                edits("", "ab"),
+                edits("ab", "ab")
+            ),
+            (3, 2, 0)
         );
     }
 
