@@ -44,20 +44,20 @@ macro_rules! overrides {
 }
 
 overrides! {
-    /// Image width in pixels.
-    #[arg(long, value_name = "W")]
+    /// Image width in pixels, 1 to 32768, and at most 67108864 pixels (8192×8192) with the height [default: 640, or the scene's own].
+    #[arg(long, value_name = "W", value_parser = side, allow_negative_numbers = true)]
     width: u32,
-    /// Image height in pixels.
-    #[arg(long, value_name = "H")]
+    /// Image height in pixels, 1 to 32768, and at most 67108864 pixels (8192×8192) with the width [default: 480, or the scene's own].
+    #[arg(long, value_name = "H", value_parser = side, allow_negative_numbers = true)]
     height: u32,
-    /// Samples per pixel, a square number (1, 4, 9, 16, …) for an n×n stratified grid [default: 1].
-    #[arg(long, value_name = "N")]
+    /// Samples per pixel, a square number up to 1024 (1, 4, 9, 16, …) for an n×n stratified grid [default: 1].
+    #[arg(long, value_name = "N", value_parser = spp, allow_negative_numbers = true)]
     spp: u32,
-    /// Deepest ray traced: 1 traces only primary rays [default: 8].
-    #[arg(long, value_name = "D")]
+    /// Deepest ray traced, 1 to 1000: 1 traces only primary rays [default: 8].
+    #[arg(long, value_name = "D", value_parser = max_depth, allow_negative_numbers = true)]
     max_depth: u32,
-    /// Skip reflected and refracted rays whose weight (product of coefficients) is below this; 0 turns it off [default: 0.0009765625, 1/1024].
-    #[arg(long, value_name = "W")]
+    /// Skip reflected and refracted rays whose weight (product of coefficients) is below this, from 0 up to (not including) 1; 0 turns it off [default: 0.0009765625, 1/1024].
+    #[arg(long, value_name = "W", value_parser = cutoff, allow_negative_numbers = true)]
     cutoff: f64,
     /// Ray–sphere intersection: the lecture's quadratic as written, or the stable form [default: stable].
     #[arg(long, value_enum)]
@@ -83,6 +83,36 @@ overrides! {
     /// With --accel octree or bsp only (refused under the others and under auto, which never builds a tree): the tree's deepest level, 0 (one leaf) to 48; auto is 10 for the octree, 8 + 1.3·log₂(objects) for the k-d tree [default: auto].
     #[arg(long, value_name = "auto|D")]
     tree_depth: Level,
+}
+
+// The numeric flags' parsers: any number is read, so that a value out of
+// range, a negative one too, is refused with the rule the scene file's field
+// is held to, not with the limits of the integer type.
+
+fn whole(s: &str) -> Result<i128, String> {
+    s.trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a whole number"))
+}
+
+fn side(s: &str) -> Result<u32, String> {
+    let n = whole(s)?;
+    RenderSettings::side_rule(n).map(|()| n as u32)
+}
+
+fn spp(s: &str) -> Result<u32, String> {
+    let n = whole(s)?;
+    RenderSettings::spp_rule(n).map(|()| n as u32)
+}
+
+fn max_depth(s: &str) -> Result<u32, String> {
+    let n = whole(s)?;
+    RenderSettings::max_depth_rule(n).map(|()| n as u32)
+}
+
+fn cutoff(s: &str) -> Result<f64, String> {
+    let c: f64 = (s.trim().parse()).map_err(|_| format!("'{s}' is not a number"))?;
+    RenderSettings::cutoff_rule(c).map(|()| c)
 }
 
 /// A benchmark's fixed way of rendering, so that counts and times compare

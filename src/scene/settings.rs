@@ -138,15 +138,51 @@ impl RenderSettings {
             .unwrap_or(0)
     }
 
+    // The rules of single settings, taking any number a command line may
+    // hold (a negative one too), so that a flag out of range and the same
+    // field of a scene file are refused with the same words.
+
+    /// A width or height: 1 to [`Self::MAX_SIDE`].
+    pub fn side_rule(side: i128) -> Result<(), String> {
+        if (1..=i128::from(Self::MAX_SIDE)).contains(&side) {
+            return Ok(());
+        }
+        Err(format!("must be 1 to {}, got {side}", Self::MAX_SIDE))
+    }
+
+    /// Samples per pixel: a square number up to 1024.
+    pub fn spp_rule(spp: i128) -> Result<(), String> {
+        if (1..=1024).contains(&spp) && spp.isqrt() * spp.isqrt() == spp {
+            return Ok(());
+        }
+        Err(format!(
+            "must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got {spp}"
+        ))
+    }
+
+    /// The deepest ray: 1 to 1000.
+    pub fn max_depth_rule(depth: i128) -> Result<(), String> {
+        if (1..=1000).contains(&depth) {
+            return Ok(());
+        }
+        Err(format!("must be 1 to 1000, got {depth}"))
+    }
+
+    /// The weight cutoff: from 0 up to (not including) 1.
+    pub fn cutoff_rule(cutoff: f64) -> Result<(), String> {
+        if cutoff.is_finite() && (0.0..1.0).contains(&cutoff) {
+            return Ok(());
+        }
+        Err(format!(
+            "must be a number from 0 up to (not including) 1, got {}",
+            limits::num(cutoff)
+        ))
+    }
+
     /// Checks the settings, naming the first that is wrong and why.
     pub fn validate(&self) -> Result<(), (&'static str, String)> {
         for (field, side) in [("width", self.width), ("height", self.height)] {
-            if side == 0 || side > Self::MAX_SIDE {
-                return Err((
-                    field,
-                    format!("must be 1 to {}, got {side}", Self::MAX_SIDE),
-                ));
-            }
+            Self::side_rule(side.into()).map_err(|m| (field, m))?;
         }
         let pixels = u64::from(self.width) * u64::from(self.height);
         if pixels > Self::MAX_PIXELS {
@@ -160,30 +196,9 @@ impl RenderSettings {
                 ),
             ));
         }
-        if self.spp == 0 || self.grid() * self.grid() != self.spp || self.spp > 1024 {
-            return Err((
-                "spp",
-                format!(
-                    "must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got {}",
-                    self.spp
-                ),
-            ));
-        }
-        if self.max_depth == 0 || self.max_depth > 1000 {
-            return Err((
-                "max_depth",
-                format!("must be 1 to 1000, got {}", self.max_depth),
-            ));
-        }
-        if !(self.cutoff.is_finite() && (0.0..1.0).contains(&self.cutoff)) {
-            return Err((
-                "cutoff",
-                format!(
-                    "must be a number from 0 up to (not including) 1, got {}",
-                    limits::num(self.cutoff)
-                ),
-            ));
-        }
+        Self::spp_rule(self.spp.into()).map_err(|m| ("spp", m))?;
+        Self::max_depth_rule(self.max_depth.into()).map_err(|m| ("max_depth", m))?;
+        Self::cutoff_rule(self.cutoff).map_err(|m| ("cutoff", m))?;
         let rays = self.worst_case_rays();
         if rays > Self::MAX_RAYS_PER_SAMPLE {
             return Err((

@@ -206,6 +206,16 @@ pub fn parse_size(s: &str) -> Result<(u32, u32), String> {
     Ok((side(w)?, side(h)?))
 }
 
+/// A count from 1 up (a level, a hit's number): any whole number is read, so
+/// that 0 and -1 are refused with the range, not the integer type's limits.
+pub fn parse_from_one(s: &str) -> Result<u32, String> {
+    match s.trim().parse::<i128>() {
+        Ok(n) if n < 1 => Err(format!("must be 1 or more, got {n}")),
+        Ok(n) => u32::try_from(n).map_err(|_| format!("must be 1 to {}, got {n}", u32::MAX)),
+        Err(_) => Err(format!("'{s}' is not a whole number")),
+    }
+}
+
 /// `X,Y` in image coordinates. A negative coordinate is read (its flag
 /// takes values starting with a hyphen) so that it is refused as a pixel
 /// outside the image, not as an unknown flag `-1`.

@@ -22,7 +22,7 @@ pub struct Args {
     /// Also write every raw figure to this CSV file.
     #[arg(long, value_name = "FILE")]
     csv: Option<PathBuf>,
-    /// Renders per setting; the chart shows the median time.
+    /// Renders per setting, 1 to 100; the chart shows the median time.
     #[arg(long, value_name = "N", default_value_t = 5, value_parser = clap::value_parser!(u32).range(1..=100))]
     runs: u32,
     /// What a setting costs: wall time (median of --runs), or intersection

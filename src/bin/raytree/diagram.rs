@@ -10,7 +10,7 @@ use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
 use raytree::views::{hit_vectors, tree_graph};
 
-use crate::args::{SceneArgs, TargetArgs, parse_size, usage};
+use crate::args::{SceneArgs, TargetArgs, parse_from_one, parse_size, usage};
 use crate::output;
 
 #[derive(clap::Args)]
@@ -37,8 +37,8 @@ pub struct Args {
     /// Figure size in pixels.
     #[arg(long, value_name = "WxH", default_value = "1200x800", value_parser = parse_size)]
     size: (u32, u32),
-    /// Draw only the first D levels of rays (1: the primary ray).
-    #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(1..))]
+    /// Draw only the first D levels of rays, 1 or more (1: the primary ray) [default: all levels].
+    #[arg(long, value_name = "D", value_parser = parse_from_one, allow_negative_numbers = true)]
     depth: Option<u32>,
     /// Leave out the shadow rays.
     #[arg(long)]
@@ -59,7 +59,7 @@ pub struct Args {
     #[arg(long, conflicts_with_all = ["view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
     graph: bool,
     /// Draw hit P (1: P1, numbered as the diagram numbers hits) enlarged instead: the incoming c, the normal n and the reflected v with the equal angles, and c split into its parts along and across n (PNG).
-    #[arg(long, value_name = "P", value_parser = clap::value_parser!(u32).range(1..), conflicts_with_all = ["graph", "view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
+    #[arg(long, value_name = "P", value_parser = parse_from_one, allow_negative_numbers = true, conflicts_with_all = ["graph", "view", "space", "fit", "window", "depth", "no_shadows", "labels", "ticks", "steps", "boxes"])]
     vectors: Option<u32>,
     /// Also draw the bounding boxes of the scene's hierarchy that the drawn rays were tested against (those entered solid, those missed dotted), with counts; scenes without a hierarchy have none.
     #[arg(long)]

@@ -22,7 +22,7 @@ pub struct Args {
     #[arg(short, long, value_name = "OUT.png")]
     output: Option<PathBuf>,
     /// The largest difference, in 8-bit levels, that still counts as the same: exit status 0 when no channel of any pixel differs by more, 1 when one does, 2 on trouble (an image that cannot be read, images of different sizes, a bad command line, an output that cannot be written).
-    #[arg(long, value_name = "LEVELS", default_value_t = 0)]
+    #[arg(long, value_name = "LEVELS", default_value_t = 0, value_parser = parse_levels, allow_negative_numbers = true)]
     tolerance: u8,
 }
 
@@ -76,13 +76,32 @@ pub fn run(args: &Args) -> Result<ExitCode> {
     } else {
         SAME
     };
+    // The verdict first, with what it was judged by: "0.00% off" beside
+    // exit status 1 must not read as a contradiction.
+    let verdict = if answer == SAME {
+        format!(
+            "same within tolerance {}: largest {}/255",
+            args.tolerance, d.max
+        )
+    } else {
+        format!(
+            "different: largest {}/255 > tolerance {}",
+            d.max, args.tolerance
+        )
+    };
     unless_gone(output::print(format!(
-        "mean absolute difference {:.3}/255, largest {}/255, {:.2}% of pixels off by more than 3/255\n",
+        "{verdict}; mean absolute difference {:.3}/255, {:.2}% of pixels off by more than 3/255\n",
         d.mean,
-        d.max,
         100.0 * d.share_over_3
     )))?;
     Ok(ExitCode::from(answer))
+}
+
+/// A tolerance: 0 to 255 8-bit levels.
+fn parse_levels(s: &str) -> Result<u8, String> {
+    let n: i128 = (s.trim().parse())
+        .map_err(|_| format!("'{s}' is not a whole number of 8-bit levels (0 to 255)"))?;
+    u8::try_from(n).map_err(|_| format!("must be 0 to 255 8-bit levels, got {n}"))
 }
 
 /// A write, where a reader that went away is no failure: the answer stands.

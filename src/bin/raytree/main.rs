@@ -50,9 +50,9 @@ enum Command {
     Diagram(diagram::Args),
     /// Explore a scene in the terminal: pick a pixel, walk its ray tree step by step.
     Inspect(inspect::Args),
-    /// Chart speed against accuracy over a sweep of settings and methods (PNG, and CSV figures), rendered at half the scene's width and height unless --width/--height are given.
+    /// Chart speed against accuracy over a sweep of settings and methods (a PNG; with --csv FILE also the raw figures), rendered at half the scene's width and height unless --width/--height are given.
     Chart(chart::Args),
-    /// Compare the efficiency slide's structures (none, bvh, grid, octree, bsp) on scenes: tests per ray and trace time on one thread, as a table, a chart (PNG) and CSV figures; or the grid at a sweep of resolutions.
+    /// Compare the efficiency slide's structures (none, bvh, grid, octree, bsp) on scenes: tests per ray and trace time on one thread, as a table and a chart (PNG), and with --csv FILE the raw figures; or the grid at a sweep of resolutions.
     Structures(structures::Args),
     /// Render one frame per value of a setting or a scene field, side by side, with how much each changed (PNG).
     Strip(strip::Args),

@@ -293,9 +293,15 @@ fn diff_answers_with_its_exit_status() {
     };
     let (code, same) = diff(&["one.png", "one.png"]);
     assert_eq!(code, 0, "{same}");
-    assert!(same.starts_with("mean absolute difference 0.000/255, largest 0/255"));
+    assert!(
+        same.starts_with(
+            "same within tolerance 0: largest 0/255; mean absolute difference 0.000/255"
+        )
+    );
     let (code, different) = diff(&["one.png", "two.png"]);
     assert_eq!(code, 1, "{different}");
+    assert!(different.starts_with("different: largest "), "{different}");
+    assert!(different.contains("/255 > tolerance 0;"), "{different}");
     let largest: u8 = different
         .split("largest ")
         .nth(1)

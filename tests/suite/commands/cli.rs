@@ -390,16 +390,19 @@ fn bad_command_line_settings() {
     };
     assert_eq!(
         usage("cli-spp", &["--spp", "5"]),
-        "error: --spp: must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got 5"
+        "error: invalid value '5' for '--spp <N>': must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got 5"
     );
-    assert!(usage("cli-size", &["--width", "0"]).starts_with("error: --width: must be 1 to 32768"));
+    assert!(
+        usage("cli-size", &["--width", "0"])
+            .starts_with("error: invalid value '0' for '--width <W>': must be 1 to 32768")
+    );
     assert!(
         usage("cli-cutoff", &["--cutoff", "NaN"])
-            .starts_with("error: --cutoff: must be a number from 0")
+            .starts_with("error: invalid value 'NaN' for '--cutoff <W>': must be a number from 0")
     );
     assert!(
         usage("cli-depth", &["--max-depth", "0"])
-            .starts_with("error: --max-depth: must be 1 to 1000")
+            .starts_with("error: invalid value '0' for '--max-depth <D>': must be 1 to 1000")
     );
     // The structures' sizes (issue 28): 0 or 10⁹ grid cells, a depth of 10⁶.
     for (name, flag, value, said) in [

@@ -176,8 +176,9 @@ fn diff_reads_ppm_and_survives_closed_and_full_outputs() {
         String::from_utf8_lossy(&same.stderr)
     );
     assert!(
-        String::from_utf8_lossy(&same.stdout)
-            .starts_with("mean absolute difference 0.000/255, largest 0/255")
+        String::from_utf8_lossy(&same.stdout).starts_with(
+            "same within tolerance 0: largest 0/255; mean absolute difference 0.000/255"
+        )
     );
     // Standard output closed before raytree writes: quiet, exit 0.
     let mut child = std::process::Command::new(raytree)

@@ -40,7 +40,7 @@ fn a_strip_has_a_frame_per_value_and_the_changes_raytree_diff_measures() {
     let diff = crate::commands::cli::raytree(&["diff", "d1.png", "d2.png"], &dir);
     assert_eq!(diff.status.code(), Some(1), "{diff:?}");
     let diff = String::from_utf8(diff.stdout).unwrap();
-    let share = diff.split(", ").nth(2).unwrap().split('%').next().unwrap();
+    let share = diff.rsplit(", ").next().unwrap().split('%').next().unwrap();
     let share: f64 = share.parse().unwrap();
     let line = printed.lines().nth(1).unwrap();
     assert!(

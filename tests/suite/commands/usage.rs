@@ -37,17 +37,42 @@ fn a_flag_out_of_its_range_is_a_usage_error() {
         (
             "width-0",
             &["render", "--width", "0"],
-            "--width: must be 1 to 32768, got 0",
+            "'--width <W>': must be 1 to 32768, got 0",
         ),
         (
             "width-negative",
             &["render", "--width", "-1"],
-            "'--width <W>'",
+            "'--width <W>': must be 1 to 32768, got -1",
+        ),
+        (
+            "spp-negative",
+            &["render", "--spp", "-4"],
+            "'--spp <N>': must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got -4",
+        ),
+        (
+            "max-depth-huge",
+            &["render", "--max-depth", "99999999999"],
+            "'--max-depth <D>': must be 1 to 1000, got 99999999999",
+        ),
+        (
+            "diagram-depth-0",
+            &["diagram", "--pixel", "1,1", "--depth", "0"],
+            "'--depth <D>': must be 1 or more, got 0",
+        ),
+        (
+            "diagram-vectors-0",
+            &["diagram", "--pixel", "1,1", "--vectors", "0"],
+            "'--vectors <P>': must be 1 or more, got 0",
+        ),
+        (
+            "diff-tolerance-word",
+            &["diff", "a.png", "b.png", "--tolerance", "abc"],
+            "'--tolerance <LEVELS>': 'abc' is not a whole number of 8-bit levels (0 to 255)",
         ),
         (
             "spp-3",
             &["render", "--spp", "3"],
-            "--spp: must be a square number of samples",
+            "'--spp <N>': must be a square number of samples",
         ),
         (
             "pixels",
@@ -95,7 +120,7 @@ fn a_flag_out_of_its_range_is_a_usage_error() {
         (
             "vary-unknown",
             &["strip", "--vary", "bogus=1,2"],
-            "--vary bogus=1: bogus: unknown field `bogus`",
+            "--vary bogus=1: no render setting or scene field 'bogus': the settings are cutoff, height, max_depth, spp, width; the scene's fields are ambient_light,",
         ),
         (
             "vary-empty",
