@@ -104,6 +104,7 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
             message,
         }
     };
+    not_json(text, file)?;
     let de = &mut serde_json::Deserializer::from_str(text);
     let Root(raw) = serde_path_to_error::deserialize(&mut *de)
         .map_err(|e| syntax(field_path(e.path()), e.into_inner()))?;
@@ -115,6 +116,30 @@ pub fn parse(text: &str, file: &str) -> Result<Scene, SceneError> {
         meshes: RefCell::default(),
     };
     builder.scene(raw)
+}
+
+/// Refuses an empty file, or one that does not start as JSON does, in the
+/// user's words: serde's "EOF while parsing a value" and "expected value"
+/// tell a newcomer who passed a text file or an empty one nothing.
+fn not_json(text: &str, file: &str) -> Result<(), SceneError> {
+    const KINDS: &str = "a scene file is JSON (see scenes/README.md), or NFF by the extension .nff";
+    let syntax = |line: usize, column: usize, message: String| SceneError::Syntax {
+        file: file.to_owned(),
+        line,
+        column,
+        message,
+    };
+    let Some(start) = text.find(|c: char| !c.is_whitespace()) else {
+        return Err(syntax(1, 1, format!("empty file: {KINDS}")));
+    };
+    let first = text[start..].chars().next().unwrap_or(' ');
+    if "{[\"-0123456789tfn".contains(first) {
+        return Ok(());
+    }
+    let before = &text[..start];
+    let line = before.matches('\n').count() + 1;
+    let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    Err(syntax(line, column, format!("not JSON: {KINDS}")))
 }
 
 /// The path serde_path_to_error names (`objects[2].sphere.radius`), each key

@@ -261,3 +261,39 @@ fn a_long_word_is_quoted_short_by_every_reader() {
         assert!(e.contains(&cut) && e.contains(&length(n)), "{case}: {e}");
     }
 }
+
+/// An empty scene file, or one that is not JSON at all (a text file passed by
+/// mistake), is named as such, where it is, not with the parser's words.
+#[test]
+fn an_empty_or_non_json_scene_file_is_said_in_plain_words() {
+    let kinds = "a scene file is JSON (see scenes/README.md), or NFF by the extension .nff";
+    for (name, file, text, said) in [
+        (
+            "empty",
+            "e.json",
+            &b""[..],
+            format!("e.json:1:1: empty file: {kinds}"),
+        ),
+        (
+            "blank",
+            "b.json",
+            b"\n\n  ",
+            format!("b.json:1:1: empty file: {kinds}"),
+        ),
+        (
+            "text",
+            "x.txt",
+            b"x",
+            format!("x.txt:1:1: not JSON: {kinds}"),
+        ),
+        (
+            "indented",
+            "i.json",
+            b"\n  hello {}",
+            format!("i.json:2:3: not JSON: {kinds}"),
+        ),
+    ] {
+        let e = refused(name, &[(file, text)], &["render", file, "-o", "o.png"]);
+        assert_eq!(e, format!("error: {said}"), "{name}");
+    }
+}
