@@ -48,6 +48,18 @@ pub struct Args {
     pub no_key: bool,
 }
 
+/// What a scene lacks that an image needs to show anything but the
+/// background or the ambient light: not an error (a teacher may start from
+/// an empty scene), but an image with no word would look like a bug.
+pub fn missing(scene: &raytree::scene::Scene) -> Option<&'static str> {
+    match (scene.objects.is_empty(), scene.lights.is_empty()) {
+        (true, true) => Some("has no objects and no lights: every pixel is the background"),
+        (true, false) => Some("has no objects: every pixel is the background"),
+        (false, true) => Some("has no lights: surfaces show the ambient light alone"),
+        (false, false) => None,
+    }
+}
+
 pub fn run(args: &Args) -> Result<()> {
     if let Some(name) = &args.aov {
         return crate::aov::run(args, name);
@@ -56,6 +68,16 @@ pub fn run(args: &Args) -> Result<()> {
     let reading = Instant::now();
     let (scene, _) = args.scene.load()?;
     let read_seconds = reading.elapsed().as_secs_f64();
+    if let Some(what) = missing(&scene).filter(|_| !args.quiet) {
+        output::note(&format!(
+            "note: {} {what}",
+            args.scene
+                .scene
+                .as_deref()
+                .unwrap_or("the scene".as_ref())
+                .display()
+        ))?;
+    }
     let path = output::name_or(&args.output, || output::stem_and(args.scene.stem(), ".png"));
     let format = output::image_format(&path)?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;

@@ -372,3 +372,42 @@ fn a_default_output_name_keeps_the_scene_names_bytes() {
         );
     }
 }
+
+/// A scene with nothing to see renders (a teacher may start from an empty
+/// scene), with one line on standard error saying why the image is plain;
+/// --quiet keeps it quiet, and a whole scene says nothing of the kind.
+#[test]
+fn a_scene_without_objects_or_lights_renders_with_a_note() {
+    let dir = tempfile::tempdir().unwrap();
+    let small = r#""render": {"width": 4, "height": 3}"#;
+    let sphere = r#""objects": [{"sphere": {"center": [0, 0, 0], "radius": 1}}]"#;
+    let light = r#""lights": [{"position": [0, 5, 5]}]"#;
+    for (name, body, said) in [
+        (
+            "bare",
+            small.to_owned(),
+            Some("bare.json has no objects and no lights: every pixel is the background"),
+        ),
+        (
+            "dark",
+            format!("{small}, {sphere}"),
+            Some("dark.json has no lights: surfaces show the ambient light alone"),
+        ),
+        (
+            "void",
+            format!("{small}, {light}"),
+            Some("void.json has no objects: every pixel is the background"),
+        ),
+        ("whole", format!("{small}, {sphere}, {light}"), None),
+    ] {
+        let file = format!("{name}.json");
+        std::fs::write(dir.path().join(&file), format!("{{{body}}}")).unwrap();
+        let out = crate::commands::cli::succeeds(&["render", &file], dir.path());
+        let err = String::from_utf8(out.stderr).unwrap();
+        let notes: Vec<&str> = err.lines().filter(|l| l.starts_with("note: ")).collect();
+        let want: Vec<String> = said.map(|s| format!("note: {s}")).into_iter().collect();
+        assert_eq!(notes, want, "{name}: {err}");
+        let quiet = crate::commands::cli::succeeds(&["render", &file, "-q"], dir.path());
+        assert!(quiet.stderr.is_empty(), "{name}");
+    }
+}
