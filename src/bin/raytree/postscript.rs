@@ -171,7 +171,14 @@ fn ghostscript(program: &str, deep: bool, timeout: Duration) -> Result<Vec<u8>> 
             .unwrap_or("no message");
         bail!("Ghostscript failed on the program: {}", first.trim());
     }
-    std::fs::read(&page).context("Ghostscript drew no page")
+    // No page file is the program's doing (it never showed a page), not an
+    // error of the file system's to quote.
+    match std::fs::read(&page) {
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+            bail!("the program drew no page: it never calls showpage")
+        }
+        read => read.context("cannot read the page Ghostscript drew"),
+    }
 }
 
 /// The smallest rectangle holding every painted (not paper-white) pixel of

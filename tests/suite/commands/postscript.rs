@@ -137,6 +137,16 @@ fn failures_are_one_line() {
         &["postscript", "blank.ps"],
     );
     assert_eq!(e, "error: blank.ps: the program painted nothing");
+    let pageless: &[u8] = b"%!PS\n0 0 moveto 10 10 lineto stroke\n";
+    let e = refused(
+        "ps-no-showpage",
+        &[("p.ps", pageless)],
+        &["postscript", "p.ps"],
+    );
+    assert_eq!(
+        e,
+        "error: the program drew no page: it never calls showpage"
+    );
 }
 
 #[test]
