@@ -68,11 +68,19 @@ pub fn read_rgb8(path: &Path) -> Result<image::RgbImage> {
     let reader = image::ImageReader::new(std::io::Cursor::new(bytes))
         .with_guessed_format()
         .with_context(|| format!("cannot read {}", path.display()))?;
-    let img = reader.decode().map_err(|e| {
-        anyhow::anyhow!(
+    let img = reader.decode().map_err(|e| match e {
+        // The library's "The image format could not be determined" says less
+        // than this: it is some other kind of file.
+        image::ImageError::Unsupported(_) => {
+            anyhow::anyhow!(
+                "{}: not a PNG or PPM image, the kinds raytree reads",
+                path.display()
+            )
+        }
+        e => anyhow::anyhow!(
             "{}: not an image raytree can read (a PNG or PPM): {e}",
             path.display()
-        )
+        ),
     })?;
     Ok(img.to_rgb8())
 }

@@ -70,7 +70,15 @@ impl PendingFile {
             .prefix(".raytree-")
             .suffix(".part")
             .tempfile_in(dir)
-            .map_err(|e| anyhow::anyhow!("cannot write {}: {}", target.display(), io_reason(&e)))?;
+            .map_err(|e| {
+                // The OS names the file, but what is missing is its folder.
+                let why = match std::fs::metadata(dir) {
+                    Err(_) => format!("the folder {} does not exist", dir.display()),
+                    Ok(m) if !m.is_dir() => format!("{} is not a folder", dir.display()),
+                    Ok(_) => io_reason(&e),
+                };
+                anyhow::anyhow!("cannot write {}: {why}", target.display())
+            })?;
         list.push(temp.path().to_owned());
         Ok(Self {
             target: target.to_owned(),
@@ -233,6 +241,28 @@ pub fn io_reason(e: &std::io::Error) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_missing_folder_is_named_as_the_reason() {
+        let dir = tempfile::tempdir().unwrap();
+        let target = dir.path().join("nodir").join("out.png");
+        let e = PendingFile::create(&target).err().unwrap().to_string();
+        let folder = dir.path().join("nodir");
+        assert_eq!(
+            e,
+            format!(
+                "cannot write {}: the folder {} does not exist",
+                target.display(),
+                folder.display()
+            )
+        );
+        std::fs::write(&folder, b"").unwrap();
+        let e = PendingFile::create(&target).err().unwrap().to_string();
+        assert!(
+            e.ends_with(&format!("{} is not a folder", folder.display())),
+            "{e}"
+        );
+    }
 
     #[test]
     fn a_pending_file_is_registered_until_committed_or_dropped() {

@@ -68,16 +68,6 @@ pub fn run(args: &Args) -> Result<()> {
     let reading = Instant::now();
     let (scene, _) = args.scene.load()?;
     let read_seconds = reading.elapsed().as_secs_f64();
-    if let Some(what) = missing(&scene).filter(|_| !args.quiet) {
-        output::note(&format!(
-            "note: {} {what}",
-            args.scene
-                .scene
-                .as_deref()
-                .unwrap_or("the scene".as_ref())
-                .display()
-        ))?;
-    }
     let path = output::name_or(&args.output, || output::stem_and(args.scene.stem(), ".png"));
     let format = output::image_format(&path)?;
     let pending = output::create(&path, &args.scene.inputs(&scene))?;
@@ -141,6 +131,17 @@ pub fn run(args: &Args) -> Result<()> {
             seconds(read_seconds),
             seconds(rendering),
             threads_word(threads)
+        ))?;
+    }
+    // After the image is written: a note, not a reason to stop.
+    if let Some(what) = missing(&scene).filter(|_| !args.quiet) {
+        output::note(&format!(
+            "note: {} {what}",
+            args.scene
+                .scene
+                .as_deref()
+                .unwrap_or("the scene".as_ref())
+                .display()
         ))?;
     }
     if let Some((r, times, structure, built)) = rays {

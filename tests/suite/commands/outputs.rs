@@ -411,3 +411,28 @@ fn a_scene_without_objects_or_lights_renders_with_a_note() {
         assert!(quiet.stderr.is_empty(), "{name}");
     }
 }
+
+/// The library's and the OS's words are replaced by what the user can act on:
+/// the folder that is missing, the file that is not an image.
+#[test]
+fn a_missing_folder_and_a_file_that_is_no_image_are_named() {
+    let e = refused(
+        "no-folder",
+        &[("s.json", b"{}")],
+        &["render", "s.json", "-o", "nodir/out.png"],
+    );
+    assert_eq!(
+        e,
+        "error: cannot write nodir/out.png: the folder nodir does not exist"
+    );
+    let e = refused_with(
+        2,
+        "diff-json",
+        &[("s.json", b"{}")],
+        &["diff", "s.json", "s.json"],
+    );
+    assert_eq!(
+        e,
+        "error: s.json: not a PNG or PPM image, the kinds raytree reads"
+    );
+}
