@@ -19,7 +19,7 @@ pub struct Args {
     scene: SceneArgs,
     #[command(flatten)]
     target: TargetArgs,
-    /// Output PNG, or SVG with a .svg name (the same figure as vectors, text as text) [default: the scene's name, "diagram" and the pixel, e.g. whitted-diagram-320-240.png].
+    /// Output PNG, or SVG with a .svg name (the same figure as vectors, text as text) [default: the scene's name, the figure and the pixel: whitted-diagram-320-240.png, with --vectors 1 whitted-vectors-P1-320-240.png, with --graph whitted-graph-320-240.png; "ray" for the pixel with --ray].
     #[arg(short, long, value_name = "FIG.png|FIG.svg")]
     output: Option<PathBuf>,
     /// The plane drawn: the plane of incidence at the first hit (auto), the scene's axes, or the image plane face-on (camera).
@@ -106,9 +106,19 @@ fn parse_window(s: &str) -> Result<(DVec2, DVec2), String> {
 
 pub fn run(args: &Args) -> Result<()> {
     let (scene, source) = args.scene.load()?;
-    let path = output::name_or(&args.output, || match args.target.pixel {
-        Some((x, y)) => output::stem_and(args.scene.stem(), &format!("-diagram-{x}-{y}.png")),
-        None => output::stem_and(args.scene.stem(), "-diagram-ray.png"),
+    // Each kind of figure has a name of its own, so that drawing the
+    // vectors or the graph of a pixel keeps its diagram.
+    let path = output::name_or(&args.output, || {
+        let kind = match (args.vectors, args.graph) {
+            (Some(k), _) => format!("vectors-P{k}"),
+            (None, true) => "graph".to_owned(),
+            (None, false) => "diagram".to_owned(),
+        };
+        let at = match args.target.pixel {
+            Some((x, y)) => format!("{x}-{y}"),
+            None => "ray".to_owned(),
+        };
+        output::stem_and(args.scene.stem(), &format!("-{kind}-{at}.png"))
     });
     let extension = path.extension().map(|e| e.to_ascii_lowercase());
     let svg = extension.as_ref().is_some_and(|e| e == "svg");

@@ -70,7 +70,7 @@ enum Command {
     Check(check::Args),
     /// Write a generated scene file: random spheres, a grid of spheres, or an icosphere mesh.
     Generate(generate::Args),
-    /// Write an NFF scene (Haines's Standard Procedural Databases) as raytree scene JSON, the scene render reads from it.
+    /// Write an NFF scene (Haines's Standard Procedural Databases) as a raytree scene JSON file: the same scene render draws from the .nff, in the form you can read and edit.
     Convert(convert::Args),
     /// Write test vectors for your own tracer: lesson N's functions (3 to 11) with inputs and raytree's outputs, as JSON any language's tests can load.
     Vectors(vectors::Args),

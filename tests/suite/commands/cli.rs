@@ -738,6 +738,37 @@ fn diagram_writes_a_png_of_the_asked_size() {
     );
     let png = image::open(dir.join("whitted-diagram-416-209.png")).unwrap();
     assert_eq!((png.width(), png.height()), (640, 400));
+    // The vectors and the graph of the same pixel keep the diagram: each
+    // figure has a default name of its own.
+    let plain = std::fs::read(dir.join("whitted-diagram-416-209.png")).unwrap();
+    for (extra, name) in [
+        ("--vectors", "whitted-vectors-P1-416-209.png"),
+        ("--graph", "whitted-graph-416-209.png"),
+    ] {
+        let mut args = vec![
+            "diagram",
+            scene.to_str().unwrap(),
+            "--pixel",
+            "416,209",
+            "--size",
+            "1400x1000",
+            extra,
+        ];
+        if extra == "--vectors" {
+            args.push("1");
+        }
+        let out = raytree(&args, &dir);
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        assert!(dir.join(name).exists(), "{name}");
+    }
+    assert_eq!(
+        std::fs::read(dir.join("whitted-diagram-416-209.png")).unwrap(),
+        plain
+    );
     let out = raytree(
         &["diagram", "--ray", "0,1.6,7:0.1,-0.1,-1", "-o", "ray.png"],
         &dir,
