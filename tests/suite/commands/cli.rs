@@ -458,7 +458,7 @@ fn unwritable_or_unsupported_output() {
     let e = fails("unwritable", None, &["-o", "no/such/folder/out.png"]);
     assert_eq!(
         e,
-        "error: cannot write no/such/folder/out.png: No such file or directory"
+        "error: cannot write no/such/folder/out.png: the folder no/such/folder does not exist"
     );
     let e = crate::common::refused_with(2, "jpeg", &[], &["render", "-o", "out.jpg"]);
     assert_eq!(
@@ -673,7 +673,7 @@ fn trace_refuses_pixels_and_samples_that_do_not_exist() {
             None,
             &["--pixel", "1,1", "-o", "missing/t.json"]
         ),
-        "error: cannot write missing/t.json: No such file or directory"
+        "error: cannot write missing/t.json: the folder missing does not exist"
     );
     let e = fails_in(
         "trace",
