@@ -170,7 +170,7 @@
   // thousands only where nothing else fits, commas grouping by three before
   // a point (1,234.5) or more than one of them (1,234,567).
   function parseAnswer(text) {
-    var t = text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
+    var t = normalise(text);
     if (/^[-+]?\d{1,3}(,\d{3})+\./.test(t) || /^[-+]?\d{1,3}(,\d{3}){2,}(?![\d,])/.test(t)) {
       t = t.replace(/,/g, "");
     } else {
@@ -184,10 +184,16 @@
   // comma and 336120 with a thousands comma; a question takes the reading
   // nearer its answer, so neither way of writing is told it is wrong.
   function readings(text) {
-    var first = parseAnswer(text);
-    var t = text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
-    var m = /^([-+]?[1-9]\d{0,2}),(\d{3})(?![\d.,])/.exec(t);
-    return m ? [first, Number(m[1] + m[2])] : [first];
+    var t = normalise(text);
+    var all = [parseAnswer(t)];
+    if (/^[-+]?[1-9]\d{0,2},\d{3}(?![\d.,])/.test(t)) all.push(parseAnswer(t.replace(",", "")));
+    return all;
+  }
+
+  // The typed text with a typographic minus made ASCII and the spaces
+  // (thousands apart, or around a unit) gone.
+  function normalise(text) {
+    return text.trim().replace(/\u2212/g, "-").replace(/\s+/g, "");
   }
 
   function Question(root) {
