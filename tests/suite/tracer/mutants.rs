@@ -5,7 +5,10 @@
 //! clean on the same pixel. Every diagnosis `raytree check` knows has a
 //! mutant. The mutants the book shows (one for each of lessons 03–11, in
 //! `lessons/NN-topic/mutant.json`) are made again and compared with the
-//! committed files; `RAYTREE_BLESS=1` rewrites them.
+//! committed files; `RAYTREE_BLESS=1` rewrites them. Every mutant's report,
+//! JSON and text, is held to `tests/traces/mutant-reports.json`: the JSON
+//! report is a contract with autograders, so a change of its words or ids
+//! shows there first.
 
 use std::path::Path;
 use std::process::{Command, Output};
@@ -51,6 +54,7 @@ fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
     assert!(out.status.success(), "{}", said(&out));
     let raytree = env!("CARGO_BIN_EXE_raytree");
     let mut shown: Vec<String> = Vec::new();
+    let mut reports = serde_json::Map::new();
     for m in &table {
         let name = m["name"].as_str().unwrap();
         let scene = m["scene"].as_str().unwrap();
@@ -69,6 +73,17 @@ fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
         );
         assert_eq!(out.status.code(), Some(1), "{name}: {}", said(&out));
         let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+        let text = run(
+            raytree,
+            &["check", scene, "--pixel", &pixel, file.to_str().unwrap()],
+        );
+        reports.insert(
+            name.to_owned(),
+            serde_json::json!({
+                "json": String::from_utf8_lossy(&out.stdout),
+                "text": String::from_utf8_lossy(&text.stdout),
+            }),
+        );
         let first = &report["first"];
         assert_eq!(first["ray"], m["ray"], "{name}: {first:#}");
         assert_eq!(
@@ -102,6 +117,17 @@ fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
             shown.push(lesson[..2].to_owned());
         }
     }
+    let golden = root().join("tests/traces/mutant-reports.json");
+    let made = serde_json::to_string_pretty(&Value::Object(reports)).unwrap() + "\n";
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::write(&golden, &made).unwrap();
+    }
+    let now = std::fs::read_to_string(&golden).unwrap_or_default();
+    assert!(
+        now == made,
+        "{} is stale (a mutant's report changed): RAYTREE_BLESS=1 cargo test --release every_mutant",
+        golden.display()
+    );
     // No diagnosis without its mutant.
     for (id, _) in MISTAKES {
         assert!(
