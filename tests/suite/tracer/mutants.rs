@@ -6,7 +6,7 @@
 //! mutant. The mutants the book shows (one for each of lessons 03–11, in
 //! `lessons/NN-topic/mutant.json`) are made again and compared with the
 //! committed files; `RAYTREE_BLESS=1` rewrites them. Every mutant's report,
-//! JSON and text, is held to `tests/traces/mutant-reports.json`: the JSON
+//! JSON and text, is held to `tests/reports/mutants.json`: the JSON
 //! report is a contract with autograders, so a change of its words or ids
 //! shows there first.
 
@@ -117,7 +117,7 @@ fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
             shown.push(lesson[..2].to_owned());
         }
     }
-    let golden = root().join("tests/traces/mutant-reports.json");
+    let golden = root().join("tests/reports/mutants.json");
     let made = serde_json::to_string_pretty(&Value::Object(reports)).unwrap() + "\n";
     if std::env::var_os("RAYTREE_BLESS").is_some() {
         std::fs::write(&golden, &made).unwrap();
