@@ -14,5 +14,4 @@ pub mod spec_number; // a spec's number read from a trace, for the book and `ray
 pub mod lesson; // the lessons: finding, loading and narrating one
 pub mod question; // checked questions: predict a number, checked against raytree's own
 pub mod player; // a lesson's step-through as a player for the book's page
-pub mod learner; // the learner trace format, and the check of a learner's tracer against ours
-pub mod vectors; // test vectors of the lecture's functions for a learner's own tracer
+pub mod learner; // the learner trace, the check of a learner's tracer against ours, test vectors

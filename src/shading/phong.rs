@@ -58,19 +58,82 @@ pub fn direct(
     if n_dot_l <= 0.0 {
         return unlit;
     }
-    let r = 2.0 * n_dot_l * n - l;
+    let r = mirrored(n, l, n_dot_l);
     let r_dot_v = r.dot(v).max(0.0);
-    let highlight = if material.specular > 0.0 && r_dot_v > 0.0 {
-        material.specular * power(r_dot_v, material.shininess)
-    } else {
-        0.0
-    };
+    let (diffuse, specular) = Reflectance::of(material, color).terms(n_dot_l, r_dot_v, light);
     Direct {
         mirrored: r,
         r_dot_v,
-        diffuse: material.diffuse * n_dot_l * color * light,
-        specular: highlight * light,
+        diffuse,
+        specular,
         ..unlit
+    }
+}
+
+/// `R = 2(N·L)N − L`: the direction to the light `l` mirrored about the unit
+/// normal `n`, given their cosine `n_dot_l`.
+#[inline]
+pub fn mirrored(n: DVec3, l: DVec3, n_dot_l: f64) -> DVec3 {
+    2.0 * n_dot_l * n - l
+}
+
+/// What Phong's direct terms read of the surface at a hit: its color there and
+/// the material's `k_d`, `k_s` and shininess. The tracer makes one from the
+/// material ([`Reflectance::of`]); the learner check from the recorded local
+/// color, so that a diagnosis remakes the tracer's own terms.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Reflectance {
+    /// The surface's color at the hit.
+    pub color: DVec3,
+    /// `k_d`, the diffuse coefficient.
+    pub k_d: f64,
+    /// `k_s`, the specular coefficient.
+    pub k_s: f64,
+    /// The highlight's exponent.
+    pub shininess: f64,
+}
+
+impl Reflectance {
+    /// The material's coefficients, with its color at the hit.
+    #[inline]
+    pub fn of(material: &Material, color: DVec3) -> Self {
+        Reflectance {
+            color,
+            k_d: material.diffuse,
+            k_s: material.specular,
+            shininess: material.shininess,
+        }
+    }
+
+    /// `k_d · (N·L) · color · light`, Lambert's term, unclamped: [`Self::terms`]
+    /// adds nothing where `N·L ≤ 0`, a tracer that forgets the clamp adds this.
+    #[inline]
+    pub fn diffuse(&self, n_dot_l: f64, light: DVec3) -> DVec3 {
+        self.k_d * n_dot_l * self.color * light
+    }
+
+    /// `k_s · (R·V)^shininess`, the highlight's strength, unclamped (for a
+    /// negative `R·V` and a fractional shininess it is NaN).
+    #[inline]
+    pub fn highlight(&self, r_dot_v: f64) -> f64 {
+        self.k_s * power(r_dot_v, self.shininess)
+    }
+
+    /// One light's diffuse and specular terms from the cosines `N·L` and `R·V`
+    /// and the light as it arrives: the lecture's
+    /// `k_d·(N·L)·color·light + k_s·(R·V)^shininess·light`, nothing where
+    /// `N·L ≤ 0` and no highlight where `R·V ≤ 0` (or `k_s` is 0).
+    #[inline]
+    pub fn terms(&self, n_dot_l: f64, r_dot_v: f64, light: DVec3) -> (DVec3, DVec3) {
+        if n_dot_l <= 0.0 {
+            return (DVec3::ZERO, DVec3::ZERO);
+        }
+        let highlight = if self.k_s > 0.0 && r_dot_v > 0.0 {
+            self.highlight(r_dot_v)
+        } else {
+            0.0
+        };
+        (self.diffuse(n_dot_l, light), highlight * light)
     }
 }
 

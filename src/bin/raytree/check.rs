@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::Result;
-use raytree::course::learner::{image, read, report};
+use raytree::course::learner::{check, image};
 use raytree::io::{image_diff, image_file};
 use raytree::scene::overrides::Overrides;
 use raytree::trace::progress::Progress;
@@ -88,17 +88,7 @@ pub fn run(args: &Args) -> Result<ExitCode> {
             height - 1
         )));
     }
-    let path = learner;
-    let learner = read::read(path).map_err(anyhow::Error::msg)?;
-    if let Some([lx, ly]) = learner.pixel
-        && (lx, ly) != pixel
-    {
-        anyhow::bail!(
-            "{}: the trace is of pixel {lx},{ly}, and --pixel asks for {x},{y}",
-            path.display()
-        );
-    }
-    let report = report::check(&scene, source, pixel, &learner).map_err(anyhow::Error::msg)?;
+    let report = check::pixel(&scene, source, pixel, learner).map_err(anyhow::Error::msg)?;
     let text = if args.json {
         report.json()
     } else {

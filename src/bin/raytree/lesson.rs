@@ -5,7 +5,8 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
-use raytree::course::{lesson, spec_number, vectors};
+use raytree::course::learner::vectors;
+use raytree::course::{lesson, spec_number};
 use raytree::inspector::{self, App};
 use raytree::tree::document::TraceDocument;
 

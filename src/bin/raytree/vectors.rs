@@ -7,7 +7,8 @@
 use std::path::{Path, PathBuf};
 
 use anyhow::Result;
-use raytree::course::{lesson, vectors};
+use raytree::course::learner::vectors;
+use raytree::course::lesson;
 use raytree::scene::source;
 
 use crate::args::usage;

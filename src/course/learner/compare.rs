@@ -4,46 +4,37 @@
 //! in the order raytree's algorithm ran, each with the step number `raytree
 //! trace --steps` prints, so the first one is the first divergence.
 //!
-//! The tolerances are in [`crate::course::learner::measure`].
+//! A diagnosis recomputes the learner's number from raytree's inputs with
+//! one mistake, so it is only sought while those inputs are the learner's
+//! too: once a ray's origin, direction or hit differs, what follows on it
+//! (its shadow rays, its colors, its children) is a consequence, listed
+//! without a diagnosis. (A tracer with its rows flipped hit the floor where
+//! raytree hit the mirror, and its shadow rays, blocked by the mirror, were
+//! taken for acne.)
+//!
+//! The tolerances are in [`crate::course::learner::tolerance`].
 
 use glam::DVec3;
 
-use crate::course::learner::diagnose::{self, Diagnosis};
-use crate::course::learner::format::{LearnerRay, LearnerTrace};
-use crate::course::learner::measure::{
-    COLOR, Context, PER_LEVEL, before_light, same_color, same_direction, same_distance, same_point,
-    shadow_roots, tolerance,
+use crate::course::learner::context::{Context, before_light};
+use crate::course::learner::diagnose;
+use crate::course::learner::difference::{
+    Child, Difference, NoChild, Quantity, RayPath, ShadowField, Value,
 };
-use crate::course::learner::terms;
+use crate::course::learner::format::{LearnerHit, LearnerRay, LearnerShadow, LearnerTrace};
+use crate::course::learner::mistakes::Diagnosis;
+use crate::course::learner::tolerance::{
+    COLOR, PER_LEVEL, same_color, same_direction, same_distance, same_point, tolerance,
+};
 use crate::trace::recorder::Branch;
-use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
+use crate::tree::ray_tree::{HitRecord, ShadowOutcomeRecord, ShadowRecord};
 use crate::tree::steps::StepKind;
-use crate::views::numbers::{color as color_words, num, vec3 as vec_words};
-
-/// One difference between the learner's trace and raytree's.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Difference {
-    /// The ray, as its path from the primary ray: `primary → refracted d2`.
-    pub ray: String,
-    /// What differs: `direction`, `hit.t`, `shadows[1].blocked`, ….
-    pub quantity: String,
-    /// The learner's value, in words.
-    pub learner: String,
-    /// raytree's value, in words.
-    pub ours: String,
-    /// The step of raytree's trace where it arises (as `raytree trace --steps` numbers them).
-    pub step: usize,
-    /// The classic mistake its numbers show, if any.
-    pub diagnosis: Option<Diagnosis>,
-    /// `false`: a difference tolerated and only said (a branch raytree cut off).
-    pub divergence: bool,
-}
 
 /// Every difference, in the order raytree's algorithm met them.
 pub fn compare(ctx: &Context, learner: &LearnerTrace) -> Vec<Difference> {
     let mut out = Vec::new();
     let mut walk = Walk { ctx, out: &mut out };
-    walk.ray(&learner.ray, 0, "primary", true);
+    walk.ray(&learner.ray, 0, &RayPath::primary(), true);
     out.sort_by_key(|d| d.step);
     out
 }
@@ -53,265 +44,98 @@ struct Walk<'c, 'a> {
     out: &'c mut Vec<Difference>,
 }
 
+/// Where the walk is: the learner's ray, raytree's node `i` it pairs with,
+/// the ray's path and its geometric tolerance.
+struct At<'r> {
+    l: &'r LearnerRay,
+    i: usize,
+    path: &'r RayPath,
+    tol: f64,
+}
+
+/// One of the learner's shadow rays beside raytree's: the `k`th, of step `step`.
+struct Cast<'r> {
+    k: usize,
+    step: usize,
+    s: &'r LearnerShadow,
+    ours: &'r ShadowRecord,
+}
+
 impl Walk<'_, '_> {
-    #[allow(clippy::too_many_arguments)]
+    /// A divergence of `quantity` at `at`'s ray, the learner's value and
+    /// ours, diagnosed as `why`.
     fn push(
         &mut self,
-        ray: &str,
-        quantity: impl Into<String>,
-        learner: String,
-        ours: String,
+        at: &At,
         step: usize,
-        diagnosis: Option<Diagnosis>,
-        divergence: bool,
+        quantity: Quantity,
+        (learner, ours): (Value, Value),
+        why: Option<Diagnosis>,
     ) {
-        self.out.push(Difference {
-            ray: ray.to_owned(),
-            quantity: quantity.into(),
-            learner,
-            ours,
-            step,
-            diagnosis,
-            divergence,
-        });
+        self.out
+            .push(Difference::new(at.path, step, quantity, learner, ours).because(why));
     }
 
     /// Compares the learner's `l` with node `i`; returns what the learner's
     /// branches that raytree cut off add to `l`'s color, so that its color is
     /// compared with ours plus that. `upstream`: every ray and hit before this
     /// ray agreed.
-    ///
-    /// A diagnosis recomputes the learner's number from raytree's inputs with
-    /// one mistake, so it is only sought while those inputs are the learner's
-    /// too: once a ray's origin, direction or hit differs, what follows on it
-    /// (its shadow rays, its colors, its children) is a consequence, listed
-    /// without a diagnosis. (A tracer with its rows flipped hit the floor where
-    /// raytree hit the mirror, and its shadow rays, blocked by the mirror, were
-    /// taken for acne.)
-    fn ray(&mut self, l: &LearnerRay, i: usize, path: &str, upstream: bool) -> DVec3 {
-        let ctx = self.ctx;
-        let tree = ctx.tree();
-        let node = &tree.nodes[i];
-        let tol = tolerance(node.depth);
+    fn ray(&mut self, l: &LearnerRay, i: usize, path: &RayPath, upstream: bool) -> DVec3 {
+        let tol = tolerance(self.ctx.tree().nodes[i].depth);
+        let at = At { l, i, path, tol };
+        let ray_agrees = self.origin_and_direction(&at, upstream);
+        let agrees = self.hit(&at, ray_agrees) && ray_agrees;
+        self.shadows(&at, agrees);
+        self.local(&at, agrees);
+        let mut extra = DVec3::ZERO;
+        for child in [Child::Reflected, Child::Refracted] {
+            if let Some(add) = self.child(&at, child, agrees) {
+                extra += add;
+            }
+        }
+        self.tir(&at, agrees);
+        self.color(&at, extra, agrees);
+        extra
+    }
+
+    /// The ray itself, its origin and its direction, the direction diagnosed
+    /// while every ray before agreed and its origin does. Returns whether
+    /// both agree and every ray before did.
+    fn origin_and_direction(&mut self, at: &At, upstream: bool) -> bool {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let node = &ctx.tree().nodes[i];
         let spawn = if i == 0 {
             ctx.step(0, StepKind::Camera)
         } else {
             ctx.step(i, StepKind::Spawn)
         };
-        let origin_agrees = same_point(l.origin, node.origin, node.origin, tol);
+        let origin_agrees = same_point(l.origin, node.origin, node.origin, at.tol);
         if !origin_agrees {
-            self.push(
-                path,
-                "origin",
-                vec_words(l.origin),
-                vec_words(node.origin),
-                spawn,
-                None,
-                true,
-            );
+            let values = (Value::Vector(l.origin), Value::Vector(node.origin));
+            self.push(at, spawn, Quantity::Origin, values, None);
         }
-        let direction_agrees = same_direction(l.direction, node.direction, tol);
+        let direction_agrees = same_direction(l.direction, node.direction, at.tol);
         if !direction_agrees {
             let why = (upstream && origin_agrees)
                 .then(|| diagnose::direction(ctx, l, i))
                 .flatten();
-            self.push(
-                path,
-                "direction (as a unit vector)",
-                vec_words(l.direction.normalize()),
-                vec_words(node.direction.normalize()),
-                spawn,
-                why,
-                true,
+            let values = (
+                Value::Vector(l.direction.normalize()),
+                Value::Vector(node.direction.normalize()),
             );
+            self.push(at, spawn, Quantity::Direction, values, why);
         }
-        let ray_agrees = upstream && origin_agrees && direction_agrees;
-        let agrees = self.hit(l, i, path, tol, ray_agrees) && ray_agrees;
-        self.shadows(l, node, i, path, tol, agrees);
-        let local_step = ctx.step(i, StepKind::Local);
-        if let (Some(lc), Some(ours)) = (l.local, &node.local)
-            && !same_color(lc, ours.total)
-        {
-            let why = agrees.then(|| diagnose::local(ctx, l, i)).flatten();
-            self.push(
-                path,
-                "local color",
-                color_words(lc),
-                color_words(ours.total),
-                local_step,
-                why,
-                true,
-            );
-        }
-        let mut extra = DVec3::ZERO;
-        for (name, k, ours_k, child, branch, kind) in [
-            (
-                "k_rfl",
-                l.k_rfl,
-                node.sum.k_rfl,
-                &l.reflected,
-                &node.reflected,
-                StepKind::Reflect,
-            ),
-            (
-                "k_rfa",
-                l.k_rfa,
-                node.sum.k_rfa,
-                &l.refracted,
-                &node.refracted,
-                StepKind::Refract,
-            ),
-        ] {
-            let step = ctx.step(i, kind);
-            if let Some(k) = k
-                && node.hit.is_some()
-                && !same_color(k, DVec3::splat(ours_k))
-            {
-                let why = agrees
-                    .then(|| diagnose::coefficient(ctx, i, refracted_direction(l)))
-                    .flatten();
-                // A number written as one is said as one.
-                let yours = if k.x == k.y && k.y == k.z {
-                    num(k.x)
-                } else {
-                    vec_words(k)
-                };
-                self.push(path, name, yours, num(ours_k), step, why, true);
-            }
-            let child_name = if kind == StepKind::Reflect {
-                "reflected"
-            } else {
-                "refracted"
-            };
-            let traced = branch.as_ref().and_then(|b| b.node);
-            match (child, traced) {
-                (None | Some(None), None) => {}
-                (Some(Some(c)), Some(j)) => {
-                    let depth = tree.nodes[j].depth;
-                    let sub = self.ray(c, j, &format!("{path} → {child_name} d{depth}"), agrees);
-                    extra += branch.as_ref().map_or(0.0, |b| b.coefficient) * sub;
-                }
-                (Some(None), Some(j)) => self.push(
-                    path,
-                    child_name,
-                    "not spawned".to_owned(),
-                    format!("spawned (depth {})", tree.nodes[j].depth),
-                    step,
-                    None,
-                    true,
-                ),
-                (None, Some(_)) => {}
-                (Some(Some(c)), None) => {
-                    extra += self.extra_branch(c, node, i, path, child_name, step, agrees)
-                }
-            }
-        }
-        if let Some(tir) = l.tir
-            && node.hit.is_some()
-        {
-            let ours = node
-                .refracted
-                .as_ref()
-                .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
-            if tir != ours {
-                let why = (!tir && agrees).then(|| diagnose::tir(ctx, i, refracted_direction(l)));
-                let step = ctx.step(i, StepKind::Refract);
-                self.push(
-                    path,
-                    "tir (total internal reflection)",
-                    tir.to_string(),
-                    ours.to_string(),
-                    step,
-                    why,
-                    true,
-                );
-            }
-        }
-        if let Some(c) = l.color {
-            let expected = node.color() + extra;
-            if !same_color(c, expected) {
-                // Consequences get no diagnosis: the sum is remade with
-                // raytree's k_rfl and k_rfa, which are the learner's only
-                // where the hit is.
-                let why = agrees.then(|| diagnose::color(ctx, l, i)).flatten();
-                let step = ctx.step(i, StepKind::Combine);
-                self.push(
-                    path,
-                    "color",
-                    color_words(c),
-                    color_words(expected),
-                    step,
-                    why,
-                    true,
-                );
-            }
-        }
-        extra
-    }
-
-    /// A child the learner traced where raytree did not: tolerated (and said)
-    /// when raytree stopped for its depth, its weight or a zero coefficient,
-    /// a divergence after total internal reflection. Returns what it adds to
-    /// the parent's color. `agrees`: the parent's rays and hit agreed.
-    #[allow(clippy::too_many_arguments)]
-    fn extra_branch(
-        &mut self,
-        c: &LearnerRay,
-        node: &RayNode,
-        i: usize,
-        path: &str,
-        child_name: &str,
-        step: usize,
-        agrees: bool,
-    ) -> DVec3 {
-        let branch = if child_name == "reflected" {
-            &node.reflected
-        } else {
-            &node.refracted
-        };
-        let at = format!("{path} → {child_name} d{}", node.depth + 1);
-        let outcome = branch.as_ref().map(|b| b.outcome);
-        let (why, divergence) = match outcome {
-            Some(Branch::MaxDepth) => ("raytree stopped at the scene's max_depth", false),
-            Some(Branch::WeightCutoff) => {
-                ("raytree skipped it: its weight is below the cutoff", false)
-            }
-            Some(Branch::NoCoefficient) => ("raytree spawns none: its coefficient is 0", false),
-            Some(Branch::TotalInternalReflection) => {
-                ("total internal reflection: there is no refracted ray", true)
-            }
-            Some(Branch::Traced) | None => ("raytree's ray missed: it has no children", true),
-        };
-        let diagnosis = (outcome == Some(Branch::TotalInternalReflection) && agrees)
-            .then(|| diagnose::tir(self.ctx, i, Some(c.direction)));
-        self.push(
-            &at,
-            "ray",
-            "spawned".to_owned(),
-            format!("not spawned ({why})"),
-            step,
-            diagnosis,
-            divergence,
-        );
-        let k = branch.as_ref().map_or(0.0, |b| b.coefficient);
-        if divergence {
-            DVec3::ZERO
-        } else {
-            k * c.color.unwrap_or(DVec3::ZERO)
-        }
+        upstream && origin_agrees && direction_agrees
     }
 
     /// Compares the learner's hit with raytree's, diagnosing a difference when
-    /// `diagnose` (the ray itself agreed); returns whether the hit agreed (or
+    /// `sought` (the ray itself agreed); returns whether the hit agreed (or
     /// was not given).
-    fn hit(&mut self, l: &LearnerRay, i: usize, path: &str, tol: f64, diagnose: bool) -> bool {
-        let ctx = self.ctx;
+    fn hit(&mut self, at: &At, sought: bool) -> bool {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
         let node = &ctx.tree().nodes[i];
         let Some(given) = &l.hit else { return true };
-        let why = |f: fn(&Context, &LearnerRay, usize) -> Option<Diagnosis>| {
-            diagnose.then(|| f(ctx, l, i)).flatten()
-        };
-        let before = self.out.len();
+        let why = || sought.then(|| diagnose::hit(ctx, l, i)).flatten();
         let step = ctx.step(
             i,
             if node.hit.is_some() {
@@ -324,231 +148,337 @@ impl Walk<'_, '_> {
             (None, None) => return true,
             (Some(h), Some(ours)) => (h, ours),
             (None, Some(ours)) => {
-                let why = why(diagnose::hit);
-                let ours = format!(
-                    "'{}' at distance {}",
-                    ours.name,
-                    num(ours.t * node.direction.length())
-                );
-                self.push(path, "hit", "missed".to_owned(), ours, step, why, true);
+                let at_distance = Value::HitAt {
+                    object: ours.name.clone(),
+                    distance: ours.t * node.direction.length(),
+                };
+                let values = (Value::Missed, at_distance);
+                self.push(at, step, Quantity::Hit, values, why());
                 return false;
             }
             (Some(h), None) => {
-                let why = why(diagnose::hit);
-                let what = h
-                    .object
-                    .as_deref()
-                    .map_or("something".to_owned(), |o| format!("'{o}'"));
-                self.push(path, "hit", what, "missed".to_owned(), step, why, true);
+                let what = h.object.clone().map_or(Value::Something, Value::Named);
+                self.push(at, step, Quantity::Hit, (what, Value::Missed), why());
                 return false;
             }
         };
         if let Some(o) = &h.object
             && *o != ours.name
         {
-            let why = why(diagnose::hit);
-            self.push(
-                path,
-                "hit.object",
-                format!("'{o}'"),
-                format!("'{}'", ours.name),
-                step,
-                why,
-                true,
-            );
+            let values = (Value::Named(o.clone()), Value::Named(ours.name.clone()));
+            self.push(at, step, Quantity::HitObject, values, why());
             return false;
         }
+        let before = self.out.len();
+        self.hit_fields(at, step, (h, ours), sought);
+        self.out.len() == before
+    }
+
+    /// The fields of a hit on the object raytree's ray hit too: its t, point,
+    /// normal and side, the t and the normal diagnosed when `sought`.
+    fn hit_fields(
+        &mut self,
+        at: &At,
+        step: usize,
+        (h, ours): (&LearnerHit, &HitRecord),
+        sought: bool,
+    ) {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let node = &ctx.tree().nodes[i];
         if let Some(t) = h.t {
             let (dl, d) = (t * l.direction.length(), ours.t * node.direction.length());
-            if !same_distance(dl, d, node.origin, tol) {
-                let why = why(diagnose::hit);
-                self.push(
-                    path,
-                    "hit.t (as a distance, t·|direction|)",
-                    num(dl),
-                    num(d),
-                    step,
-                    why,
-                    true,
-                );
+            if !same_distance(dl, d, node.origin, at.tol) {
+                let why = sought.then(|| diagnose::hit(ctx, l, i)).flatten();
+                let values = (Value::Number(dl), Value::Number(d));
+                self.push(at, step, Quantity::HitT, values, why);
             }
         }
         if let Some(p) = h.point
-            && !same_point(p, ours.point, node.origin, tol)
+            && !same_point(p, ours.point, node.origin, at.tol)
         {
-            self.push(
-                path,
-                "hit.point",
-                vec_words(p),
-                vec_words(ours.point),
-                step,
-                None,
-                true,
-            );
+            let values = (Value::Vector(p), Value::Vector(ours.point));
+            self.push(at, step, Quantity::HitPoint, values, None);
         }
         if let Some(n) = h.normal
-            && !same_direction(n, ours.shading_normal, tol)
+            && !same_direction(n, ours.shading_normal, at.tol)
         {
-            let why = diagnose.then(|| diagnose::normal(ctx, n, i)).flatten();
-            self.push(
-                path,
-                "hit.normal (as a unit vector)",
-                vec_words(n.normalize()),
-                vec_words(ours.shading_normal),
-                step,
-                why,
-                true,
+            let why = sought.then(|| diagnose::normal(ctx, n, i)).flatten();
+            let values = (
+                Value::Vector(n.normalize()),
+                Value::Vector(ours.shading_normal),
             );
+            self.push(at, step, Quantity::HitNormal, values, why);
         }
         if let Some(e) = h.entering
             && e != ours.entering
         {
-            let words = |e: bool| if e { "entering" } else { "leaving" }.to_owned();
-            self.push(
-                path,
-                "hit.entering",
-                words(e),
-                words(ours.entering),
-                step,
-                None,
-                true,
-            );
+            let values = (Value::Entering(e), Value::Entering(ours.entering));
+            self.push(at, step, Quantity::HitEntering, values, None);
         }
-        self.out.len() == before
     }
 
     /// The shadow rays, diagnosed only when `agrees` (the ray and its hit
     /// agreed, so the learner's shadow rays start where raytree's do).
-    #[allow(clippy::too_many_arguments)]
-    fn shadows(
-        &mut self,
-        l: &LearnerRay,
-        node: &RayNode,
-        i: usize,
-        path: &str,
-        tol: f64,
-        agrees: bool,
-    ) {
+    fn shadows(&mut self, at: &At, agrees: bool) {
         let ctx = self.ctx;
-        let (Some(list), Some(_)) = (&l.shadows, &node.hit) else {
+        let node = &ctx.tree().nodes[at.i];
+        let (Some(list), Some(_)) = (&at.l.shadows, &node.hit) else {
             return;
         };
         if list.len() != node.shadow_rays.len() {
-            let step = ctx.step(i, StepKind::Shadow(0));
-            self.push(
-                path,
-                "shadows (one per light)",
-                list.len().to_string(),
-                node.shadow_rays.len().to_string(),
-                step,
-                None,
-                true,
+            let step = ctx.step(at.i, StepKind::Shadow(0));
+            let values = (
+                Value::Count(list.len()),
+                Value::Count(node.shadow_rays.len()),
             );
+            self.push(at, step, Quantity::ShadowCount, values, None);
             return;
         }
         for (k, (s, ours)) in list.iter().zip(&node.shadow_rays).enumerate() {
-            let step = ctx.step(i, StepKind::Shadow(k));
-            let q = |f: &str| format!("shadows[{k}].{f}");
-            if s.light != ours.name {
-                let learner = if ctx.scene.lights.iter().any(|l| l.name == s.light) {
-                    format!("'{}'", s.light)
-                } else {
-                    format!("'{}' (the scene has no light of that name)", s.light)
-                };
-                let ours = format!("'{}' (the scene's light number {k})", ours.name);
-                self.push(path, q("light"), learner, ours, step, None, true);
-                continue;
-            }
-            let ours_by = match &ours.outcome {
-                // The light is behind the surface: it adds nothing, whatever a shadow ray finds.
-                ShadowOutcomeRecord::FacesAway => continue,
-                ShadowOutcomeRecord::Blocked { name, .. } => Some(name.as_str()),
-                ShadowOutcomeRecord::Reaches { .. } => None,
+            let step = ctx.step(at.i, StepKind::Shadow(k));
+            self.shadow(at, &Cast { k, step, s, ours }, agrees);
+        }
+    }
+
+    /// One shadow ray: its light, then the ray before what it found, as for
+    /// every other ray (a shadow ray sent the wrong way finds the wrong things).
+    fn shadow(&mut self, at: &At, cast: &Cast, agrees: bool) {
+        let (s, ours, k) = (cast.s, cast.ours, cast.k);
+        if s.light != ours.name {
+            let learner = if self.ctx.scene.lights.iter().any(|l| l.name == s.light) {
+                Value::Named(s.light.clone())
+            } else {
+                Value::UnknownLight(s.light.clone())
             };
-            // The ray before what it found, as for every other ray: a
-            // shadow ray sent the wrong way finds the wrong things.
-            let mut cast_agrees = agrees;
-            if let Some(o) = s.origin
-                && !same_point(o, ours.origin, ours.origin, tol + PER_LEVEL)
-            {
-                cast_agrees = false;
-                self.push(
-                    path,
-                    q("origin"),
-                    vec_words(o),
-                    vec_words(ours.origin),
-                    step,
-                    None,
-                    true,
+            let raytree = Value::SceneLight {
+                name: ours.name.clone(),
+                number: k,
+            };
+            let quantity = Quantity::Shadow(k, ShadowField::Light);
+            self.push(at, cast.step, quantity, (learner, raytree), None);
+            return;
+        }
+        // The light is behind the surface: it adds nothing, whatever a shadow ray finds.
+        if matches!(ours.outcome, ShadowOutcomeRecord::FacesAway) {
+            return;
+        }
+        let cast_agrees = self.shadow_cast(at, cast, agrees);
+        self.shadow_outcome(at, cast, cast_agrees);
+    }
+
+    /// A shadow ray's origin and direction; returns whether they agree (and
+    /// `agrees`, everything before them).
+    fn shadow_cast(&mut self, at: &At, cast: &Cast, agrees: bool) -> bool {
+        let (s, ours, k) = (cast.s, cast.ours, cast.k);
+        let tol = at.tol + PER_LEVEL;
+        let mut cast_agrees = agrees;
+        if let Some(o) = s.origin
+            && !same_point(o, ours.origin, ours.origin, tol)
+        {
+            cast_agrees = false;
+            let values = (Value::Vector(o), Value::Vector(ours.origin));
+            let quantity = Quantity::Shadow(k, ShadowField::Origin);
+            self.push(at, cast.step, quantity, values, None);
+        }
+        if let Some(d) = s.direction
+            && !same_direction(d, ours.direction, tol)
+        {
+            let why = cast_agrees
+                .then(|| diagnose::shadow_direction(s, d, ours, tol))
+                .flatten();
+            cast_agrees = false;
+            let values = (
+                Value::Vector(d.normalize()),
+                Value::Vector(ours.direction.normalize()),
+            );
+            let quantity = Quantity::Shadow(k, ShadowField::Direction);
+            self.push(at, cast.step, quantity, values, why);
+        }
+        cast_agrees
+    }
+
+    /// What a shadow ray found: blocked or not, by what, and the share of the
+    /// light it let through, diagnosed when `cast_agrees`.
+    fn shadow_outcome(&mut self, at: &At, cast: &Cast, cast_agrees: bool) {
+        let ctx = self.ctx;
+        let (s, ours, k) = (cast.s, cast.ours, cast.k);
+        let ours_by = match &ours.outcome {
+            ShadowOutcomeRecord::Blocked { name, .. } => Some(name.as_str()),
+            _ => None,
+        };
+        if s.blocked != ours_by.is_some() {
+            let why = cast_agrees
+                .then(|| diagnose::shadow(ctx, s, at.i, k))
+                .flatten();
+            let learner = if s.blocked {
+                Value::Blocked(s.by.clone().flatten())
+            } else {
+                Value::Reaches
+            };
+            let raytree = ours_by.map_or(Value::Reaches, |o| Value::Blocked(Some(o.to_owned())));
+            let quantity = Quantity::Shadow(k, ShadowField::Blocked);
+            self.push(at, cast.step, quantity, (learner, raytree), why);
+            return;
+        }
+        if let (Some(Some(by)), Some(o)) = (&s.by, ours_by)
+            && by != o
+            && !blocks(ctx, by, ours)
+        {
+            let values = (Value::Named(by.clone()), Value::Named(o.to_owned()));
+            let quantity = Quantity::Shadow(k, ShadowField::By);
+            self.push(at, cast.step, quantity, values, None);
+        }
+        if let (Some(t), ShadowOutcomeRecord::Reaches { transmitted }) =
+            (s.transmitted, &ours.outcome)
+            && (t - transmitted).abs() > COLOR
+        {
+            let why = cast_agrees
+                .then(|| diagnose::transmitted(ctx, s, t, ours, *transmitted))
+                .flatten();
+            let values = (Value::Number(t), Value::Number(*transmitted));
+            let quantity = Quantity::Shadow(k, ShadowField::Transmitted);
+            self.push(at, cast.step, quantity, values, why);
+        }
+    }
+
+    /// The local color, diagnosed when `agrees`.
+    fn local(&mut self, at: &At, agrees: bool) {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let node = &ctx.tree().nodes[i];
+        let step = ctx.step(i, StepKind::Local);
+        if let (Some(lc), Some(ours)) = (l.local, &node.local)
+            && !same_color(lc, ours.total)
+        {
+            let why = agrees.then(|| diagnose::local(ctx, l, i)).flatten();
+            let values = (Value::Color(lc), Value::Color(ours.total));
+            self.push(at, step, Quantity::LocalColor, values, why);
+        }
+    }
+
+    /// The child `child` of `at`'s ray: its coefficient, then the child
+    /// itself. Returns what it adds to the learner's color beyond raytree's
+    /// (`None`: nothing, not even zero).
+    fn child(&mut self, at: &At, child: Child, agrees: bool) -> Option<DVec3> {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let tree = ctx.tree();
+        let node = &tree.nodes[i];
+        let (k, ours_k, mine, branch, kind) = match child {
+            Child::Reflected => (
+                l.k_rfl,
+                node.sum.k_rfl,
+                &l.reflected,
+                &node.reflected,
+                StepKind::Reflect,
+            ),
+            Child::Refracted => (
+                l.k_rfa,
+                node.sum.k_rfa,
+                &l.refracted,
+                &node.refracted,
+                StepKind::Refract,
+            ),
+        };
+        let step = ctx.step(i, kind);
+        if let Some(k) = k
+            && node.hit.is_some()
+            && !same_color(k, DVec3::splat(ours_k))
+        {
+            let why = agrees
+                .then(|| diagnose::coefficient(ctx, i, refracted_direction(l)))
+                .flatten();
+            let values = (Value::Coefficient(k), Value::Number(ours_k));
+            self.push(at, step, Quantity::Coefficient(child), values, why);
+        }
+        let traced = branch.as_ref().and_then(|b| b.node);
+        match (mine, traced) {
+            (None | Some(None), None) | (None, Some(_)) => None,
+            (Some(Some(c)), Some(j)) => {
+                let depth = tree.nodes[j].depth;
+                let sub = self.ray(c, j, &at.path.child(child.kind(), depth), agrees);
+                Some(branch.as_ref().map_or(0.0, |b| b.coefficient) * sub)
+            }
+            (Some(None), Some(j)) => {
+                let values = (
+                    Value::NotSpawned(None),
+                    Value::Spawned(Some(tree.nodes[j].depth)),
                 );
+                self.push(at, step, Quantity::Spawned(child), values, None);
+                None
             }
-            if let Some(d) = s.direction
-                && !same_direction(d, ours.direction, tol + PER_LEVEL)
-            {
-                let why = cast_agrees
-                    .then(|| {
-                        crate::course::learner::signs::shadow_direction(s, d, ours, tol + PER_LEVEL)
-                    })
-                    .flatten();
-                cast_agrees = false;
-                self.push(
-                    path,
-                    q("direction (as a unit vector)"),
-                    vec_words(d.normalize()),
-                    vec_words(ours.direction.normalize()),
-                    step,
-                    why,
-                    true,
-                );
-            }
-            if s.blocked != ours_by.is_some() {
-                let why = cast_agrees
-                    .then(|| diagnose::shadow(ctx, s, i, k))
-                    .flatten();
-                let words = |b: Option<&str>| {
-                    b.map_or("reaches the light".to_owned(), |o| {
-                        format!("blocked by '{o}'")
-                    })
-                };
-                let learner = match (s.blocked, s.by.clone().flatten()) {
-                    (true, Some(by)) => words(Some(&by)),
-                    (true, None) => "blocked (no blocker named)".to_owned(),
-                    (false, _) => words(None),
-                };
-                self.push(path, q("blocked"), learner, words(ours_by), step, why, true);
-                continue;
-            }
-            if let (Some(Some(by)), Some(o)) = (&s.by, ours_by)
-                && by != o
-                && !blocks(ctx, by, ours)
-            {
-                self.push(
-                    path,
-                    q("by"),
-                    format!("'{by}'"),
-                    format!("'{o}'"),
-                    step,
-                    None,
-                    true,
-                );
-            }
-            if let (Some(t), ShadowOutcomeRecord::Reaches { transmitted }) =
-                (s.transmitted, &ours.outcome)
-                && (t - transmitted).abs() > COLOR
-            {
-                let why = cast_agrees
-                    .then(|| terms::transmitted(ctx, s, t, ours, *transmitted))
-                    .flatten();
-                self.push(
-                    path,
-                    q("transmitted"),
-                    num(t),
-                    num(*transmitted),
-                    step,
-                    why,
-                    true,
-                );
-            }
+            (Some(Some(c)), None) => Some(self.extra_branch(at, c, child, step, agrees)),
+        }
+    }
+
+    /// A child the learner traced where raytree did not: tolerated (and said)
+    /// when raytree stopped for its depth, its weight or a zero coefficient,
+    /// a divergence after total internal reflection. Returns what it adds to
+    /// the parent's color. `agrees`: the parent's rays and hit agreed.
+    fn extra_branch(
+        &mut self,
+        at: &At,
+        c: &LearnerRay,
+        child: Child,
+        step: usize,
+        agrees: bool,
+    ) -> DVec3 {
+        let node = &self.ctx.tree().nodes[at.i];
+        let branch = match child {
+            Child::Reflected => &node.reflected,
+            Child::Refracted => &node.refracted,
+        };
+        let outcome = branch.as_ref().map(|b| b.outcome);
+        let why = NoChild::of(outcome);
+        let diagnosis = (outcome == Some(Branch::TotalInternalReflection) && agrees)
+            .then(|| diagnose::tir(self.ctx, at.i, Some(c.direction)));
+        let path = at.path.child(child.kind(), node.depth + 1);
+        let values = (Value::Spawned(None), Value::NotSpawned(Some(why)));
+        let mut said =
+            Difference::new(&path, step, Quantity::Ray, values.0, values.1).because(diagnosis);
+        said.divergence = !why.tolerated();
+        self.out.push(said);
+        let k = branch.as_ref().map_or(0.0, |b| b.coefficient);
+        if why.tolerated() {
+            k * c.color.unwrap_or(DVec3::ZERO)
+        } else {
+            DVec3::ZERO
+        }
+    }
+
+    /// Total internal reflection at the hit, diagnosed when the learner
+    /// found none and `agrees`.
+    fn tir(&mut self, at: &At, agrees: bool) {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let node = &ctx.tree().nodes[i];
+        let Some(tir) = l.tir else { return };
+        if node.hit.is_none() {
+            return;
+        }
+        let ours = node
+            .refracted
+            .as_ref()
+            .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
+        if tir != ours {
+            let why = (!tir && agrees).then(|| diagnose::tir(ctx, i, refracted_direction(l)));
+            let step = ctx.step(i, StepKind::Refract);
+            let values = (Value::Flag(tir), Value::Flag(ours));
+            self.push(at, step, Quantity::Tir, values, why);
+        }
+    }
+
+    /// The ray's color against raytree's plus `extra` (what the learner's
+    /// branches raytree cut off add), diagnosed when `agrees`.
+    fn color(&mut self, at: &At, extra: DVec3, agrees: bool) {
+        let (ctx, l, i) = (self.ctx, at.l, at.i);
+        let Some(c) = l.color else { return };
+        let expected = ctx.tree().nodes[i].color() + extra;
+        if !same_color(c, expected) {
+            // Consequences get no diagnosis: the sum is remade with
+            // raytree's k_rfl and k_rfa, which are the learner's only
+            // where the hit is.
+            let why = agrees.then(|| diagnose::color(ctx, l, i)).flatten();
+            let step = ctx.step(i, StepKind::Combine);
+            let values = (Value::Color(c), Value::Color(expected));
+            self.push(at, step, Quantity::Color, values, why);
         }
     }
 }
@@ -559,15 +489,16 @@ fn refracted_direction(l: &LearnerRay) -> Option<DVec3> {
 }
 
 /// Whether object `by` is opaque and meets raytree's shadow ray `ours`
-/// between the point and the light ([`before_light`]: 0 < t < its `t_max`, just short of the
-/// light, as raytree's own shadow test):
-/// where two opaque objects stand in the way, a tracer may name either.
-fn blocks(ctx: &Context, by: &str, ours: &crate::tree::ray_tree::ShadowRecord) -> bool {
+/// between the point and the light ([`before_light`]: 0 < t < its `t_max`,
+/// just short of the light, as raytree's own shadow test): where two opaque
+/// objects stand in the way, a tracer may name either.
+fn blocks(ctx: &Context, by: &str, ours: &ShadowRecord) -> bool {
     let Some(i) = ctx.scene.objects.iter().position(|o| o.name == by) else {
         return false;
     };
     ctx.scene.material_of(i).transparent == 0.0
-        && shadow_roots(ctx, i, ours)
+        && ctx
+            .shadow_roots(i, ours)
             .as_slice()
             .iter()
             .any(|&t| before_light(t, ours))

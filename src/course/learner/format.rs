@@ -84,9 +84,17 @@ pub enum Kind {
 pub const KINDS: [&str; 3] = ["primary", "reflected", "refracted"];
 
 impl Kind {
+    /// Every kind, in the order of [`KINDS`].
+    pub const ALL: [Kind; 3] = [Kind::Primary, Kind::Reflected, Kind::Refracted];
+
     /// Its name in the file.
     pub fn name(self) -> &'static str {
         KINDS[self as usize]
+    }
+
+    /// The kind of this name in the file, if any.
+    pub fn named(name: &str) -> Option<Kind> {
+        Kind::ALL.into_iter().find(|k| k.name() == name)
     }
 }
 

@@ -8,7 +8,7 @@ use std::fmt::Write;
 
 use serde_json::json;
 
-use crate::course::learner::whole_image::{Explained, explain, words};
+use crate::course::learner::mistakes::image::{Explained, explain};
 use crate::io::image::{Image, to_rgb8};
 use crate::io::image_diff::per_pixel;
 use crate::methods::Antialiasing;
@@ -186,13 +186,17 @@ impl ImageCheck {
             self.max
         );
         if let Some(e) = &self.explained {
-            for id in &e.ids {
-                let _ = writeln!(out, "{}.", words(id));
+            for m in &e.mistakes {
+                let _ = writeln!(out, "{}.", m.words());
             }
             let _ = writeln!(
                 out,
                 "With {} fixed, {} of {total} pixels would still be off{}",
-                if e.ids.len() == 1 { "that" } else { "those" },
+                if e.mistakes.len() == 1 {
+                    "that"
+                } else {
+                    "those"
+                },
                 e.off,
                 if e.off == 0 {
                     "."
@@ -245,7 +249,11 @@ impl ImageCheck {
         let mistakes: Vec<_> = self
             .explained
             .iter()
-            .flat_map(|e| e.ids.iter().map(|id| json!({"id": id, "words": words(id)})))
+            .flat_map(|e| {
+                e.mistakes
+                    .iter()
+                    .map(|m| json!({"id": m, "words": m.words()}))
+            })
             .collect();
         let doc = json!({
             "format": "raytree-image-check",

@@ -354,20 +354,16 @@ impl Walk {
         }
         let m = object(v, path, RAY_KEYS)?;
         let kind_path = at(path, "kind");
-        let kind = match string(&m["kind"], &kind_path)?.as_str() {
-            "primary" => Kind::Primary,
-            "reflected" => Kind::Reflected,
-            "refracted" => Kind::Refracted,
-            other => {
-                return fail(
-                    &kind_path,
-                    format!(
-                        "expected one of {}, found {}",
-                        KINDS.join(", "),
-                        quote(other, "\"")
-                    ),
-                );
-            }
+        let name = string(&m["kind"], &kind_path)?;
+        let Some(kind) = Kind::named(&name) else {
+            return fail(
+                &kind_path,
+                format!(
+                    "expected one of {}, found {}",
+                    KINDS.join(", "),
+                    quote(&name, "\"")
+                ),
+            );
         };
         let mut ray = LearnerRay::new(
             kind,

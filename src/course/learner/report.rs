@@ -1,7 +1,6 @@
-//! `raytree check SCENE --pixel X,Y LEARNER.json`: raytree traces the pixel,
-//! the learner's trace is compared with it ray by ray, and the report names
-//! the first divergence in the lecture's words (which ray, which quantity,
-//! both values, the step of `raytree trace --steps` where it arises, and the
+//! The report of `raytree check SCENE --pixel X,Y LEARNER.json`
+//! ([`crate::course::learner::check`]): the first divergence in the
+//! lecture's words (which ray, which quantity, both values, the step of `raytree trace --steps` where it arises, and the
 //! classic mistake when its numbers show one), then the rest briefly. The
 //! `--json` report is for autograders; its fields are documented in
 //! `docs/learner-trace.md` and stay stable within its version.
@@ -10,14 +9,7 @@ use std::fmt::Write as _;
 
 use serde_json::{Value, json};
 
-use crate::course::learner::compare::{Difference, compare};
-use crate::course::learner::format::LearnerTrace;
-use crate::course::learner::image::one_ray_per_pixel;
-use crate::course::learner::measure::Context;
-use crate::scene::Scene;
-use crate::scene::source::SceneSource;
-use crate::tree::document::TraceDocument;
-use crate::tree::record;
+use crate::course::learner::difference::{Difference, Quantity};
 
 /// The `format` of the JSON report.
 pub const REPORT_FORMAT: &str = "raytree-check-report";
@@ -38,52 +30,6 @@ pub struct Report {
     pub rays: (usize, usize),
     /// Every difference, in raytree's step order (divergences and notes).
     pub differences: Vec<Difference>,
-}
-
-/// Checks `learner` against raytree's trace of `pixel` in `scene`, traced as
-/// a learner's tracer does: one ray through the pixel's center. An error
-/// (a pixel outside the image, a trace of another pixel) is bad input.
-pub fn check(
-    scene: &Scene,
-    source: SceneSource,
-    pixel: (u32, u32),
-    learner: &LearnerTrace,
-) -> Result<Report, String> {
-    if let Some([x, y]) = learner.pixel
-        && (x, y) != pixel
-    {
-        return Err(format!(
-            "the learner trace is of pixel {x},{y}, and the pixel checked is {},{}",
-            pixel.0, pixel.1
-        ));
-    }
-    let trace = ours(scene, source, pixel)?;
-    let mut one = scene.clone();
-    one.settings = trace.settings;
-    let ctx = Context {
-        scene: &one,
-        trace: &trace,
-        pixel,
-    };
-    Ok(Report {
-        scene: trace.scene.file.clone(),
-        pixel,
-        size: (trace.settings.width, trace.settings.height),
-        rays: (learner.ray.count(), trace.samples[0].tree.nodes.len()),
-        differences: compare(&ctx, learner),
-    })
-}
-
-/// raytree's trace of `pixel` with one sample through its center, whatever
-/// the scene's sampling: what a learner's tracer makes.
-pub fn ours(
-    scene: &Scene,
-    source: SceneSource,
-    pixel: (u32, u32),
-) -> Result<TraceDocument, String> {
-    let mut one = scene.clone();
-    one.settings = one_ray_per_pixel(&scene.settings);
-    record::pixel(&one, source, pixel.0, pixel.1, None).map_err(|e| e.to_string())
 }
 
 impl Report {
@@ -109,7 +55,6 @@ impl Report {
             if self.rays.0 == 1 { "" } else { "s" },
             self.rays.1
         );
-        let notes: Vec<&Difference> = self.differences.iter().filter(|d| !d.divergence).collect();
         let mut rest = self.divergences();
         match rest.next() {
             None => {
@@ -119,34 +64,7 @@ impl Report {
                 );
             }
             Some(first) => {
-                let _ = writeln!(
-                    out,
-                    "first divergence, at step {} of `raytree trace {} --pixel {x},{y} --width {} --height {} --steps`:",
-                    first.step, self.scene, self.size.0, self.size.1
-                );
-                let _ = writeln!(out, "  ray:        {}", first.ray);
-                let _ = writeln!(out, "  quantity:   {}", first.quantity);
-                let _ = writeln!(out, "  yours:      {}", first.learner);
-                let _ = writeln!(out, "  raytree's:  {}", first.ours);
-                match &first.diagnosis {
-                    Some(d) => {
-                        let _ = writeln!(out, "  diagnosis:  {} [{}]", d.words, d.id);
-                        let _ = writeln!(out, "  lesson:     {}", d.lesson);
-                    }
-                    None => {
-                        let _ = writeln!(
-                            out,
-                            "  diagnosis:  none of the classic mistakes matches these numbers"
-                        );
-                        if first.ray == "primary" && first.quantity.starts_with("direction") {
-                            let _ = writeln!(
-                                out,
-                                "  note:       raytree's image is {}×{}: was yours traced at that size (--width, --height)?",
-                                self.size.0, self.size.1
-                            );
-                        }
-                    }
-                }
+                self.first_divergence(&mut out, first);
                 let rest: Vec<&Difference> = rest.collect();
                 if !rest.is_empty() {
                     let _ = writeln!(
@@ -160,6 +78,7 @@ impl Report {
                 }
             }
         }
+        let notes: Vec<&Difference> = self.differences.iter().filter(|d| !d.divergence).collect();
         if !notes.is_empty() {
             let _ = writeln!(out, "tolerated:");
             for d in notes {
@@ -167,6 +86,41 @@ impl Report {
             }
         }
         out
+    }
+
+    /// The first divergence in full: where, what, both values, and the
+    /// diagnosis (or, for a primary direction none explains, a question
+    /// about the image's size).
+    fn first_divergence(&self, out: &mut String, first: &Difference) {
+        let (x, y) = self.pixel;
+        let _ = writeln!(
+            out,
+            "first divergence, at step {} of `raytree trace {} --pixel {x},{y} --width {} --height {} --steps`:",
+            first.step, self.scene, self.size.0, self.size.1
+        );
+        let _ = writeln!(out, "  ray:        {}", first.ray);
+        let _ = writeln!(out, "  quantity:   {}", first.quantity);
+        let _ = writeln!(out, "  yours:      {}", first.learner);
+        let _ = writeln!(out, "  raytree's:  {}", first.ours);
+        match &first.diagnosis {
+            Some(d) => {
+                let _ = writeln!(out, "  diagnosis:  {} [{}]", d.words, d.id());
+                let _ = writeln!(out, "  lesson:     {}", d.lesson());
+            }
+            None => {
+                let _ = writeln!(
+                    out,
+                    "  diagnosis:  none of the classic mistakes matches these numbers"
+                );
+                if first.ray.is_primary() && first.quantity == Quantity::Direction {
+                    let _ = writeln!(
+                        out,
+                        "  note:       raytree's image is {}×{}: was yours traced at that size (--width, --height)?",
+                        self.size.0, self.size.1
+                    );
+                }
+            }
+        }
     }
 
     /// The report for an autograder (`--json`).
@@ -193,7 +147,7 @@ fn brief(d: &Difference) -> String {
     let why = d
         .diagnosis
         .as_ref()
-        .map_or(String::new(), |g| format!(" [{}]", g.id));
+        .map_or(String::new(), |g| format!(" [{}]", g.id()));
     format!(
         "step {:>3}  {}: {}: yours {}, raytree's {}{why}",
         d.step, d.ray, d.quantity, d.learner, d.ours
@@ -209,7 +163,7 @@ fn difference(d: &Difference) -> Value {
         "raytree": d.ours,
         "divergence": d.divergence,
         "diagnosis": d.diagnosis.as_ref().map(|g| json!({
-            "id": g.id, "lesson": g.lesson, "words": g.words,
+            "id": g.mistake, "lesson": g.lesson(), "words": g.words,
         })),
     })
 }

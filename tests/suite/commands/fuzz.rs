@@ -208,7 +208,7 @@ fn learner_works(learner: &raytree::course::learner::format::LearnerTrace) -> Re
         return Ok(());
     }
     let source = SceneSource::new(LEARNER_SCENE, &text);
-    match raytree::course::learner::report::check(&scene, source, pixel, learner) {
+    match raytree::course::learner::check::trace(&scene, source, pixel, learner) {
         Ok(report) => {
             let _ = (report.text(), report.json());
             Ok(())

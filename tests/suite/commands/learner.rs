@@ -8,8 +8,8 @@ use std::path::Path;
 
 use glam::DVec3;
 use raytree::course::learner::format::{LearnerRay, LearnerShadow, LearnerTrace};
-use raytree::course::learner::report::{self, Report};
-use raytree::course::learner::{read, reduce};
+use raytree::course::learner::report::Report;
+use raytree::course::learner::{check, read, reduce};
 use raytree::scene::Scene;
 use raytree::scene::source::{self, SceneSource};
 use raytree::shading::optics::{reflect, refract};
@@ -25,7 +25,7 @@ fn load(name: &str) -> (Scene, SceneSource) {
 /// raytree's trace of a pixel of the Whitted scene (640×480), and its reduction.
 fn whitted(x: u32, y: u32) -> (Scene, SceneSource, TraceDocument, LearnerTrace) {
     let (scene, src) = load("whitted.json");
-    let trace = report::ours(&scene, src.clone(), (x, y)).unwrap();
+    let trace = check::ours(&scene, src.clone(), (x, y)).unwrap();
     let learner = reduce::reduce(&trace).unwrap();
     (scene, src, trace, learner)
 }
@@ -33,7 +33,7 @@ fn whitted(x: u32, y: u32) -> (Scene, SceneSource, TraceDocument, LearnerTrace) 
 /// Checks `learner`, after a trip through its JSON and the strict reader.
 fn check(scene: &Scene, src: &SceneSource, px: (u32, u32), learner: &LearnerTrace) -> Report {
     let back = read::parse(&learner.to_json()).unwrap_or_else(|e| panic!("{e}"));
-    report::check(scene, src.clone(), px, &back).unwrap()
+    check::trace(scene, src.clone(), px, &back).unwrap()
 }
 
 /// The first divergence is `quantity` of `ray`, diagnosed as `id`.
@@ -42,20 +42,24 @@ fn first_is(report: &Report, ray: &str, quantity: &str, id: &str) {
         .divergences()
         .next()
         .unwrap_or_else(|| panic!("no divergence:\n{}", report.text()));
-    assert_eq!(first.ray, ray, "{}", report.text());
-    assert!(first.quantity.starts_with(quantity), "{}", report.text());
+    assert_eq!(first.ray.to_string(), ray, "{}", report.text());
+    assert!(
+        first.quantity.to_string().starts_with(quantity),
+        "{}",
+        report.text()
+    );
     let diagnosis = first
         .diagnosis
         .as_ref()
         .unwrap_or_else(|| panic!("no diagnosis:\n{}", report.text()));
-    assert_eq!(diagnosis.id, id, "{}", report.text());
-    assert!(diagnosis.lesson.starts_with("lessons/"));
+    assert_eq!(diagnosis.id(), id, "{}", report.text());
+    assert!(diagnosis.lesson().starts_with("lessons/"));
     assert!(
         Path::new(env!("CARGO_MANIFEST_DIR"))
-            .join(diagnosis.lesson)
+            .join(diagnosis.lesson())
             .is_dir(),
         "{}",
-        diagnosis.lesson
+        diagnosis.lesson()
     );
 }
 
@@ -88,7 +92,7 @@ fn raytree_checks_clean_against_itself_on_every_pixel_of_every_shipped_scene() {
         scene.settings.height = 24;
         for y in 0..24 {
             for x in 0..32 {
-                let trace = report::ours(&scene, src.clone(), (x, y)).unwrap();
+                let trace = check::ours(&scene, src.clone(), (x, y)).unwrap();
                 let learner = reduce::reduce(&trace).unwrap();
                 let r = check(&scene, &src, (x, y), &learner);
                 assert!(
@@ -165,7 +169,11 @@ fn a_primary_direction_unexplained_asks_about_the_image_size() {
     m.ray.direction = camera.pixel_ray(41.6, 20.9).dir * 3.0 + DVec3::new(0.0, 0.1, 0.0);
     let report = check(&scene, &src, (416, 209), &m);
     let first = report.divergences().next().unwrap();
-    assert!(first.quantity.starts_with("direction"), "{}", report.text());
+    assert!(
+        first.quantity.to_string().starts_with("direction"),
+        "{}",
+        report.text()
+    );
     assert_eq!(first.diagnosis, None, "{}", report.text());
     assert!(
         report.text().contains("raytree's image is 640×480"),
@@ -284,7 +292,7 @@ type Change<'a> = dyn Fn(DVec3, DVec3, DVec3, f64) -> (DVec3, DVec3, DVec3) + 'a
 fn phong_with_v_along_the_ray_or_a_vector_not_of_unit_length() {
     let (scene, src) = load("../lessons/07-phong/ball.json");
     let px = (135, 83);
-    let trace = report::ours(&scene, src.clone(), px).unwrap();
+    let trace = check::ours(&scene, src.clone(), px).unwrap();
     let learner = reduce::reduce(&trace).unwrap();
     let node = &trace.samples[0].tree.nodes[0];
     let (h, local) = (node.hit.as_ref().unwrap(), node.local.as_ref().unwrap());
@@ -452,7 +460,7 @@ fn a_wrong_local_color_does_not_blame_the_coefficients() {
     let report = check(&scene, &src, (120, 420), &m);
     let color = report
         .divergences()
-        .find(|d| d.quantity == "color")
+        .find(|d| d.quantity.to_string() == "color")
         .unwrap_or_else(|| panic!("{}", report.text()));
     assert_eq!(color.diagnosis, None, "{}", report.text());
 }
@@ -476,7 +484,7 @@ fn n_dot_l_not_clamped() {
         hash: String::new(),
     };
     let (px, k) = ((16, 12), 0);
-    let trace = report::ours(&scene, src.clone(), px).unwrap();
+    let trace = check::ours(&scene, src.clone(), px).unwrap();
     let mut m = reduce::reduce(&trace).unwrap();
     let node = &trace.samples[0].tree.nodes[0];
     let (h, local) = (node.hit.as_ref().unwrap(), node.local.as_ref().unwrap());
@@ -510,7 +518,7 @@ fn shadows_blocked_beyond_the_light() {
         hash: String::new(),
     };
     let px = (16, 14);
-    let trace = report::ours(&scene, src.clone(), px).unwrap();
+    let trace = check::ours(&scene, src.clone(), px).unwrap();
     let mut m = reduce::reduce(&trace).unwrap();
     assert_eq!(hit(&mut m.ray).object.as_deref(), Some("floor"));
     let s = &mut m.ray.shadows.as_mut().unwrap()[0];
@@ -560,7 +568,7 @@ fn a_shadow_ray_may_name_any_opaque_blocker_on_its_segment() {
     scene.settings.width = 22;
     scene.settings.height = 16;
     let px = (11, 11);
-    let trace = report::ours(&scene, src.clone(), px).unwrap();
+    let trace = check::ours(&scene, src.clone(), px).unwrap();
     let ours = reduce::reduce(&trace).unwrap();
     /// The `n`th shadow ray blocked by sphere1990, in the tree's order.
     fn nth<'r>(r: &'r mut LearnerRay, n: &mut usize) -> Option<&'r mut LearnerShadow> {
@@ -596,8 +604,8 @@ fn a_shadow_ray_may_name_any_opaque_blocker_on_its_segment() {
         match report.divergences().next() {
             None => clean += 1,
             Some(d) => {
-                assert!(d.quantity.ends_with(".by"), "{}", report.text());
-                assert_eq!(d.learner, "'sphere1590'", "{}", report.text());
+                assert!(d.quantity.to_string().ends_with(".by"), "{}", report.text());
+                assert_eq!(d.learner.to_string(), "'sphere1590'", "{}", report.text());
                 wrong += 1;
             }
         }
@@ -608,8 +616,12 @@ fn a_shadow_ray_may_name_any_opaque_blocker_on_its_segment() {
     nth(&mut floor.ray, &mut 0).unwrap().by = Some(Some("floor".into()));
     let report = check(&scene, &src, px, &floor);
     let first = report.divergences().next().expect("a divergence");
-    assert!(first.quantity.ends_with(".by"), "{}", report.text());
-    assert_eq!(first.learner, "'floor'", "{}", report.text());
+    assert!(
+        first.quantity.to_string().ends_with(".by"),
+        "{}",
+        report.text()
+    );
+    assert_eq!(first.learner.to_string(), "'floor'", "{}", report.text());
 }
 
 #[test]
@@ -618,7 +630,7 @@ fn a_missing_branch_is_a_divergence_and_a_cut_off_one_is_tolerated() {
     m.ray.reflected = Some(None);
     let r = check(&scene, &src, (416, 209), &m);
     assert_eq!(
-        r.divergences().next().unwrap().quantity,
+        r.divergences().next().unwrap().quantity.to_string(),
         "reflected",
         "{}",
         r.text()
@@ -692,7 +704,7 @@ fn a_flipped_tracer_s_consequences_carry_no_diagnosis() {
     let mut consequences = 0;
     for (x, y) in [(190, 175), (416, 209), (100, 60), (500, 400), (300, 330)] {
         let flipped = (x, scene.settings.height - 1 - y);
-        let mut m = reduce::reduce(&report::ours(&scene, src.clone(), flipped).unwrap()).unwrap();
+        let mut m = reduce::reduce(&check::ours(&scene, src.clone(), flipped).unwrap()).unwrap();
         m.pixel = None;
         let report = check(&scene, &src, (x, y), &m);
         first_is(&report, "primary", "direction", "rows-flipped");
@@ -710,10 +722,10 @@ fn a_flipped_tracer_s_consequences_carry_no_diagnosis() {
     assert!(consequences > 10, "{consequences} consequences");
 }
 
-#[test]
-fn bad_learner_files_are_one_line_and_exit_2() {
-    let scene =
-        std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json")).unwrap();
+/// Bad learner files, each with its name and what its one line says: made
+/// from a good trace of whitted.json's pixel 416,209, cut short, mistyped,
+/// out of range, or nested too deep.
+fn bad_learner_files() -> Vec<(&'static str, String, &'static str)> {
     let (_, _, _, m) = whitted(416, 209);
     let good = m.to_json();
     let deep = format!("{}{}", "[".repeat(1_000_000), "]".repeat(1_000_000));
@@ -722,7 +734,7 @@ fn bad_learner_files_are_one_line_and_exit_2() {
         nested.push_str(r#"{"kind":"reflected","origin":[0,0,0],"direction":[0,0,1],"reflected":"#);
     }
     nested.push_str(&format!("null{}}}", "}".repeat(70)));
-    let cases: Vec<(&str, String, &str)> = vec![
+    let cases: Vec<(&'static str, String, &'static str)> = vec![
         ("truncated", good[..good.len() / 2].to_owned(), ":"),
         ("empty", String::new(), "1:1: not JSON: the file ends early"),
         (
@@ -758,7 +770,14 @@ fn bad_learner_files_are_one_line_and_exit_2() {
             ":",
         ),
     ];
-    for (name, text, says) in cases {
+    cases
+}
+
+#[test]
+fn bad_learner_files_are_one_line_and_exit_2() {
+    let scene =
+        std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("scenes/whitted.json")).unwrap();
+    for (name, text, says) in bad_learner_files() {
         let start = std::time::Instant::now();
         let line = common_refused(name, &scene, text.as_bytes());
         assert!(
@@ -771,7 +790,12 @@ fn bad_learner_files_are_one_line_and_exit_2() {
             start.elapsed()
         );
     }
-    // A 1 GB file is refused from its size before a byte is read; a folder for what it is.
+}
+
+/// A 1 GB file is refused from its size before a byte is read; a folder for
+/// what it is: one line each, exit status 2.
+#[test]
+fn a_huge_learner_file_and_a_folder_are_refused_up_front() {
     let dir = tempfile::tempdir().unwrap();
     let big = dir.path().join("big.json");
     std::fs::File::create(&big)
@@ -867,7 +891,7 @@ fn the_schema_and_the_examples_agree_with_the_reader() {
         n += 1;
         let (scene, src) = load("whitted.json");
         let [x, y] = trace.pixel.unwrap();
-        let r = report::check(&scene, src, (x, y), &trace).unwrap();
+        let r = check::trace(&scene, src, (x, y), &trace).unwrap();
         assert!(r.agrees(), "{}:\n{}", path.display(), r.text());
     }
     assert!(n >= 2);
@@ -886,10 +910,16 @@ fn a_mistyped_light_and_an_unnamed_blocker_are_said_plainly() {
     shadows[0].light = format!("{name}y");
     let report = check(&scene, &src, (168, 120), &typo);
     let first = report.divergences().next().expect("a divergence");
-    assert_eq!(first.quantity, "shadows[0].light", "{}", report.text());
+    assert_eq!(
+        first.quantity.to_string(),
+        "shadows[0].light",
+        "{}",
+        report.text()
+    );
     assert!(
         first
             .learner
+            .to_string()
             .contains("the scene has no light of that name"),
         "{}",
         report.text()
@@ -901,8 +931,13 @@ fn a_mistyped_light_and_an_unnamed_blocker_are_said_plainly() {
     s.transmitted = None;
     let report = check(&scene, &src, (168, 120), &unnamed);
     let first = report.divergences().next().expect("a divergence");
-    assert_eq!(first.quantity, "shadows[0].blocked", "{}", report.text());
-    assert_eq!(first.learner, "blocked (no blocker named)");
+    assert_eq!(
+        first.quantity.to_string(),
+        "shadows[0].blocked",
+        "{}",
+        report.text()
+    );
+    assert_eq!(first.learner.to_string(), "blocked (no blocker named)");
 }
 
 /// `check` with neither mode names both, as a usage error (exit 2); a
@@ -924,6 +959,6 @@ fn neither_mode_names_both_and_a_scalar_coefficient_reads_as_written() {
     k.ray.k_rfl = Some(DVec3::splat(0.5));
     let report = check(&scene, &src, (200, 280), &k);
     let first = report.divergences().next().expect("a divergence");
-    assert_eq!(first.quantity, "k_rfl", "{}", report.text());
-    assert_eq!(first.learner, "0.5", "{}", report.text());
+    assert_eq!(first.quantity.to_string(), "k_rfl", "{}", report.text());
+    assert_eq!(first.learner.to_string(), "0.5", "{}", report.text());
 }

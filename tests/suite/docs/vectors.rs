@@ -5,7 +5,7 @@
 
 use std::path::Path;
 
-use raytree::course::vectors;
+use raytree::course::learner::vectors;
 
 #[test]
 fn lesson_vectors_are_current() {

@@ -13,7 +13,7 @@
 use std::path::Path;
 use std::process::{Command, Output};
 
-use raytree::course::learner::diagnose::MISTAKES;
+use raytree::course::learner::mistakes::Mistake;
 use serde_json::Value;
 
 use crate::tools::{Need, available};
@@ -40,6 +40,68 @@ fn said(out: &Output) -> String {
     )
 }
 
+/// Checks mutant `m` (written to `dir` with its unmutated solution): its
+/// report names its diagnosis at its ray as the first divergence, and the
+/// solution checks clean. Returns its reports, JSON and text.
+fn check_mutant(m: &Value, dir: &Path) -> Value {
+    let raytree = env!("CARGO_BIN_EXE_raytree");
+    let name = m["name"].as_str().unwrap();
+    let scene = m["scene"].as_str().unwrap();
+    let pixel = format!("{},{}", m["pixel"][0], m["pixel"][1]);
+    let file = dir.join(format!("{name}.json"));
+    let out = run(
+        raytree,
+        &[
+            "check",
+            scene,
+            "--pixel",
+            &pixel,
+            file.to_str().unwrap(),
+            "--json",
+        ],
+    );
+    assert_eq!(out.status.code(), Some(1), "{name}: {}", said(&out));
+    let report: Value = serde_json::from_slice(&out.stdout).unwrap();
+    let text = run(
+        raytree,
+        &["check", scene, "--pixel", &pixel, file.to_str().unwrap()],
+    );
+    let first = &report["first"];
+    assert_eq!(first["ray"], m["ray"], "{name}: {first:#}");
+    assert_eq!(
+        first["diagnosis"]["id"], m["diagnosis"],
+        "{name}: {first:#}"
+    );
+    let clean = dir.join(format!("{name}.clean.json"));
+    let unmutated = run(
+        raytree,
+        &["check", scene, "--pixel", &pixel, clean.to_str().unwrap()],
+    );
+    assert_eq!(
+        unmutated.status.code(),
+        Some(0),
+        "{name} unmutated: {}",
+        said(&unmutated)
+    );
+    serde_json::json!({
+        "json": String::from_utf8_lossy(&out.stdout),
+        "text": String::from_utf8_lossy(&text.stdout),
+    })
+}
+
+/// `made` is the committed file `committed` (`RAYTREE_BLESS=1` writes it).
+fn is_current(committed: &Path, made: &[u8], what: &str) {
+    if std::env::var_os("RAYTREE_BLESS").is_some() {
+        std::fs::write(committed, made).unwrap();
+    }
+    let now = std::fs::read(committed).unwrap_or_default();
+    assert!(
+        now == made,
+        "{} is stale{what}: RAYTREE_BLESS=1 cargo test --release every_mutant",
+        committed.display()
+    );
+}
+
 #[test]
 fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
     if !available("", &[Need::Python3], "runs the course's Python mutants") {
@@ -52,86 +114,30 @@ fn every_mutant_is_diagnosed_at_its_ray_and_the_solution_checks_clean() {
     let folder = dir.path().display().to_string();
     let out = run("python3", &[MUTANTS, "write", &folder]);
     assert!(out.status.success(), "{}", said(&out));
-    let raytree = env!("CARGO_BIN_EXE_raytree");
     let mut shown: Vec<String> = Vec::new();
     let mut reports = serde_json::Map::new();
     for m in &table {
         let name = m["name"].as_str().unwrap();
-        let scene = m["scene"].as_str().unwrap();
-        let pixel = format!("{},{}", m["pixel"][0], m["pixel"][1]);
-        let file = dir.path().join(format!("{name}.json"));
-        let out = run(
-            raytree,
-            &[
-                "check",
-                scene,
-                "--pixel",
-                &pixel,
-                file.to_str().unwrap(),
-                "--json",
-            ],
-        );
-        assert_eq!(out.status.code(), Some(1), "{name}: {}", said(&out));
-        let report: Value = serde_json::from_slice(&out.stdout).unwrap();
-        let text = run(
-            raytree,
-            &["check", scene, "--pixel", &pixel, file.to_str().unwrap()],
-        );
-        reports.insert(
-            name.to_owned(),
-            serde_json::json!({
-                "json": String::from_utf8_lossy(&out.stdout),
-                "text": String::from_utf8_lossy(&text.stdout),
-            }),
-        );
-        let first = &report["first"];
-        assert_eq!(first["ray"], m["ray"], "{name}: {first:#}");
-        assert_eq!(
-            first["diagnosis"]["id"], m["diagnosis"],
-            "{name}: {first:#}"
-        );
-        let clean = dir.path().join(format!("{name}.clean.json"));
-        let out = run(
-            raytree,
-            &["check", scene, "--pixel", &pixel, clean.to_str().unwrap()],
-        );
-        assert_eq!(
-            out.status.code(),
-            Some(0),
-            "{name} unmutated: {}",
-            said(&out)
-        );
+        reports.insert(name.to_owned(), check_mutant(m, dir.path()));
         // The book's mutant of this lesson, committed and current.
         if let Some(lesson) = m["lesson"].as_str() {
             let committed = root().join("lessons").join(lesson).join("mutant.json");
-            let made = std::fs::read(&file).unwrap();
-            if std::env::var_os("RAYTREE_BLESS").is_some() {
-                std::fs::write(&committed, &made).unwrap();
-            }
-            let now = std::fs::read(&committed).unwrap_or_default();
-            assert!(
-                now == made,
-                "{} is stale: RAYTREE_BLESS=1 cargo test --release every_mutant",
-                committed.display()
-            );
+            let made = std::fs::read(dir.path().join(format!("{name}.json"))).unwrap();
+            is_current(&committed, &made, "");
             shown.push(lesson[..2].to_owned());
         }
     }
-    let golden = root().join("tests/reports/mutants.json");
     let made = serde_json::to_string_pretty(&Value::Object(reports)).unwrap() + "\n";
-    if std::env::var_os("RAYTREE_BLESS").is_some() {
-        std::fs::write(&golden, &made).unwrap();
-    }
-    let now = std::fs::read_to_string(&golden).unwrap_or_default();
-    assert!(
-        now == made,
-        "{} is stale (a mutant's report changed): RAYTREE_BLESS=1 cargo test --release every_mutant",
-        golden.display()
+    is_current(
+        &root().join("tests/reports/mutants.json"),
+        made.as_bytes(),
+        " (a mutant's report changed)",
     );
     // No diagnosis without its mutant.
-    for (id, _) in MISTAKES {
+    for mistake in Mistake::ALL {
+        let id = mistake.id();
         assert!(
-            table.iter().any(|m| m["diagnosis"] == *id),
+            table.iter().any(|m| m["diagnosis"] == id),
             "{id}: no mutant shows it"
         );
     }

@@ -3,7 +3,8 @@
 //! chapter's length, shown under the chapter's heading and by `raytree
 //! lesson`; lesson 13 marked as going beyond the lecture.
 
-use raytree::course::{lesson, lesson_frame, vectors};
+use raytree::course::learner::vectors;
+use raytree::course::{lesson, lesson_frame};
 
 use super::run::root;
 

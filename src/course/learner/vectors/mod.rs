@@ -506,5 +506,4 @@ fn path(nodes: &[RayNode], mut i: usize) -> String {
 }
 
 #[cfg(test)]
-#[path = "vectors_tests.rs"]
 mod tests;

@@ -4,36 +4,78 @@
 //! pixel's trace agrees while nearly every pixel is off; the check has to see
 //! them in the image itself. Each is recognised by making raytree's own image
 //! with the mistake (and every combination of them) and finding the learner's
-//! clearly closer to it than to raytree's.
+//! clearly closer to it than to raytree's. Their ids are the image report's,
+//! a contract as the pixel report's are.
+
+use serde::{Serialize, Serializer};
 
 use crate::io::image::Image;
 use crate::io::image_diff::per_pixel;
 
-/// The whole-image mistakes: the id, and what to fix in one plain sentence.
-pub const IMAGE_MISTAKES: [(&str, &str); 4] = [
-    (
-        "no-srgb",
-        "your image holds the linear colors written as bytes (v·255): encode each channel with the sRGB transfer function before writing it, as learner_io.srgb8 does",
-    ),
-    (
-        "rows-flipped",
-        "your image is upside down: write its rows from the top (y down), or map row y to r = rows − 1 − y in the camera",
-    ),
-    (
-        "columns-mirrored",
-        "your image is mirrored left to right: column x must map to c = x, from the left",
-    ),
-    (
-        "channels-swapped",
-        "your image has red and blue swapped: write each pixel's channels as red, green, blue",
-    ),
-];
+/// A mistake in writing the whole image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ImageMistake {
+    /// The linear colors written as bytes, without the sRGB encoding.
+    NoSrgb,
+    /// The image upside down.
+    RowsFlipped,
+    /// The image mirrored left to right.
+    ColumnsMirrored,
+    /// Red and blue swapped.
+    ChannelsSwapped,
+}
+
+impl ImageMistake {
+    /// Every one, in the order a report names them (and of the bits of a set
+    /// of them: bit `1 << i` is `ALL[i]`).
+    pub const ALL: [ImageMistake; 4] = [
+        ImageMistake::NoSrgb,
+        ImageMistake::RowsFlipped,
+        ImageMistake::ColumnsMirrored,
+        ImageMistake::ChannelsSwapped,
+    ];
+
+    /// Its stable id for autograders.
+    pub fn id(self) -> &'static str {
+        match self {
+            ImageMistake::NoSrgb => "no-srgb",
+            ImageMistake::RowsFlipped => "rows-flipped",
+            ImageMistake::ColumnsMirrored => "columns-mirrored",
+            ImageMistake::ChannelsSwapped => "channels-swapped",
+        }
+    }
+
+    /// What to fix, in one plain sentence.
+    pub fn words(self) -> &'static str {
+        match self {
+            ImageMistake::NoSrgb => {
+                "your image holds the linear colors written as bytes (v·255): encode each channel with the sRGB transfer function before writing it, as learner_io.srgb8 does"
+            }
+            ImageMistake::RowsFlipped => {
+                "your image is upside down: write its rows from the top (y down), or map row y to r = rows − 1 − y in the camera"
+            }
+            ImageMistake::ColumnsMirrored => {
+                "your image is mirrored left to right: column x must map to c = x, from the left"
+            }
+            ImageMistake::ChannelsSwapped => {
+                "your image has red and blue swapped: write each pixel's channels as red, green, blue"
+            }
+        }
+    }
+}
+
+/// Written as its id.
+impl Serialize for ImageMistake {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.serialize_str(self.id())
+    }
+}
 
 /// What the whole-image mistakes explain of a learner's image.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Explained {
-    /// The mistakes, in the order of [`IMAGE_MISTAKES`], as ids.
-    pub ids: Vec<&'static str>,
+    /// The mistakes, in the order of [`ImageMistake::ALL`].
+    pub mistakes: Vec<ImageMistake>,
     /// How many pixels would still be off with them fixed.
     pub off: u64,
 }
@@ -74,9 +116,9 @@ pub fn explain(yours: &[u8], ours: &Image, tolerance: u8, off: u64) -> Option<Ex
     }
     let (set, count) = best?;
     (count < off && count * 4 <= off).then(|| Explained {
-        ids: (0..4)
+        mistakes: (0..4)
             .filter(|i| set & (1 << i) != 0)
-            .map(|i| IMAGE_MISTAKES[i].0)
+            .map(|i| ImageMistake::ALL[i])
             .collect(),
         off: count,
     })
@@ -106,14 +148,6 @@ fn with_mistakes(rgb: &[u8], w: usize, h: usize, set: u32) -> Vec<u8> {
         }
     }
     out
-}
-
-/// The words for `ids`, one sentence each.
-pub fn words(id: &str) -> &'static str {
-    IMAGE_MISTAKES
-        .iter()
-        .find(|(i, _)| *i == id)
-        .map_or("", |(_, w)| w)
 }
 
 #[cfg(test)]
@@ -165,22 +199,20 @@ mod tests {
             .flat_map(|c| [c.x, c.y, c.z])
             .map(|v| (v * 255.0) as u8)
             .collect();
-        let cases: [(Vec<u8>, &[&str]); 5] = [
-            (truncated.clone(), &["no-srgb"]),
-            (with_mistakes(&srgb, w, h, 2), &["rows-flipped"]),
-            (with_mistakes(&srgb, w, h, 4), &["columns-mirrored"]),
-            (with_mistakes(&srgb, w, h, 8), &["channels-swapped"]),
-            (
-                with_mistakes(&truncated, w, h, 2),
-                &["no-srgb", "rows-flipped"],
-            ),
+        use ImageMistake::*;
+        let cases: [(Vec<u8>, &[ImageMistake]); 5] = [
+            (truncated.clone(), &[NoSrgb]),
+            (with_mistakes(&srgb, w, h, 2), &[RowsFlipped]),
+            (with_mistakes(&srgb, w, h, 4), &[ColumnsMirrored]),
+            (with_mistakes(&srgb, w, h, 8), &[ChannelsSwapped]),
+            (with_mistakes(&truncated, w, h, 2), &[NoSrgb, RowsFlipped]),
         ];
-        for (yours, ids) in cases {
+        for (yours, mistakes) in cases {
             let as_is = off(&yours, &img);
-            assert!(as_is > 0, "{ids:?}: the mistake changes the image");
+            assert!(as_is > 0, "{mistakes:?}: the mistake changes the image");
             let found = explain(&yours, &img, 1, as_is).expect("explained");
-            assert_eq!(found.ids, ids);
-            assert_eq!(found.off, 0, "{ids:?}");
+            assert_eq!(found.mistakes, mistakes);
+            assert_eq!(found.off, 0, "{mistakes:?}");
         }
     }
 

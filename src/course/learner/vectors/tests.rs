@@ -1,6 +1,6 @@
-//! Tests of the test vectors (`src/course/vectors.rs`): how a lesson's rays
-//! are read, how a map is written, when a grazing ray widens the tolerance,
-//! and that each case's expected output is what its formula makes of its inputs.
+//! Tests of the test vectors: how a lesson's rays are read, how a map is
+//! written, when a grazing ray widens the tolerance, and that each case's
+//! expected output is what its formula makes of its inputs.
 
 use super::*;
 
