@@ -7,27 +7,19 @@
 //! way out (quit, error, panic, and SIGINT, SIGTERM, SIGHUP or SIGQUIT through
 //! the binary's handler). A frame is drawn only when something changed
 //! ([`Frames`]).
+//!
+//! `app/` is the state and what keys do to it, `state/` its owned parts,
+//! `panes/` the four panes drawn from it (gitui's `components/` in spirit).
 
 mod app;
 mod colors;
-mod details;
-mod diagram_pane;
-mod features;
-mod find;
 mod fit;
-mod image_pane;
-mod image_view;
 mod keymap;
 mod layout;
-mod preview;
-mod reveal;
-mod selection;
-mod stepping;
+mod panes;
+mod state;
 mod tick;
-mod traced_scene;
-mod tree_pane;
 mod ui;
-mod whatif;
 
 use std::io::{IsTerminal, Stdout, stdout};
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -46,17 +38,19 @@ use ratatui::layout::Rect;
 
 pub use app::{App, Prompt};
 pub use colors::detect as color_support;
-pub use features::{FeatureMap, Features, scan as scan_features, scan_with as scan_features_with};
-pub use find::{Overlay, Seek};
 pub use keymap::{Action, Binding, KEYS, Key};
 pub use layout::{Areas, Pane};
-pub use preview::{Picture, Window, render_picture};
-pub use reveal::{Progress, Revealed, call_stack};
-pub use selection::{Focus, Item};
-pub use stepping::Guided;
+pub use state::features::{
+    FeatureMap, Features, scan as scan_features, scan_with as scan_features_with,
+};
+pub use state::find::{Overlay, Seek};
+pub use state::preview::{Picture, Window, render_picture};
+pub use state::reveal::{RayRevealed, Revealed, call_stack};
+pub use state::selection::{Focus, Item};
+pub use state::stepping::Guided;
+pub use state::whatif::Before;
 pub use tick::tick;
 pub use ui::{GLYPHS, draw};
-pub use whatif::Before;
 
 static ACTIVE: AtomicBool = AtomicBool::new(false);
 

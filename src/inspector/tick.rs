@@ -7,7 +7,8 @@
 use ratatui::layout::Rect;
 
 use super::app::App;
-use super::ui::{details_top, panes};
+use super::panes::details::details_top;
+use super::ui::panes;
 
 /// Brings `app` up to date for a frame on a terminal of `area`.
 pub fn tick(app: &mut App, area: Rect) {

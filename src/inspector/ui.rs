@@ -1,6 +1,6 @@
 //! Drawing the inspector, reading its state and changing none of it: the
-//! panes where `layout.rs` puts them, the guide, step and status lines, and
-//! the help.
+//! panes (each drawn by its module in `panes/`) where `layout.rs` puts them,
+//! the guide, step and status lines, and the help.
 
 use ratatui::Frame;
 use ratatui::layout::Rect;
@@ -9,14 +9,15 @@ use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Borders, Clear, Paragraph};
 
 use super::app::{App, Prompt};
-use super::diagram_pane::draw_diagram;
 use super::fit::{cut, wrap};
-use super::image_pane::{ImagePane, legend};
 use super::keymap::KEYS;
 use super::layout::Panes;
-use super::reveal::call_stack;
-use super::selection::Focus;
-use super::tree_pane::draw_tree;
+use super::panes::details::draw_details;
+use super::panes::diagram::draw_diagram;
+use super::panes::image::{ImagePane, legend};
+use super::panes::tree::draw_tree;
+use super::state::reveal::call_stack;
+use super::state::selection::Focus;
 use crate::views::text::describe;
 
 /// What the glyphs and colors mean, for the help.
@@ -263,63 +264,6 @@ fn status_text(app: &App, width: u16) -> Line<'static> {
         )),
         usize::from(width),
     )
-}
-
-/// The selected ray's numbers, wrapped to the pane `area` (border included),
-/// and how many lines fit.
-fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) {
-    let inner_width = usize::from(area.width.saturating_sub(2));
-    let lines = wrap(super::details::details(app, tc), inner_width);
-    (lines, usize::from(area.height.saturating_sub(2)))
-}
-
-/// The first line of the numbers shown in `area`: the scroll, kept in range.
-/// Stepping, the newest lines are at the bottom, so a scroll past the end
-/// shows the end.
-pub(super) fn details_top(app: &App, area: Rect) -> usize {
-    let (lines, visible) = detail_lines(app, area, app.truecolor());
-    usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible))
-}
-
-/// Draws the selected ray's numbers from the first line [`details_top`] gives.
-fn draw_details(frame: &mut Frame, app: &App, area: Rect, tc: bool, other: &str) {
-    let inner_width = usize::from(area.width.saturating_sub(2));
-    let (lines, visible) = detail_lines(app, area, tc);
-    let top = usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible));
-    let below = lines.len().saturating_sub(top + visible);
-    let title = if lines.len() > visible {
-        let arrows = format!(
-            "{}{}",
-            if top > 0 { "↑" } else { "" },
-            if below > 0 { "↓" } else { "" }
-        );
-        let (from, to, of) = (top + 1, (top + visible).min(lines.len()), lines.len());
-        fitting_title(
-            &[
-                format!(" selected ray {arrows} lines {from}–{to} of {of} (PgUp/PgDn){other} "),
-                format!(" selected ray {arrows} {from}–{to}/{of} PgUp/PgDn{other} "),
-                format!(" ray {arrows} {from}–{to}/{of}{other} "),
-            ],
-            inner_width,
-        )
-    } else {
-        fitting_title(&[format!(" selected ray{other} ")], inner_width)
-    };
-    let block = Block::default().borders(Borders::ALL).title(title);
-    let shown: Vec<Line> = lines.into_iter().skip(top).take(visible).collect();
-    frame.render_widget(Paragraph::new(shown).block(block), area);
-}
-
-/// The first of `titles` that fits `width` columns, else the last one cut with a marker.
-fn fitting_title(titles: &[String], width: usize) -> Line<'static> {
-    let fits = titles.iter().find(|t| t.chars().count() <= width);
-    match fits {
-        Some(t) => Line::from(t.clone()),
-        None => cut(
-            Line::from(titles.last().cloned().unwrap_or_default()),
-            width,
-        ),
-    }
 }
 
 /// The help: every key and what the glyphs and colors mean, as wide as the

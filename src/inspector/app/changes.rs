@@ -8,9 +8,9 @@ use std::time::Instant;
 
 use super::App;
 use crate::course::guide::Script;
-use crate::inspector::selection::Item;
-use crate::inspector::stepping::{Guided, Stepping};
-use crate::inspector::whatif::Before;
+use crate::inspector::state::selection::Item;
+use crate::inspector::state::stepping::{Guided, Stepping};
+use crate::inspector::state::whatif::Before;
 use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::StepKind;

@@ -5,8 +5,8 @@ use ratatui::crossterm::event::{KeyCode, KeyEvent, MouseButton, MouseEvent, Mous
 
 use super::{App, Prompt};
 use crate::inspector::keymap::{self, Action};
-use crate::inspector::selection::{Focus, Item};
-use crate::inspector::whatif;
+use crate::inspector::state::selection::{Focus, Item};
+use crate::inspector::state::whatif;
 
 impl App {
     /// Handles one key press: the prompt or the help take it while open,

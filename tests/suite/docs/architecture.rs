@@ -234,7 +234,7 @@ fn the_checker_sees_a_breach() {
     assert_eq!(folder_of("src/views/text.rs"), "views");
     assert_eq!(folder_of("src/methods.rs"), "methods");
     assert!(excepted(
-        "src/inspector/preview.rs",
+        "src/inspector/state/preview.rs",
         "crate::trace::tracer::Tracer"
     ));
     assert!(!excepted(

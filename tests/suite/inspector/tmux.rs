@@ -34,6 +34,7 @@ pub struct Session {
 const SESSION: &str = "raytree";
 
 impl Session {
+    /// Starts `command` in a new `width` × `height` session on its own server.
     pub fn start(name: &str, width: u16, height: u16, command: &str) -> Session {
         static STARTED: AtomicUsize = AtomicUsize::new(0);
         let mut session = Session {
@@ -79,10 +80,12 @@ impl Session {
         String::from_utf8_lossy(&out.stdout).into_owned()
     }
 
+    /// Types `keys` (tmux key names, or `-l` and literal text).
     pub fn send(&self, keys: &[&str]) {
         self.run(&[&["send-keys", "-t", SESSION][..], keys].concat());
     }
 
+    /// The screen as text.
     pub fn capture(&self) -> String {
         self.run(&["capture-pane", "-t", SESSION, "-p"])
     }
@@ -194,10 +197,22 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
         "env -u COLORTERM ",
         "scenes/whitted.json",
     );
-    let send = |keys: &[&str]| session.send(keys);
-    let capture = || session.capture();
-    let fail = |what: &str, screen: &str| -> ! { panic!("{what}:\n{screen}") };
+    starts_in_256_colors_within_80_columns(&session);
+    finds_a_total_internal_reflection(&session);
+    steps_to_the_total_internal_reflection(&session);
+    steps_on_to_the_full_color_sum(&session);
+    asks_what_if_the_glass_had_index_1(&session);
+    asks_before_quitting_with_an_unsaved_edit(&session, &exit_file);
+}
 
+/// Fails the test with `what` went wrong and the screen it went wrong on.
+fn fail(what: &str, screen: &str) -> ! {
+    panic!("{what}:\n{screen}")
+}
+
+/// The inspector starts, says it falls back to 256 colors without
+/// COLORTERM, and no line is wider than the terminal.
+fn starts_in_256_colors_within_80_columns(session: &Session) {
     let screen = session.wait_for(|s| s.contains("ray tree") && s.contains("pixel "));
     if !screen.contains("ray tree") {
         fail("the inspector did not start", &screen);
@@ -213,19 +228,25 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
             fail("a line is wider than the terminal", &screen);
         }
     }
-    // One key to a total internal reflection.
-    send(&["f"]);
+}
+
+/// One key to a total internal reflection.
+fn finds_a_total_internal_reflection(session: &Session) {
+    session.send(&["f"]);
     let screen = session.wait_for(|s| s.contains("found: total internal reflection"));
     if !screen.contains("found: total internal reflection") {
         fail("f finds a total internal reflection", &screen);
     }
-    // Step to it: the tree grows one ray at a time.
+}
+
+/// Steps to the total internal reflection: the tree grows one ray at a time.
+fn steps_to_the_total_internal_reflection(session: &Session) {
     let mut rays_seen = Vec::new();
     let mut screen = String::new();
     for _ in 0..400 {
-        send(&["n"]);
+        session.send(&["n"]);
         std::thread::sleep(Duration::from_millis(15));
-        screen = capture();
+        screen = session.capture();
         rays_seen.push(screen.matches(" d").count());
         if screen.contains("no refracted ray: total internal reflection") {
             break;
@@ -237,11 +258,15 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
     if !rays_seen.windows(2).any(|w| w[1] > w[0]) || rays_seen[0] >= *rays_seen.last().unwrap() {
         fail("the tree grows while stepping", &screen);
     }
-    // On to the last step, where the primary ray's color is summed.
+}
+
+/// On to the last step, where the primary ray's color is summed in full.
+fn steps_on_to_the_full_color_sum(session: &Session) {
+    let mut screen = String::new();
     for _ in 0..400 {
-        send(&["n"]);
+        session.send(&["n"]);
         std::thread::sleep(Duration::from_millis(15));
-        screen = capture();
+        screen = session.capture();
         let at_end = screen
             .lines()
             .find(|l| l.starts_with("step "))
@@ -259,21 +284,28 @@ fn a_learner_at_80x24_finds_steps_through_and_edits_a_total_internal_reflection(
     {
         fail("the full color sum is in view at the last step", &screen);
     }
-    // What if the glass had index 1.0?
-    send(&["x", "m"]);
-    send(&["-l", "ior=1.0"]);
-    send(&["Enter"]);
+}
+
+/// What if the glass had index 1.0? The pane shows before → after.
+fn asks_what_if_the_glass_had_index_1(session: &Session) {
+    session.send(&["x", "m"]);
+    session.send(&["-l", "ior=1.0"]);
+    session.send(&["Enter"]);
     let screen = session.wait_for(|s| s.contains("what if"));
     if !(screen.contains("what if") && screen.contains("ior=1.0") && screen.contains(" → ")) {
         fail("the edit shows before → after", &screen);
     }
-    // The edit is not saved: the first q asks, the second quits.
-    send(&["q"]);
+}
+
+/// The edit is not saved: the first q asks, the second quits, and the main
+/// screen is back.
+fn asks_before_quitting_with_an_unsaved_edit(session: &Session, exit_file: &Path) {
+    session.send(&["q"]);
     let screen = session.wait_for(|s| s.contains("not saved"));
     if !screen.contains("q again quits") {
         fail("q with an unsaved edit asks first", &screen);
     }
-    let (status, after) = quit(&session, &exit_file);
+    let (status, after) = quit(session, exit_file);
     assert_eq!(status.trim(), "0", "raytree inspect exit status");
     assert!(
         !after.contains("ray tree"),

@@ -17,7 +17,7 @@ use crate::tree::record::{self, TraceError};
 
 /// A scene and what its tracers share.
 #[derive(Clone, Debug)]
-pub(super) struct TracedScene {
+pub(in crate::inspector) struct TracedScene {
     scene: Arc<Scene>,
     prepared: Prepared,
     objects: Arc<[ObjectEntry]>,

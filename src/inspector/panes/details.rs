@@ -1,14 +1,19 @@
 //! The selected ray's numbers, as the inspector's detail pane lists them: its
 //! origin, direction and tests, its hit with the side and indices, each shadow
-//! ray, and the color sum term by term.
+//! ray, and the color sum term by term; drawn from the line scrolled to, under
+//! a title that fits the pane.
 
+use ratatui::Frame;
+use ratatui::layout::Rect;
 use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
+use ratatui::widgets::{Block, Borders, Paragraph};
 
-use super::app::App;
-use super::colors::swatch;
-use super::reveal::Progress;
-use super::selection::Item;
+use crate::inspector::app::App;
+use crate::inspector::colors::swatch;
+use crate::inspector::fit::{cut, wrap};
+use crate::inspector::state::reveal::RayRevealed;
+use crate::inspector::state::selection::Item;
 use crate::methods::Accel;
 use crate::tree::ray_tree::RayNode;
 use crate::tree::steps::StepKind;
@@ -21,10 +26,73 @@ use crate::views::text::searched;
 /// each with the lecture's arithmetic written out. Browsing, the results come
 /// first; stepping, only what the algorithm has computed so far, in the order
 /// it computed it, so the pane reads like a debugger's.
-pub(super) fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
+fn details(app: &App, tc: bool) -> Vec<Line<'static>> {
     let mut out = what_if(app, tc);
     out.extend(selected(app, tc));
     out
+}
+
+/// The selected ray's numbers, wrapped to the pane `area` (border included),
+/// and how many lines fit.
+fn detail_lines(app: &App, area: Rect, tc: bool) -> (Vec<Line<'static>>, usize) {
+    let inner_width = usize::from(area.width.saturating_sub(2));
+    let lines = wrap(details(app, tc), inner_width);
+    (lines, usize::from(area.height.saturating_sub(2)))
+}
+
+/// The first line of the numbers shown in `area`: the scroll, kept in range.
+/// Stepping, the newest lines are at the bottom, so a scroll past the end
+/// shows the end.
+pub(in crate::inspector) fn details_top(app: &App, area: Rect) -> usize {
+    let (lines, visible) = detail_lines(app, area, app.truecolor());
+    usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible))
+}
+
+/// Draws the selected ray's numbers from the first line [`details_top`] gives.
+pub(in crate::inspector) fn draw_details(
+    frame: &mut Frame,
+    app: &App,
+    area: Rect,
+    tc: bool,
+    other: &str,
+) {
+    let inner_width = usize::from(area.width.saturating_sub(2));
+    let (lines, visible) = detail_lines(app, area, tc);
+    let top = usize::from(app.selection().scroll()).min(lines.len().saturating_sub(visible));
+    let below = lines.len().saturating_sub(top + visible);
+    let title = if lines.len() > visible {
+        let arrows = format!(
+            "{}{}",
+            if top > 0 { "↑" } else { "" },
+            if below > 0 { "↓" } else { "" }
+        );
+        let (from, to, of) = (top + 1, (top + visible).min(lines.len()), lines.len());
+        fitting_title(
+            &[
+                format!(" selected ray {arrows} lines {from}–{to} of {of} (PgUp/PgDn){other} "),
+                format!(" selected ray {arrows} {from}–{to}/{of} PgUp/PgDn{other} "),
+                format!(" ray {arrows} {from}–{to}/{of}{other} "),
+            ],
+            inner_width,
+        )
+    } else {
+        fitting_title(&[format!(" selected ray{other} ")], inner_width)
+    };
+    let block = Block::default().borders(Borders::ALL).title(title);
+    let shown: Vec<Line> = lines.into_iter().skip(top).take(visible).collect();
+    frame.render_widget(Paragraph::new(shown).block(block), area);
+}
+
+/// The first of `titles` that fits `width` columns, else the last one cut with a marker.
+fn fitting_title(titles: &[String], width: usize) -> Line<'static> {
+    let fits = titles.iter().find(|t| t.chars().count() <= width);
+    match fits {
+        Some(t) => Line::from(t.clone()),
+        None => cut(
+            Line::from(titles.last().cloned().unwrap_or_default()),
+            width,
+        ),
+    }
 }
 
 /// With edits in effect: what they are, and the pixel's color and ray count
@@ -118,7 +186,7 @@ fn selected(app: &App, tc: bool) -> Vec<Line<'static>> {
     out.extend(tests(&node.tests, |t| {
         explained(explain::test(t, kind_of(t), node))
     }));
-    out.extend(working(node, Progress::DONE, tc));
+    out.extend(working(node, RayRevealed::DONE, tc));
     out
 }
 
@@ -214,7 +282,7 @@ fn hit_details(node: &RayNode, structure: Accel) -> Vec<Line<'static>> {
 /// How the hit's color was worked out, as far as `p` has come: the shadow
 /// rays, the Phong terms, the reflected and refracted directions with their
 /// formulas and, stepping, the color sum once it is returned.
-fn working(node: &RayNode, p: Progress, tc: bool) -> Vec<Line<'static>> {
+fn working(node: &RayNode, p: RayRevealed, tc: bool) -> Vec<Line<'static>> {
     let Some(h) = &node.hit else {
         return Vec::new();
     };
@@ -226,7 +294,7 @@ fn working(node: &RayNode, p: Progress, tc: bool) -> Vec<Line<'static>> {
         .collect();
     if let Some(local) = node.local.as_ref().filter(|_| p.local) {
         let (headline, arithmetic) = explain::local(local);
-        if p != Progress::DONE {
+        if p != RayRevealed::DONE {
             out.push(Line::from(headline));
         }
         out.extend(
@@ -243,7 +311,7 @@ fn working(node: &RayNode, p: Progress, tc: bool) -> Vec<Line<'static>> {
             out.push(Line::from(format!("refract: {line}")));
         }
     }
-    if p.color && p != Progress::DONE {
+    if p.color && p != RayRevealed::DONE {
         out.extend(color_sum(node, tc).into_iter().skip(1));
     }
     out

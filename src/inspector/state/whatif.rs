@@ -231,7 +231,7 @@ pub struct Before {
 /// The what-if edits in effect, the scene file's JSON they were made to, the
 /// scene as loaded (to undo them) and the pixel before the first.
 #[derive(Debug, Default)]
-pub(super) struct WhatIf {
+pub(in crate::inspector) struct WhatIf {
     /// The scene file's JSON without its objects (read on the first edit).
     json: Option<Value>,
     /// The scene as loaded, while edits are in effect.

@@ -43,7 +43,7 @@ impl Item {
 
 /// The tree pane's view to give back after the pixel is traced again: the
 /// sample, the open rays, the selected line.
-pub(super) struct View {
+pub(in crate::inspector) struct View {
     sample: usize,
     expanded: BTreeSet<usize>,
     line: usize,
@@ -51,7 +51,7 @@ pub(super) struct View {
 
 /// The pixel, its trace, the focus and the tree pane's cursor.
 #[derive(Debug, Default)]
-pub(super) struct Selection {
+pub(in crate::inspector) struct Selection {
     /// In the full image's coordinates (as `raytree trace --pixel`).
     pixel: (u32, u32),
     /// The pixel's trace.

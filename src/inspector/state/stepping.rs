@@ -11,7 +11,7 @@ use crate::tree::steps::Step;
 /// The algorithm's steps for the tree shown, and the current one once
 /// stepping has started.
 #[derive(Debug, Default)]
-pub(super) struct Stepping {
+pub(in crate::inspector) struct Stepping {
     steps: Vec<Step>,
     at: Option<usize>,
 }

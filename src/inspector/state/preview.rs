@@ -129,7 +129,7 @@ pub struct Worker {
 
 impl Worker {
     /// Starts the worker thread for `scene`, whose hierarchy it shares.
-    pub(super) fn start(scene: TracedScene) -> Self {
+    pub(in crate::inspector) fn start(scene: TracedScene) -> Self {
         let (requests, inbox) = channel::<Window>();
         let (outbox, pictures) = channel();
         // Each request bumps `latest`; a pass in progress stops when it moves on.

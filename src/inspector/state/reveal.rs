@@ -13,12 +13,12 @@ pub struct Revealed {
     /// The camera stage has run (the pixel's primary ray is known).
     pub camera: bool,
     /// Per node: how many of its stages are done.
-    pub nodes: Vec<Progress>,
+    pub nodes: Vec<RayRevealed>,
 }
 
 /// How far one ray's computation has come.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Progress {
+pub struct RayRevealed {
     /// Spawned.
     pub spawned: bool,
     /// Boxes or cells of the scene's structure visited so far.
@@ -39,9 +39,9 @@ pub struct Progress {
     pub color: bool,
 }
 
-impl Progress {
+impl RayRevealed {
     /// A computation that is over: every stage done (counts saturated).
-    pub const DONE: Progress = Progress {
+    pub const DONE: RayRevealed = RayRevealed {
         spawned: true,
         visits: usize::MAX,
         tests: usize::MAX,
@@ -59,7 +59,7 @@ impl Revealed {
     pub fn all(tree: &RayTree) -> Self {
         Self {
             camera: true,
-            nodes: vec![Progress::DONE; tree.nodes.len()],
+            nodes: vec![RayRevealed::DONE; tree.nodes.len()],
         }
     }
 
@@ -67,7 +67,7 @@ impl Revealed {
     pub fn until(tree: &RayTree, steps: &[Step], current: usize) -> Self {
         let mut r = Self {
             camera: false,
-            nodes: vec![Progress::default(); tree.nodes.len()],
+            nodes: vec![RayRevealed::default(); tree.nodes.len()],
         };
         for step in steps.iter().take(current + 1) {
             let Some(p) = r.nodes.get_mut(step.node) else {
@@ -90,7 +90,7 @@ impl Revealed {
     }
 
     /// Node `n`'s progress (nothing, for an index past the tree).
-    pub fn node(&self, n: usize) -> Progress {
+    pub fn node(&self, n: usize) -> RayRevealed {
         self.nodes.get(n).copied().unwrap_or_default()
     }
 }

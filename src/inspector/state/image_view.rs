@@ -9,7 +9,7 @@ use super::preview::{Picture, Window, Worker};
 use super::traced_scene::TracedScene;
 
 /// The zoom, the picture and the worker.
-pub(super) struct ImageView {
+pub(in crate::inspector) struct ImageView {
     /// 0 fits the whole image; each level doubles the magnification.
     zoom: u32,
     /// What the pane shows, once traced.

@@ -7,10 +7,10 @@ use ratatui::layout::Rect;
 use ratatui::style::Color;
 use ratatui::widgets::{Paragraph, Widget, Wrap};
 
-use super::app::App;
-use super::colors::term_color;
-use super::features::Features;
-use super::find::Overlay;
+use crate::inspector::app::App;
+use crate::inspector::colors::term_color;
+use crate::inspector::state::features::Features;
+use crate::inspector::state::find::Overlay;
 
 /// The color of marked pixels: apart from the magenta cursor and most renders.
 const MARK: [u8; 3] = [0, 230, 255];

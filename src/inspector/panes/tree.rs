@@ -8,16 +8,16 @@ use ratatui::style::{Modifier, Style};
 use ratatui::text::{Line, Span};
 use ratatui::widgets::{Block, Paragraph};
 
-use super::app::App;
-use super::colors::{swatch, term_color};
-use super::fit::cut;
-use super::reveal::Progress;
-use super::selection::Item;
 use crate::figure::pen::palette;
+use crate::inspector::app::App;
+use crate::inspector::colors::{swatch, term_color};
+use crate::inspector::fit::cut;
+use crate::inspector::state::reveal::RayRevealed;
+use crate::inspector::state::selection::Item;
 use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
 use crate::views::numbers::num;
 
-fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<Span<'static>> {
+fn ray_line(app: &App, node: &RayNode, n: usize, p: RayRevealed, tc: bool) -> Vec<Span<'static>> {
     let what = match &node.hit {
         _ if !p.hit => "testing…".to_owned(),
         Some(h) => format!("'{}'", h.name),
@@ -52,7 +52,8 @@ fn ray_line(app: &App, node: &RayNode, n: usize, p: Progress, tc: bool) -> Vec<S
     spans
 }
 
-pub fn shadow_text(node: &RayNode, k: usize) -> String {
+/// A shadow ray's line: the light it goes to and what it met.
+fn shadow_text(node: &RayNode, k: usize) -> String {
     let s = &node.shadow_rays[k];
     let what = match &s.outcome {
         ShadowOutcomeRecord::FacesAway => "faces away".to_owned(),

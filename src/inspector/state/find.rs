@@ -99,7 +99,7 @@ impl Overlay {
 /// once, the overlay appears and a pending `f` jumps when the scan arrives.
 /// Without a worker (tests) it scans here and now.
 #[derive(Debug, Default)]
-pub(super) struct Finding {
+pub(in crate::inspector) struct Finding {
     features: Option<FeatureMap>,
     /// The scan under way on its own thread, and when it started.
     scanning: Option<(JoinHandle<FeatureMap>, Instant)>,
@@ -113,7 +113,7 @@ pub(super) struct Finding {
 }
 
 /// What a finished scan brought.
-pub(super) struct Arrived {
+pub(in crate::inspector) struct Arrived {
     /// The pixel a pending `f` finds, if one was pending and something was found.
     pub found: Option<(u32, u32)>,
     /// What to tell.

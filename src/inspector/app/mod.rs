@@ -11,15 +11,15 @@ mod keys;
 
 use std::time::Duration;
 
-use super::find::Finding;
-use super::image_view::ImageView;
 use super::layout::{Areas, Screen};
-use super::preview::{Picture, Window, Worker};
-use super::reveal::Revealed;
-use super::selection::{Focus, Item, Selection};
-use super::stepping::{Guided, Stepping};
-use super::traced_scene::TracedScene;
-use super::whatif::WhatIf;
+use super::state::find::Finding;
+use super::state::image_view::ImageView;
+use super::state::preview::{Picture, Window, Worker};
+use super::state::reveal::Revealed;
+use super::state::selection::{Focus, Item, Selection};
+use super::state::stepping::{Guided, Stepping};
+use super::state::traced_scene::TracedScene;
+use super::state::whatif::WhatIf;
 use crate::scene::Scene;
 use crate::scene::source::SceneSource;
 use crate::tree::document::TraceDocument;
@@ -86,7 +86,8 @@ impl App {
         let scene = TracedScene::new(scene);
         let start = start.unwrap_or_else(|| {
             // A coarse scan (every 8th pixel) is quick even for large images.
-            super::features::scan_with(&scene.tracer(), 8).most_interesting(s.width, s.height)
+            super::state::features::scan_with(&scene.tracer(), 8)
+                .most_interesting(s.width, s.height)
         });
         let worker = live.then(|| Worker::start(scene.clone()));
         let mut app = Self::empty(Some(scene), source, worker);
@@ -335,7 +336,7 @@ impl App {
     pub fn render_picture_now(&mut self) {
         if let Some(scene) = &self.scene {
             let picture =
-                super::preview::render_picture(&scene.tracer(), self.window(), 1, &|| false);
+                super::state::preview::render_picture(&scene.tracer(), self.window(), 1, &|| false);
             self.image.set_picture(picture);
         }
     }

@@ -11,11 +11,11 @@ use ratatui::text::Span;
 use ratatui::widgets::canvas::{Canvas, Context, Line as CanvasLine, Points};
 use ratatui::widgets::{Block, Borders, Paragraph};
 
-use super::app::App;
-use super::colors::term_color;
 use crate::figure::clip::{clip_line, clip_segment};
 use crate::figure::pen::Rgb;
 use crate::figure::pen::palette;
+use crate::inspector::app::App;
+use crate::inspector::colors::term_color;
 use crate::views::diagram::layout::Layout as DiagramLayout;
 use crate::views::diagram::projection::Outline;
 
