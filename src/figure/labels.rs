@@ -34,6 +34,15 @@ impl PxRect {
         }
     }
 
+    /// The plot frame of `fig`: the box every label stays inside.
+    pub fn frame_of(fig: &Figure) -> Self {
+        let f = fig.frame();
+        Self {
+            min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
+            max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
+        }
+    }
+
     /// Whether the two boxes share any area.
     pub fn overlaps(&self, o: &PxRect) -> bool {
         self.min.x < o.max.x && o.min.x < self.max.x && self.min.y < o.max.y && o.min.y < self.max.y
@@ -317,84 +326,132 @@ fn best_spot(
 /// spot's, so it is taken only where no ordinary spot is free.
 const LAST_RESORT: usize = 1_000_000;
 
+/// A candidate spot: the baseline, the point it names, the leader's start
+/// when it stands off, and whether it is a last resort.
+type Spot = (DVec2, DVec2, Option<DVec2>, bool);
+
 /// Candidate baselines for a label, nearest first: touching the target, then
 /// farther out with a leader from the box's nearest point; each says whether
 /// it is a last resort.
-fn spots(label: &Label) -> Vec<(DVec2, DVec2, Option<DVec2>, bool)> {
+fn spots(label: &Label) -> Vec<Spot> {
     let (w, below) = extent(&label.text, label.size);
-    let s = f64::from(label.size);
-    // Baseline offset that puts the text box's center at a given point.
-    let centered = |c: DVec2| DVec2::new(c.x - w / 2.0, c.y + MIDDLE * s - below / 2.0);
-    // The box center that makes the box touch a point from direction `dir`, `gap` away.
-    let touching = |p: DVec2, dir: DVec2, gap: f64| {
-        let half = DVec2::new(w / 2.0 + 2.0, HALF_HEIGHT * s + below / 2.0 + 2.0);
+    let text = TextBox {
+        w,
+        below,
+        s: f64::from(label.size),
+    };
+    match &label.target {
+        Target::Point { at, clearance } => text.around_point(*at, *clearance),
+        Target::Outline { points, inside } => text.around_outline(points, *inside),
+    }
+}
+
+/// A label's text box: its width, its depth below the baseline and its font
+/// size, which place it around what it names.
+struct TextBox {
+    w: f64,
+    below: f64,
+    s: f64,
+}
+
+impl TextBox {
+    /// The baseline that puts the text box's center at `c`.
+    fn centered(&self, c: DVec2) -> DVec2 {
+        DVec2::new(c.x - self.w / 2.0, c.y + MIDDLE * self.s - self.below / 2.0)
+    }
+
+    /// The box center that makes the box touch `p` from direction `dir`, `gap` away.
+    fn touching(&self, p: DVec2, dir: DVec2, gap: f64) -> DVec2 {
+        let half = DVec2::new(
+            self.w / 2.0 + 2.0,
+            HALF_HEIGHT * self.s + self.below / 2.0 + 2.0,
+        );
         // How far along `dir` the box's edge is from its center.
         let reach = (half.x / dir.x.abs().max(1e-9)).min(half.y / dir.y.abs().max(1e-9));
         p + dir * (reach + gap)
-    };
-    let dirs: Vec<DVec2> = (0..16)
-        .map(|k| {
-            let a = std::f64::consts::TAU * f64::from(k) / 16.0;
-            DVec2::new(a.cos(), -a.sin())
-        })
-        .collect();
-    let mut out = Vec::new();
-    match &label.target {
-        Target::Point { at, clearance } => {
-            // The cartographers' eight positions first: the point at a corner or
-            // the middle of an edge of the label, upper right preferred.
-            let g = clearance + 2.0;
-            let (top, bottom) = (at.y - g - DESCENT * s - below, at.y + g + ASCENT * s);
-            let (right, left, middle) = (at.x + g, at.x - g - w, at.x - w / 2.0);
-            let level = at.y + MIDDLE * s - below / 2.0;
-            let classic = [
-                (right, top),
-                (right, bottom),
-                (left, top),
-                (left, bottom),
-                (right, level),
-                (left, level),
-                (middle, top),
-                (middle, bottom),
-            ];
-            out.extend(classic.map(|(x, y)| (DVec2::new(x, y), *at, None, false)));
-            // Then all round, touching, and farther out in rings a label's
-            // height or more apart, with a leader.
-            for far in [0.0, 1.5, 3.0, 5.0, 8.0, 12.0] {
-                for &d in &dirs {
-                    let c = touching(*at, d, clearance + 2.0 + far * s);
-                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, *at));
-                    out.push((centered(c), *at, leader, false));
-                }
-            }
-        }
-        Target::Outline { points, inside } => {
-            for far in [0.0, 18.0, 40.0, 80.0, 140.0] {
-                for &p in points {
-                    let d = (p - *inside).normalize_or(DVec2::Y);
-                    let c = touching(p, d, 1.0 + far);
-                    let leader = (far > 0.0).then(|| nearest_on_box(c, w, s, below, p));
-                    out.push((centered(c), p, leader, false));
-                }
-            }
-            // Last resorts, for a small outline in a crowd: every direction
-            // from the point of the outline farthest along it, out to a third
-            // of a figure, so a leader can find a gap between the labels
-            // around it.
-            for far in [40.0, 80.0, 140.0, 220.0, 320.0] {
-                for &d in &dirs {
-                    let Some(&p) = points.iter().max_by(|a, b| a.dot(d).total_cmp(&b.dot(d)))
-                    else {
-                        continue;
-                    };
-                    let c = touching(p, d, 1.0 + far);
-                    let leader = Some(nearest_on_box(c, w, s, below, p));
-                    out.push((centered(c), p, leader, true));
-                }
-            }
-        }
     }
-    out
+
+    /// The box centered at `c` led to `p`: its spot, the leader from the
+    /// box's point nearest `p`.
+    fn led(&self, c: DVec2, p: DVec2, last_resort: bool) -> Spot {
+        let leader = nearest_on_box(c, self.w, self.s, self.below, p);
+        (self.centered(c), p, Some(leader), last_resort)
+    }
+
+    /// Around a point: the cartographers' eight positions first (the point at
+    /// a corner or the middle of an edge of the label, upper right
+    /// preferred), then all round, touching, and farther out in rings a
+    /// label's height or more apart, with a leader.
+    fn around_point(&self, at: DVec2, clearance: f64) -> Vec<Spot> {
+        let (w, below, s) = (self.w, self.below, self.s);
+        let g = clearance + 2.0;
+        let (top, bottom) = (at.y - g - DESCENT * s - below, at.y + g + ASCENT * s);
+        let (right, left, middle) = (at.x + g, at.x - g - w, at.x - w / 2.0);
+        let level = at.y + MIDDLE * s - below / 2.0;
+        let classic = [
+            (right, top),
+            (right, bottom),
+            (left, top),
+            (left, bottom),
+            (right, level),
+            (left, level),
+            (middle, top),
+            (middle, bottom),
+        ];
+        let mut out: Vec<Spot> = classic
+            .map(|(x, y)| (DVec2::new(x, y), at, None, false))
+            .into();
+        let dirs = directions();
+        for far in [0.0, 1.5, 3.0, 5.0, 8.0, 12.0] {
+            for &d in &dirs {
+                let c = self.touching(at, d, clearance + 2.0 + far * s);
+                out.push(if far > 0.0 {
+                    self.led(c, at, false)
+                } else {
+                    (self.centered(c), at, None, false)
+                });
+            }
+        }
+        out
+    }
+
+    /// Around an outline: just outside each of its points, then farther out
+    /// with a leader; last, for a small outline in a crowd, every direction
+    /// from the point of the outline farthest along it, out to a third of a
+    /// figure, so a leader can find a gap between the labels around it.
+    fn around_outline(&self, points: &[DVec2], inside: DVec2) -> Vec<Spot> {
+        let mut out = Vec::new();
+        for far in [0.0, 18.0, 40.0, 80.0, 140.0] {
+            for &p in points {
+                let d = (p - inside).normalize_or(DVec2::Y);
+                let c = self.touching(p, d, 1.0 + far);
+                out.push(if far > 0.0 {
+                    self.led(c, p, false)
+                } else {
+                    (self.centered(c), p, None, false)
+                });
+            }
+        }
+        let dirs = directions();
+        for far in [40.0, 80.0, 140.0, 220.0, 320.0] {
+            for &d in &dirs {
+                let Some(&p) = points.iter().max_by(|a, b| a.dot(d).total_cmp(&b.dot(d))) else {
+                    continue;
+                };
+                let c = self.touching(p, d, 1.0 + far);
+                out.push(self.led(c, p, true));
+            }
+        }
+        out
+    }
+}
+
+/// Sixteen directions round, from +x, turning up (pixels, y down).
+fn directions() -> [DVec2; 16] {
+    std::array::from_fn(|k| {
+        let a = std::f64::consts::TAU * k as f64 / 16.0;
+        DVec2::new(a.cos(), -a.sin())
+    })
 }
 
 /// Whether segments `a → b` and `c → d` cross (touching ends count).

@@ -12,7 +12,7 @@
 use crate::scene::Scene;
 use crate::scene::quote::quote;
 use crate::scene::source::SceneSource;
-use crate::tree::document::TraceDocument;
+use crate::tree::document::{ObjectEntry, TraceDocument};
 use crate::tree::ray_tree::{BranchRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
 
 /// Most rays (tree nodes, all samples together) a trace document may hold:
@@ -136,6 +136,7 @@ fn tree(trace: &TraceDocument, tree: &RayTree, at: &str) -> Result<(), String> {
                 }
             }
         }
+        tests(trace, node, &here)?;
         names(trace, node, &here)?;
     }
     match claimed.iter().skip(1).position(|&c| !c) {
@@ -168,9 +169,14 @@ fn link(nodes: &[RayNode], p: usize, c: usize, kind: RayKind, what: &str) -> Res
     Ok(())
 }
 
-/// Every object and light a node names exists, under that name.
-fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String> {
-    let object = |i: usize, name: &str, at: String| match trace.objects.get(i) {
+/// The object `i` of `trace`, named `name` where `at` names it.
+fn object<'t>(
+    trace: &'t TraceDocument,
+    i: usize,
+    name: &str,
+    at: String,
+) -> Result<&'t ObjectEntry, String> {
+    match trace.objects.get(i) {
         Some(o) if o.name == name => Ok(o),
         Some(o) => Err(format!(
             "{at}: object {i} is {}, not {}",
@@ -181,8 +187,12 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
             "{at}: object {i} does not exist (the trace lists {})",
             trace.objects.len()
         )),
-    };
-    let light = |i: usize, name: &str, at: String| match trace.lights.get(i) {
+    }
+}
+
+/// The light `i` of `trace`, named `name` where `at` names it.
+fn light(trace: &TraceDocument, i: usize, name: &str, at: String) -> Result<(), String> {
+    match trace.lights.get(i) {
         Some(l) if l.name == name => Ok(()),
         Some(l) => Err(format!(
             "{at}: light {i} is {}, not {}",
@@ -193,7 +203,12 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
             "{at}: light {i} does not exist (the trace lists {})",
             trace.lights.len()
         )),
-    };
+    }
+}
+
+/// A node's tests name existing objects, each once, and its box visits sit
+/// among them in the order the search made them.
+fn tests(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String> {
     // Every structure tests an object at most once a ray (the grid and the
     // trees through a mailbox), so a longer list is no trace raytree wrote.
     if node.tests.len() > trace.objects.len() {
@@ -205,7 +220,12 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
     }
     let mut seen = vec![false; trace.objects.len()];
     for (k, test) in node.tests.iter().enumerate() {
-        object(test.object, &test.name, format!("{here}.tests[{k}].object"))?;
+        object(
+            trace,
+            test.object,
+            &test.name,
+            format!("{here}.tests[{k}].object"),
+        )?;
         if std::mem::replace(&mut seen[test.object], true) {
             return Err(format!(
                 "{here}.tests[{k}].object: '{}' is tested a second time (a ray tests each object at most once)",
@@ -213,7 +233,6 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
             ));
         }
     }
-    // The visits sit among the tests in the order the search made them.
     let mut before = 0;
     for (k, visit) in node.boxes.iter().enumerate() {
         if visit.after_tests < before || visit.after_tests > node.tests.len() {
@@ -225,8 +244,14 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
         }
         before = visit.after_tests;
     }
+    Ok(())
+}
+
+/// Every object and light a node's hit, shadow rays and local color name
+/// exists, under that name.
+fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String> {
     if let Some(hit) = &node.hit {
-        let o = object(hit.object, &hit.name, format!("{here}.hit.object"))?;
+        let o = object(trace, hit.object, &hit.name, format!("{here}.hit.object"))?;
         if o.material != hit.material {
             return Err(format!(
                 "{here}.hit.material: object {} is made of {}",
@@ -236,24 +261,18 @@ fn names(trace: &TraceDocument, node: &RayNode, here: &str) -> Result<(), String
         }
     }
     for (k, shadow) in node.shadow_rays.iter().enumerate() {
-        light(
-            shadow.light,
-            &shadow.name,
-            format!("{here}.shadow_rays[{k}].light"),
-        )?;
+        let at = format!("{here}.shadow_rays[{k}]");
+        light(trace, shadow.light, &shadow.name, format!("{at}.light"))?;
         if let ShadowOutcomeRecord::Blocked {
             object: i, name, ..
         } = &shadow.outcome
         {
-            object(*i, name, format!("{here}.shadow_rays[{k}].outcome.object"))?;
+            object(trace, *i, name, format!("{at}.outcome.object"))?;
         }
     }
     for (k, term) in node.local.iter().flat_map(|l| l.lights.iter()).enumerate() {
-        light(
-            term.light,
-            &term.name,
-            format!("{here}.local.lights[{k}].light"),
-        )?;
+        let at = format!("{here}.local.lights[{k}].light");
+        light(trace, term.light, &term.name, at)?;
     }
     Ok(())
 }

@@ -231,11 +231,7 @@ fn draw_points(
             clearance,
         )
     });
-    let f = fig.frame();
-    let frame = PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    };
+    let frame = PxRect::frame_of(fig);
     let placed = place(labels.collect(), &avoid, &lines, frame);
     for placed in &placed {
         placed.draw(fig, 1.0);

@@ -10,7 +10,7 @@ use glam::{DVec2, DVec3};
 
 use crate::figure::canvas::Figure;
 use crate::figure::labels::{self, Label, Placed, PxRect, Target};
-use crate::figure::pen::{Pen, palette};
+use crate::figure::pen::{Pen, Rgb, palette};
 use crate::tree::ray_tree::HitRecord;
 use crate::views::numbers::{degrees, num, vec3};
 
@@ -99,148 +99,21 @@ pub fn draw_with_labels(
         0.0,
     );
     let (c, v) = in_plane(&p);
-    let ink = palette::INK;
-    let text = 15.0;
-    // Every arrow drawn, for the labels to keep off: (tail, head).
-    let mut arrows: Vec<[DVec2; 2]> = Vec::new();
-    let mut arrow = |fig: &mut Figure, a: DVec2, b: DVec2, pen: Pen| {
-        fig.arrow(a, b, pen);
-        arrows.push([a, b]);
-    };
-    let mut lines: Vec<[DVec2; 2]> = Vec::new();
-    for center in [DVec2::ZERO, DVec2::new(RIGHT, 0.0)] {
-        // The surface: its tangent line, the inside shaded below it.
-        let (l, r) = (center - DVec2::new(1.3, 0.0), center + DVec2::new(1.3, 0.0));
-        fig.polygon(
-            &[l, r, r - DVec2::new(0.0, 0.4), l - DVec2::new(0.0, 0.4)],
-            Some((palette::OBJECT_FILL, 255)),
-            None,
-        );
-        fig.line(l, r, Pen::solid(palette::OBJECT, 1.5));
-        lines.push([l, r]);
-        arrow(
-            &mut fig,
-            center,
-            center + DVec2::Y,
-            Pen::solid(palette::NORMAL, 2.5),
-        );
-        fig.dot(center, 4.0, ink, None);
-    }
-    // Left: c arrives, v leaves, the angles from n.
-    let incoming = Pen::solid(palette::PRIMARY, 2.5);
-    let outgoing = Pen::solid(palette::REFLECTED, 2.5);
-    arrow(&mut fig, -c, DVec2::ZERO, incoming);
-    arrow(&mut fig, DVec2::ZERO, v, outgoing);
     let theta = (-p.n_dot_c).clamp(-1.0, 1.0).acos().to_degrees();
-    let radius = 0.28 * fig.scale();
-    let arc = Pen::solid(ink, 1.5);
-    fig.arc(DVec2::ZERO, radius, DVec2::Y, (-c).normalize(), arc);
-    fig.arc(DVec2::ZERO, radius * 0.85, DVec2::Y, v.normalize(), arc);
-    // Right: c = along + across, head to tail, down to the surface and along
-    // it; v = across − along, along the surface and back up.
-    let o = DVec2::new(RIGHT, 0.0);
-    let (across, along) = (DVec2::new(c.x, 0.0), DVec2::new(0.0, c.y));
-    let part = |color| Pen::dashed(color, 2.5);
-    let (along_pen, across_pen) = (part(palette::NORMAL), part(palette::SHADOW_REACHES));
-    arrow(&mut fig, o - c, o, Pen::solid(palette::PRIMARY, 1.5));
-    arrow(&mut fig, o - c, o - c + along, along_pen);
-    arrow(&mut fig, o - c + along, o, across_pen);
-    arrow(&mut fig, o, o + v, Pen::solid(palette::REFLECTED, 1.5));
-    arrow(&mut fig, o, o + across, across_pen);
-    arrow(&mut fig, o + across, o + v, along_pen);
-    // The labels, most important first, each at what it names; on the right
-    // each part's name with its value under it.
-    let small = text - 2.0;
-    let label = |words: String, size: f32, color, at: DVec2, clearance: f64| {
-        Label::at_point(words, size, color, fig.to_px(at), clearance)
+    let mut sketch = Sketch {
+        fig,
+        arrows: Vec::new(),
+        lines: Vec::new(),
     };
-    // Just above the arcs, either side of n: each angle on its own side.
-    let above = DVec2::new(0.0, 0.46);
-    let side = |dx: f64| Target::Point {
-        at: fig.to_px(above) + DVec2::new(dx, 0.0),
-        clearance: 1.0,
-    };
-    let mut requests = vec![
-        label(name.to_owned(), text - 1.0, ink, DVec2::ZERO, 5.0),
-        label("n".to_owned(), text, palette::NORMAL, DVec2::Y, 6.0),
-        label("c".to_owned(), text, palette::PRIMARY, -c, 4.0),
-        label("v".to_owned(), text, palette::REFLECTED, v, 7.0),
-        Label {
-            target: side(-5.0),
-            ..label(format!("θᵢ = {}", degrees(theta)), text, ink, above, 0.0)
-        },
-        Label {
-            target: side(5.0),
-            ..label(format!("θᵣ = {}", degrees(theta)), text, ink, above, 0.0)
-        },
-        label("n".to_owned(), text, palette::NORMAL, o + DVec2::Y, 6.0),
-    ];
-    // The parts first, their sums after: v can take a leader from afar.
-    requests.extend([
-        label(
-            format!("c\n{}", vec3(p.c)),
-            small,
-            palette::PRIMARY,
-            o - c,
-            4.0,
-        ),
-        label(
-            format!("across n, kept: c − (n·c)·n\n{}", vec3(p.across)),
-            small,
-            ink,
-            o - across * 0.5,
-            7.0,
-        ),
-        label(
-            format!("flipped: −(n·c)·n\nn·c = {}", num(p.n_dot_c)),
-            small,
-            ink,
-            o + across - along * 0.5,
-            7.0,
-        ),
-        label(
-            format!("along n: (n·c)·n\n{}", vec3(p.along)),
-            small,
-            ink,
-            o - c + along * 0.5,
-            7.0,
-        ),
-        label(
-            format!("v = c − 2(n·c)·n\n{}", vec3(p.v)),
-            small,
-            palette::REFLECTED,
-            o + v,
-            7.0,
-        ),
-    ]);
-    let f = fig.frame();
-    let frame = PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    };
-    // Arrowheads and the hit points stay visible; the arrows, the surfaces
-    // and the arcs (as chords) are lines a label would rather not cover.
-    let mut blocked: Vec<PxRect> = arrows
-        .iter()
-        .map(|[_, b]| PxRect::around(fig.to_px(*b), 6.0))
-        .collect();
-    blocked.extend([DVec2::ZERO, o].map(|h| PxRect::around(fig.to_px(h), 5.0)));
-    let chords = |to: DVec2, r: f64| {
-        let (a0, a1) = (DVec2::Y.to_angle(), to.to_angle());
-        (0..6).map(move |k| {
-            let at = |k: u32| DVec2::from_angle(a0 + (a1 - a0) * f64::from(k) / 6.0) * r;
-            [at(k), at(k + 1)]
-        })
-    };
-    let r = radius / fig.scale();
-    lines.extend(arrows.iter().copied());
-    lines.extend(chords((-c).normalize(), r).chain(chords(v.normalize(), r * 0.85)));
-    // Crossing an arrow costs more than a leader: the arrows are the figure.
-    let weighted: Vec<([DVec2; 2], usize)> = lines
-        .iter()
-        .map(|[a, b]| ([fig.to_px(*a), fig.to_px(*b)], 4))
-        .collect();
+    sketch.surfaces();
+    let radius = sketch.reflection(c, v);
+    sketch.split(c, v);
+    let mut requests = hit_labels(&sketch.fig, name, c, v, theta);
+    requests.extend(part_labels(&sketch.fig, &p, c, v));
+    let frame = PxRect::frame_of(&sketch.fig);
+    let (blocked, weighted) = sketch.kept_clear(c, v, radius);
     let (placed, left_out) = labels::place_all(requests, &blocked, &weighted, frame);
+    let mut fig = sketch.fig;
     for l in &placed {
         l.draw(&mut fig, 1.0);
     }
@@ -256,6 +129,193 @@ pub fn draw_with_labels(
         left_out,
         frame,
     })
+}
+
+/// The size of the figure's names; the parts' values are a little smaller.
+const TEXT: f32 = 15.0;
+
+/// The figure as it is drawn, with every arrow and line kept for the labels
+/// to keep off.
+struct Sketch {
+    fig: Figure,
+    /// Every arrow drawn: (tail, head).
+    arrows: Vec<[DVec2; 2]>,
+    /// The surfaces' lines.
+    lines: Vec<[DVec2; 2]>,
+}
+
+impl Sketch {
+    fn arrow(&mut self, a: DVec2, b: DVec2, pen: Pen) {
+        self.fig.arrow(a, b, pen);
+        self.arrows.push([a, b]);
+    }
+
+    /// At both panels' hit points: the surface's tangent line, the inside
+    /// shaded below it, and the normal n.
+    fn surfaces(&mut self) {
+        for center in [DVec2::ZERO, DVec2::new(RIGHT, 0.0)] {
+            let (l, r) = (center - DVec2::new(1.3, 0.0), center + DVec2::new(1.3, 0.0));
+            self.fig.polygon(
+                &[l, r, r - DVec2::new(0.0, 0.4), l - DVec2::new(0.0, 0.4)],
+                Some((palette::OBJECT_FILL, 255)),
+                None,
+            );
+            self.fig.line(l, r, Pen::solid(palette::OBJECT, 1.5));
+            self.lines.push([l, r]);
+            self.arrow(center, center + DVec2::Y, Pen::solid(palette::NORMAL, 2.5));
+            self.fig.dot(center, 4.0, palette::INK, None);
+        }
+    }
+
+    /// Left: c arrives, v leaves, the arcs of their angles from n. Returns
+    /// the arcs' radius (pixels).
+    fn reflection(&mut self, c: DVec2, v: DVec2) -> f64 {
+        self.arrow(-c, DVec2::ZERO, Pen::solid(palette::PRIMARY, 2.5));
+        self.arrow(DVec2::ZERO, v, Pen::solid(palette::REFLECTED, 2.5));
+        let radius = 0.28 * self.fig.scale();
+        let arc = Pen::solid(palette::INK, 1.5);
+        self.fig
+            .arc(DVec2::ZERO, radius, DVec2::Y, (-c).normalize(), arc);
+        self.fig
+            .arc(DVec2::ZERO, radius * 0.85, DVec2::Y, v.normalize(), arc);
+        radius
+    }
+
+    /// Right: c = along + across, head to tail, down to the surface and along
+    /// it; v = across − along, along the surface and back up.
+    fn split(&mut self, c: DVec2, v: DVec2) {
+        let o = DVec2::new(RIGHT, 0.0);
+        let (across, along) = (DVec2::new(c.x, 0.0), DVec2::new(0.0, c.y));
+        let part = |color| Pen::dashed(color, 2.5);
+        let (along_pen, across_pen) = (part(palette::NORMAL), part(palette::SHADOW_REACHES));
+        self.arrow(o - c, o, Pen::solid(palette::PRIMARY, 1.5));
+        self.arrow(o - c, o - c + along, along_pen);
+        self.arrow(o - c + along, o, across_pen);
+        self.arrow(o, o + v, Pen::solid(palette::REFLECTED, 1.5));
+        self.arrow(o, o + across, across_pen);
+        self.arrow(o + across, o + v, along_pen);
+    }
+
+    /// What the labels keep off: the arrowheads and the hit points, which
+    /// stay visible; and the lines they would rather not cover, the arrows,
+    /// the surfaces and the arcs (as chords), crossing an arrow costing more
+    /// than a leader: the arrows are the figure.
+    fn kept_clear(
+        &mut self,
+        c: DVec2,
+        v: DVec2,
+        radius: f64,
+    ) -> (Vec<PxRect>, Vec<([DVec2; 2], usize)>) {
+        let fig = &self.fig;
+        let mut blocked: Vec<PxRect> = (self.arrows.iter())
+            .map(|[_, b]| PxRect::around(fig.to_px(*b), 6.0))
+            .collect();
+        let hits = [DVec2::ZERO, DVec2::new(RIGHT, 0.0)];
+        blocked.extend(hits.map(|h| PxRect::around(fig.to_px(h), 5.0)));
+        let chords = |to: DVec2, r: f64| {
+            let (a0, a1) = (DVec2::Y.to_angle(), to.to_angle());
+            (0..6).map(move |k| {
+                let at = |k: u32| DVec2::from_angle(a0 + (a1 - a0) * f64::from(k) / 6.0) * r;
+                [at(k), at(k + 1)]
+            })
+        };
+        let r = radius / fig.scale();
+        self.lines.extend(self.arrows.iter().copied());
+        self.lines
+            .extend(chords((-c).normalize(), r).chain(chords(v.normalize(), r * 0.85)));
+        let weighted = (self.lines.iter())
+            .map(|[a, b]| ([fig.to_px(*a), fig.to_px(*b)], 4))
+            .collect();
+        (blocked, weighted)
+    }
+}
+
+/// A plain label at `at` (drawing units).
+fn label(fig: &Figure, words: String, size: f32, color: Rgb, at: DVec2, clearance: f64) -> Label {
+    Label::at_point(words, size, color, fig.to_px(at), clearance)
+}
+
+/// The names at the hits, most important first, each at what it names: the
+/// hit, n, c and v, the two angles just above the arcs either side of n (each
+/// on its own side), and the right panel's n.
+fn hit_labels(fig: &Figure, name: &str, c: DVec2, v: DVec2, theta: f64) -> Vec<Label> {
+    let ink = palette::INK;
+    let above = DVec2::new(0.0, 0.46);
+    let side = |dx: f64| Target::Point {
+        at: fig.to_px(above) + DVec2::new(dx, 0.0),
+        clearance: 1.0,
+    };
+    let angle = |words: String, dx: f64| Label {
+        target: side(dx),
+        ..label(fig, words, TEXT, ink, above, 0.0)
+    };
+    vec![
+        label(fig, name.to_owned(), TEXT - 1.0, ink, DVec2::ZERO, 5.0),
+        label(fig, "n".to_owned(), TEXT, palette::NORMAL, DVec2::Y, 6.0),
+        label(fig, "c".to_owned(), TEXT, palette::PRIMARY, -c, 4.0),
+        label(fig, "v".to_owned(), TEXT, palette::REFLECTED, v, 7.0),
+        angle(format!("θᵢ = {}", degrees(theta)), -5.0),
+        angle(format!("θᵣ = {}", degrees(theta)), 5.0),
+        label(
+            fig,
+            "n".to_owned(),
+            TEXT,
+            palette::NORMAL,
+            DVec2::new(RIGHT, 0.0) + DVec2::Y,
+            6.0,
+        ),
+    ]
+}
+
+/// On the right, each part's name with its value under it: the parts
+/// first, their sums after, so v can take a leader from afar.
+fn part_labels(fig: &Figure, p: &Parts, c: DVec2, v: DVec2) -> Vec<Label> {
+    let o = DVec2::new(RIGHT, 0.0);
+    let (across, along) = (DVec2::new(c.x, 0.0), DVec2::new(0.0, c.y));
+    let small = TEXT - 2.0;
+    let ink = palette::INK;
+    vec![
+        label(
+            fig,
+            format!("c\n{}", vec3(p.c)),
+            small,
+            palette::PRIMARY,
+            o - c,
+            4.0,
+        ),
+        label(
+            fig,
+            format!("across n, kept: c − (n·c)·n\n{}", vec3(p.across)),
+            small,
+            ink,
+            o - across * 0.5,
+            7.0,
+        ),
+        label(
+            fig,
+            format!("flipped: −(n·c)·n\nn·c = {}", num(p.n_dot_c)),
+            small,
+            ink,
+            o + across - along * 0.5,
+            7.0,
+        ),
+        label(
+            fig,
+            format!("along n: (n·c)·n\n{}", vec3(p.along)),
+            small,
+            ink,
+            o - c + along * 0.5,
+            7.0,
+        ),
+        label(
+            fig,
+            format!("v = c − 2(n·c)·n\n{}", vec3(p.v)),
+            small,
+            palette::REFLECTED,
+            o + v,
+            7.0,
+        ),
+    ]
 }
 
 #[cfg(test)]

@@ -8,7 +8,6 @@ pub mod text; // the trace in words
 pub mod wrap; // long lines wrapped with a hanging indent, for the inspector and the book
 pub mod explain; // the lecture's arithmetic of each step, written out
 pub mod walk; // a structure's walk step by step: the box or cell, and the wall a grid cell is left through
-mod explain_shapes; // the polygon's and the cone's tests, written out
 pub mod diagram; // a pixel's rays drawn over the scene, in 2D
 pub mod hit_vectors; // one hit's c, n and v enlarged, with c split along and across n
 pub mod tree_graph; // a pixel's rays as a tree: a box per ray, an edge per parent and child

@@ -123,26 +123,7 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
             .local
             .as_ref()
             .map_or_else(|| one(String::new()), explain::local),
-        StepKind::Reflect | StepKind::Refract => {
-            let reflect = step.kind == StepKind::Reflect;
-            let branch = if reflect {
-                &node.reflected
-            } else {
-                &node.refracted
-            };
-            let Some(branch) = branch else {
-                return one(String::new());
-            };
-            let line = branched(step.kind, branch, node);
-            let details = match (&node.hit, branch.outcome) {
-                (Some(h), Branch::Traced) if reflect => vec![explain::reflection(h)],
-                (Some(h), Branch::Traced | Branch::TotalInternalReflection) if !reflect => {
-                    explain::refraction(h)
-                }
-                _ => Vec::new(),
-            };
-            (line, details)
-        }
+        StepKind::Reflect | StepKind::Refract => branch_step(step.kind, node),
         StepKind::Combine => one(combined(&node.sum)),
         StepKind::Return => one(format!(
             "return {} to {}",
@@ -150,6 +131,30 @@ pub fn describe(trace: &TraceDocument, sample: usize, step: &Step) -> Lines {
             returned_to(tree, node)
         )),
     }
+}
+
+/// A reflect or refract step: whether the branch was traced and with what
+/// weight, and, where a direction was made (or Snell's law has none), its
+/// arithmetic.
+fn branch_step(kind: StepKind, node: &RayNode) -> Lines {
+    let reflect = kind == StepKind::Reflect;
+    let branch = if reflect {
+        &node.reflected
+    } else {
+        &node.refracted
+    };
+    let Some(branch) = branch else {
+        return (String::new(), Vec::new());
+    };
+    let line = branched(kind, branch, node);
+    let details = match (&node.hit, branch.outcome) {
+        (Some(h), Branch::Traced) if reflect => vec![explain::reflection(h)],
+        (Some(h), Branch::Traced | Branch::TotalInternalReflection) if !reflect => {
+            explain::refraction(h)
+        }
+        _ => Vec::new(),
+    };
+    (line, details)
 }
 
 fn branched(kind: StepKind, branch: &BranchRecord, node: &RayNode) -> String {

@@ -114,45 +114,13 @@ fn children(tree: &RayTree) -> Vec<Vec<usize>> {
 /// leaves side by side in depth-first order and each parent centered over
 /// its children, so no two edges cross.
 pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
-    let kids = children(tree);
-    let mut slot = vec![0.0; tree.nodes.len()];
-    let mut leaves = 0.0;
-    // Depth first from the root: a leaf takes the next slot, a parent the
-    // middle of its children's.
-    fn place(i: usize, kids: &[Vec<usize>], slot: &mut [f64], leaves: &mut f64) {
-        if kids[i].is_empty() {
-            slot[i] = *leaves;
-            *leaves += 1.0;
-            return;
-        }
-        for &c in &kids[i] {
-            place(c, kids, slot, leaves);
-        }
-        let (first, last) = (kids[i][0], kids[i][kids[i].len() - 1]);
-        slot[i] = (slot[first] + slot[last]) / 2.0;
-    }
-    if !tree.nodes.is_empty() {
-        place(0, &kids, &mut slot, &mut leaves);
-    }
+    let (slot, leaves) = slots(tree);
     let depths = tree.nodes.iter().map(|n| n.depth).max().unwrap_or(1).max(1);
     let (w, h) = (f64::from(width), f64::from(height));
     let (left, top) = (f64::from(MARGIN), f64::from(TOP));
     let column = (w - 2.0 * left) / leaves.max(1.0);
     let row = (h - top - f64::from(MARGIN)) / f64::from(depths);
-    let most = tree
-        .nodes
-        .iter()
-        .map(|n| {
-            3 + usize::from(stopped("", n.reflected.as_ref()).is_some())
-                + usize::from(stopped("", n.refracted.as_ref()).is_some())
-        })
-        .max()
-        .unwrap_or(3);
-    // The box holds its most lines, with a gap of 24 pixels between rows
-    // for the coefficients: where the rows are closer, the lines shrink.
-    let height = (LINE * most as f64 + 8.0).min(row - 24.0);
-    let line = LINE.min((height - 8.0) / most as f64);
-    let size = DVec2::new(BOX_WIDTH.min(column - 10.0), height);
+    let (size, line) = box_size(tree, column, row);
     let mut hits = 0;
     let nodes = (tree.nodes.iter().enumerate())
         .map(|(i, node)| {
@@ -172,7 +140,60 @@ pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
             }
         })
         .collect();
-    let edges = (tree.nodes.iter().enumerate())
+    Graph {
+        nodes,
+        edges: edges(tree),
+        size,
+        line,
+    }
+}
+
+/// Each ray's column, in leaves' widths, and how many leaves there are:
+/// depth first from the root, a leaf takes the next slot, a parent the
+/// middle of its children's.
+fn slots(tree: &RayTree) -> (Vec<f64>, f64) {
+    fn place(i: usize, kids: &[Vec<usize>], slot: &mut [f64], leaves: &mut f64) {
+        if kids[i].is_empty() {
+            slot[i] = *leaves;
+            *leaves += 1.0;
+            return;
+        }
+        for &c in &kids[i] {
+            place(c, kids, slot, leaves);
+        }
+        let (first, last) = (kids[i][0], kids[i][kids[i].len() - 1]);
+        slot[i] = (slot[first] + slot[last]) / 2.0;
+    }
+    let kids = children(tree);
+    let mut slot = vec![0.0; tree.nodes.len()];
+    let mut leaves = 0.0;
+    if !tree.nodes.is_empty() {
+        place(0, &kids, &mut slot, &mut leaves);
+    }
+    (slot, leaves)
+}
+
+/// A box's size and the height of its lines, in a grid of `column × row`
+/// pixels: the box holds its most lines, with a gap of 24 pixels between
+/// rows for the coefficients; where the rows are closer, the lines shrink.
+fn box_size(tree: &RayTree, column: f64, row: f64) -> (DVec2, f64) {
+    let most = tree
+        .nodes
+        .iter()
+        .map(|n| {
+            3 + usize::from(stopped("", n.reflected.as_ref()).is_some())
+                + usize::from(stopped("", n.refracted.as_ref()).is_some())
+        })
+        .max()
+        .unwrap_or(3);
+    let height = (LINE * most as f64 + 8.0).min(row - 24.0);
+    let line = LINE.min((height - 8.0) / most as f64);
+    (DVec2::new(BOX_WIDTH.min(column - 10.0), height), line)
+}
+
+/// An edge from each ray to its parent, with the coefficient that weighs it.
+fn edges(tree: &RayTree) -> Vec<Edge> {
+    (tree.nodes.iter().enumerate())
         .filter_map(|(i, node)| {
             let parent = &tree.nodes[node.parent.filter(|&p| p < i)?];
             // Under total internal reflection the refracted share goes to the
@@ -194,13 +215,7 @@ pub fn layout(tree: &RayTree, width: u32, height: u32) -> Graph {
                 }),
             })
         })
-        .collect();
-    Graph {
-        nodes,
-        edges,
-        size,
-        line,
-    }
+        .collect()
 }
 
 /// Where each of a box's lines is drawn: its baseline's center and its
@@ -247,56 +262,18 @@ pub fn draw_with_labels(tree: &RayTree, title: &str, width: u32, height: u32) ->
         return None;
     }
     let mut fig = Figure::new(width, height, TOP, MARGIN)?;
+    let edges = draw_edges(&mut fig, &graph);
     let half = graph.size / 2.0;
-    let mut edges = Vec::new();
-    for e in &graph.edges {
-        let (a, b) = (&graph.nodes[e.from], &graph.nodes[e.to]);
-        let from = a.center + DVec2::new(0.0, half.y);
-        let to = b.center - DVec2::new(0.0, half.y);
-        fig.line_px(from, to, Pen::solid(color(b.kind), 2.0));
-        edges.push(([from, to], 1));
-    }
-    // The coefficients on paper at the edges' middles, off the boxes.
-    let requests = (graph.edges.iter().zip(&edges))
-        .filter(|(e, _)| !e.label.is_empty())
-        .map(|(e, &([from, to], _))| Label {
-            text: e.label.clone(),
-            size: TEXT - 1.0,
-            color: color(graph.nodes[e.to].kind),
-            target: Target::Point {
-                at: (from + to) / 2.0,
-                clearance: 0.0,
-            },
-            boxed: true,
-            optional: false,
-            tag: String::new(),
-        })
-        .collect();
     let boxes: Vec<PxRect> = (graph.nodes.iter())
         .map(|n| PxRect {
             min: n.center - half,
             max: n.center + half,
         })
         .collect();
-    let f = fig.frame();
-    let frame = PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    };
+    let frame = PxRect::frame_of(&fig);
+    let requests = coefficients(&graph, &edges);
     let (placed, left_out) = labels::place_all(requests, &boxes, &edges, frame);
-    for n in &graph.nodes {
-        let (min, max) = (n.center - half, n.center + half);
-        let pen = Pen::solid(color(n.kind), 2.0);
-        fig.rect_px(min, max, Some((palette::PAPER, 255)), Some(pen));
-        for (k, (line, (at, size))) in n.lines.iter().zip(box_lines(&graph, n)).enumerate() {
-            let ink = match k {
-                0 => color(n.kind),
-                1 | 2 => palette::INK,
-                _ => [110, 110, 110],
-            };
-            fig.text_px(at, line, size, ink, Anchor::Center, false);
-        }
-    }
+    draw_boxes(&mut fig, &graph);
     for p in &placed {
         p.draw(&mut fig, 1.0);
     }
@@ -312,4 +289,57 @@ pub fn draw_with_labels(tree: &RayTree, title: &str, width: u32, height: u32) ->
         left_out,
         frame,
     })
+}
+
+/// Each edge, from the bottom of the parent's box to the top of the child's,
+/// in the child's color; returns them in pixels, for the labels to weigh.
+fn draw_edges(fig: &mut Figure, graph: &Graph) -> Vec<([DVec2; 2], usize)> {
+    let half = graph.size / 2.0;
+    let mut edges = Vec::new();
+    for e in &graph.edges {
+        let (a, b) = (&graph.nodes[e.from], &graph.nodes[e.to]);
+        let from = a.center + DVec2::new(0.0, half.y);
+        let to = b.center - DVec2::new(0.0, half.y);
+        fig.line_px(from, to, Pen::solid(color(b.kind), 2.0));
+        edges.push(([from, to], 1));
+    }
+    edges
+}
+
+/// The coefficients on paper at the edges' middles (`drawn`, in pixels).
+fn coefficients(graph: &Graph, drawn: &[([DVec2; 2], usize)]) -> Vec<Label> {
+    (graph.edges.iter().zip(drawn))
+        .filter(|(e, _)| !e.label.is_empty())
+        .map(|(e, &([from, to], _))| Label {
+            text: e.label.clone(),
+            size: TEXT - 1.0,
+            color: color(graph.nodes[e.to].kind),
+            target: Target::Point {
+                at: (from + to) / 2.0,
+                clearance: 0.0,
+            },
+            boxed: true,
+            optional: false,
+            tag: String::new(),
+        })
+        .collect()
+}
+
+/// A box per ray on paper over the edges: its first line in its kind's
+/// color, its depth and hit in ink, why a branch stopped in gray.
+fn draw_boxes(fig: &mut Figure, graph: &Graph) {
+    let half = graph.size / 2.0;
+    for n in &graph.nodes {
+        let (min, max) = (n.center - half, n.center + half);
+        let pen = Pen::solid(color(n.kind), 2.0);
+        fig.rect_px(min, max, Some((palette::PAPER, 255)), Some(pen));
+        for (k, (line, (at, size))) in n.lines.iter().zip(box_lines(graph, n)).enumerate() {
+            let ink = match k {
+                0 => color(n.kind),
+                1 | 2 => palette::INK,
+                _ => [110, 110, 110],
+            };
+            fig.text_px(at, line, size, ink, Anchor::Center, false);
+        }
+    }
 }

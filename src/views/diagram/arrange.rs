@@ -59,53 +59,8 @@ pub fn layout_of(
         scene,
         objects: &drawn,
     };
-    let far = reach(&among, &proj);
-    let mut segments = Vec::new();
-    let mut hits = Vec::new();
-    let mut boxes = Vec::new();
-    for (i, node) in sample.tree.nodes.iter().enumerate() {
-        if !shown.ray(i, node) {
-            continue;
-        }
-        segments.push(ray_segment(&among, &proj, i, node, far));
-        if options.boxes {
-            boxes.extend(boxes::project(i, &node.boxes, &proj));
-        }
-        if let Some(h) = node.hit.as_ref().filter(|_| shown.hit(i)) {
-            hits.push(HitMark {
-                node: i,
-                depth: node.depth,
-                object: h.object,
-                at: proj.point(h.point),
-                normal: proj.vector(h.shading_normal),
-                kind: node.kind,
-            });
-        }
-        if options.shadows {
-            for (k, s) in node.shadow_rays.iter().enumerate() {
-                if shown.shadow(i, k) {
-                    segments.extend(shadow_segments(&among, &proj, (i, k), s));
-                }
-            }
-        }
-    }
-    segments.sort_by_key(|s| s.stroke.arrow());
-    let mut touched: Vec<usize> = sample
-        .tree
-        .nodes
-        .iter()
-        .filter_map(|n| n.hit.as_ref().map(|h| h.object))
-        .collect();
-    touched.extend(marks::blockers(&sample.tree));
-    let objects: Vec<ObjectShape> = among
-        .each()
-        .map(|(i, o)| ObjectShape {
-            object: i,
-            silhouette: proj.outline(o),
-            section: cross_section(&proj, o),
-            touched: touched.contains(&i),
-        })
-        .collect();
+    let rays = rays(&sample.tree, &among, &proj, &shown, options);
+    let objects = object_shapes(&sample.tree, &among, &proj);
     let marks = marks::marks(&sample.tree, &steps, &proj, options, &shown.hits());
     let near_misses = marks::near_misses(&sample.tree.nodes[0], among.each())
         .into_iter()
@@ -127,8 +82,8 @@ pub fn layout_of(
         .collect();
     let mut lay = Layout {
         proj,
-        segments,
-        hits,
+        segments: rays.segments,
+        hits: rays.hits,
         objects,
         eye,
         image_plane,
@@ -136,13 +91,88 @@ pub fn layout_of(
         marks,
         window: (DVec2::ZERO, DVec2::ZERO),
         near_misses,
-        boxes,
+        boxes: rays.boxes,
         structure: trace.structure,
     };
     lay.window = options
         .window
         .unwrap_or_else(|| frame::frame(&lay, options.fit));
     Ok(lay)
+}
+
+/// What the tree's shown rays put on the drawing plane.
+struct Rays {
+    /// The rays and shadow rays, those with arrowheads last.
+    segments: Vec<Segment>,
+    /// The hits found.
+    hits: Vec<HitMark>,
+    /// The boxes the rays were tested against, when drawn.
+    boxes: Vec<boxes::BoxMark>,
+}
+
+/// Each ray a step-through has reached, with its hit, its boxes and its
+/// shadow rays as options ask.
+fn rays(
+    tree: &RayTree,
+    among: &Among,
+    proj: &Projection,
+    shown: &Shown,
+    options: &Options,
+) -> Rays {
+    let far = reach(among, proj);
+    let mut out = Rays {
+        segments: Vec::new(),
+        hits: Vec::new(),
+        boxes: Vec::new(),
+    };
+    for (i, node) in tree.nodes.iter().enumerate() {
+        if !shown.ray(i, node) {
+            continue;
+        }
+        out.segments.push(ray_segment(among, proj, i, node, far));
+        if options.boxes {
+            out.boxes.extend(boxes::project(i, &node.boxes, proj));
+        }
+        if let Some(h) = node.hit.as_ref().filter(|_| shown.hit(i)) {
+            out.hits.push(HitMark {
+                node: i,
+                depth: node.depth,
+                object: h.object,
+                at: proj.point(h.point),
+                normal: proj.vector(h.shading_normal),
+                kind: node.kind,
+            });
+        }
+        if options.shadows {
+            for (k, s) in node.shadow_rays.iter().enumerate() {
+                if shown.shadow(i, k) {
+                    out.segments.extend(shadow_segments(among, proj, (i, k), s));
+                }
+            }
+        }
+    }
+    out.segments.sort_by_key(|s| s.stroke.arrow());
+    out
+}
+
+/// Each object projected: its silhouette, what the drawing plane cuts of it,
+/// and whether the tree hit it or a shadow ray was blocked by it.
+fn object_shapes(tree: &RayTree, among: &Among, proj: &Projection) -> Vec<ObjectShape> {
+    let mut touched: Vec<usize> = tree
+        .nodes
+        .iter()
+        .filter_map(|n| n.hit.as_ref().map(|h| h.object))
+        .collect();
+    touched.extend(marks::blockers(tree));
+    among
+        .each()
+        .map(|(i, o)| ObjectShape {
+            object: i,
+            silhouette: proj.outline(o),
+            section: cross_section(proj, o),
+            touched: touched.contains(&i),
+        })
+        .collect()
 }
 
 /// The scene with the objects a layout projects.

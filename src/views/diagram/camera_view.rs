@@ -63,11 +63,7 @@ fn panel(width: u32, height: u32, scale: &Scale) -> Result<Figure, String> {
 /// Labels on a panel, placed so none collides and none sits on `lines`
 /// (diagram coordinates) where it can move off them.
 fn place(fig: &mut Figure, labels: Vec<Label>, lines: &[[DVec2; 2]]) {
-    let f = fig.frame();
-    let frame = PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    };
+    let frame = PxRect::frame_of(fig);
     let px: Vec<[DVec2; 2]> = lines
         .iter()
         .map(|[a, b]| [fig.to_px(*a), fig.to_px(*b)])
@@ -83,7 +79,8 @@ fn label(fig: &Figure, text: String, at: DVec2, size: f32, clearance: f64) -> La
     Label::at_point(text, size, palette::INK, fig.to_px(at), clearance)
 }
 
-/// The whole image plane in its own coordinates `(u, v)`.
+/// The whole image plane in its own coordinates `(u, v)`: the plane with its
+/// axes and half-sizes, then the pixel's point on it, then their names.
 fn plane_panel(
     cam: &CameraRecord,
     stage: &CameraStage,
@@ -92,110 +89,149 @@ fn plane_panel(
     scale: &Scale,
 ) -> Result<Figure, String> {
     let mut fig = panel(w, h, scale)?;
-    let (wd, ht) = (cam.half_width, cam.half_height);
-    let lo = DVec2::new(-wd, -ht);
-    let hi = DVec2::new(wd, ht);
+    let plane = PlaneMarks::of(cam, stage);
+    let (lo, hi) = (plane.corners[0], plane.corners[2]);
     fig.fit(
         lo - (hi - lo) * DVec2::new(0.3, 0.2),
         hi + (hi - lo) * DVec2::new(0.05, 0.08),
         0.0,
     );
-    let corners = [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)];
-    fig.polygon(
-        &corners,
-        Some(([220, 232, 245], 255)),
-        Some(scale_pen(scale, Pen::solid(palette::OBJECT, 1.5))),
-    );
-    let axis = scale_pen(scale, Pen::solid(palette::INK, 1.8));
-    let reach = 0.25 * wd;
-    fig.arrow(DVec2::ZERO, DVec2::new(reach, 0.0), axis);
-    fig.arrow(DVec2::ZERO, DVec2::new(0.0, reach), axis);
-    fig.dot(
-        DVec2::ZERO,
-        (scale.text * 0.3).max(3.0),
-        palette::PAPER,
-        Some(palette::INK),
-    );
-    // Half-sizes as dimension lines below and to the left of the plane.
-    let dim = scale_pen(scale, Pen::solid(palette::OBJECT, 1.0));
-    let below = -ht - 0.09 * (2.0 * ht);
-    let left = -wd - 0.06 * (2.0 * wd);
-    fig.arrow(DVec2::new(0.0, below), DVec2::new(wd, below), dim);
-    fig.arrow(DVec2::new(left, 0.0), DVec2::new(left, ht), dim);
-    let p = DVec2::new(stage.u_c, stage.v_r);
-    // The pixel's coordinates as guides to the axes: u_c along u, v_r along v.
-    let guide = scale_pen(scale, Pen::dashed(palette::OBJECT, 1.0));
-    fig.line(p, DVec2::new(p.x, 0.0), guide);
-    fig.line(p, DVec2::new(0.0, p.y), guide);
-    fig.dot(
-        p,
-        (scale.text * 0.35).max(3.0),
-        palette::REFRACTED,
-        Some(palette::INK),
-    );
-    let s = scale.text - 1.0;
-    let labels = vec![
-        label(&fig, "P(r, c)".to_owned(), p, s, 6.0),
-        label(
-            &fig,
-            format!("u_c = {}", num(stage.u_c)),
-            DVec2::new(p.x, 0.0),
-            s - 1.0,
-            3.0,
-        ),
-        label(
-            &fig,
-            format!("v_r = {}", num(stage.v_r)),
-            DVec2::new(0.0, p.y),
-            s - 1.0,
-            3.0,
-        ),
-        label(&fig, "u".to_owned(), DVec2::new(reach, 0.0), s, 5.0),
-        label(&fig, "v".to_owned(), DVec2::new(0.0, reach), s, 5.0),
-        label(
-            &fig,
-            "n points at the eye".to_owned(),
-            DVec2::ZERO,
-            s - 2.0,
-            6.0,
-        ),
-        label(
-            &fig,
-            format!("W = {}", num(wd)),
-            DVec2::new(wd / 2.0, below),
-            s,
-            3.0,
-        ),
-        label(
-            &fig,
-            format!("H = {}", num(ht)),
-            DVec2::new(left, ht / 2.0),
-            s,
-            3.0,
-        ),
-        label(
-            &fig,
-            format!("N_c × N_r = {} × {} pixels", cam.columns, cam.rows),
-            DVec2::new(-wd, ht),
-            s - 1.0,
-            2.0,
-        ),
-    ];
-    let mut lines = vec![
-        [DVec2::ZERO, DVec2::new(reach, 0.0)],
-        [DVec2::ZERO, DVec2::new(0.0, reach)],
-        [p, DVec2::new(p.x, 0.0)],
-        [p, DVec2::new(0.0, p.y)],
-        [DVec2::new(0.0, below), DVec2::new(wd, below)],
-        [DVec2::new(left, 0.0), DVec2::new(left, ht)],
-    ];
-    lines.extend((0..4).map(|k| [corners[k], corners[(k + 1) % 4]]));
-    place(&mut fig, labels, &lines);
+    plane.draw_plane(&mut fig, scale);
+    plane.draw_pixel(&mut fig, scale);
+    let labels = plane.labels(&fig, cam, stage, scale);
+    place(&mut fig, labels, &plane.lines());
     fig.frame_border();
     Ok(fig)
 }
 
-/// The pixels around the traced one, in the lecture's (c, r).
+/// Where the plane panel's marks go, in the plane's `(u, v)`.
+struct PlaneMarks {
+    /// The half-sizes `W` and `H`.
+    half: DVec2,
+    /// The plane's corners, counterclockwise from `(−W, −H)`.
+    corners: [DVec2; 4],
+    /// The length of the `u` and `v` arrows.
+    reach: f64,
+    /// The height of `W`'s dimension line, below the plane.
+    below: f64,
+    /// The abscissa of `H`'s dimension line, left of the plane.
+    left: f64,
+    /// The pixel's point `P(r, c) = (u_c, v_r)`.
+    p: DVec2,
+}
+
+impl PlaneMarks {
+    fn of(cam: &CameraRecord, stage: &CameraStage) -> Self {
+        let (wd, ht) = (cam.half_width, cam.half_height);
+        let (lo, hi) = (DVec2::new(-wd, -ht), DVec2::new(wd, ht));
+        PlaneMarks {
+            half: hi,
+            corners: [lo, DVec2::new(hi.x, lo.y), hi, DVec2::new(lo.x, hi.y)],
+            reach: 0.25 * wd,
+            below: -ht - 0.09 * (2.0 * ht),
+            left: -wd - 0.06 * (2.0 * wd),
+            p: DVec2::new(stage.u_c, stage.v_r),
+        }
+    }
+
+    /// The plane, its axes `u` and `v` from its center, and its half-sizes as
+    /// dimension lines below and to the left of it.
+    fn draw_plane(&self, fig: &mut Figure, scale: &Scale) {
+        let (wd, ht) = (self.half.x, self.half.y);
+        fig.polygon(
+            &self.corners,
+            Some(([220, 232, 245], 255)),
+            Some(scale_pen(scale, Pen::solid(palette::OBJECT, 1.5))),
+        );
+        let axis = scale_pen(scale, Pen::solid(palette::INK, 1.8));
+        fig.arrow(DVec2::ZERO, DVec2::new(self.reach, 0.0), axis);
+        fig.arrow(DVec2::ZERO, DVec2::new(0.0, self.reach), axis);
+        fig.dot(
+            DVec2::ZERO,
+            (scale.text * 0.3).max(3.0),
+            palette::PAPER,
+            Some(palette::INK),
+        );
+        let dim = scale_pen(scale, Pen::solid(palette::OBJECT, 1.0));
+        fig.arrow(DVec2::new(0.0, self.below), DVec2::new(wd, self.below), dim);
+        fig.arrow(DVec2::new(self.left, 0.0), DVec2::new(self.left, ht), dim);
+    }
+
+    /// The pixel's point, with its coordinates as guides to the axes: `u_c`
+    /// along `u`, `v_r` along `v`.
+    fn draw_pixel(&self, fig: &mut Figure, scale: &Scale) {
+        let p = self.p;
+        let guide = scale_pen(scale, Pen::dashed(palette::OBJECT, 1.0));
+        fig.line(p, DVec2::new(p.x, 0.0), guide);
+        fig.line(p, DVec2::new(0.0, p.y), guide);
+        fig.dot(
+            p,
+            (scale.text * 0.35).max(3.0),
+            palette::REFRACTED,
+            Some(palette::INK),
+        );
+    }
+
+    /// The names, most important first: the point and its coordinates, the
+    /// axes, the half-sizes, the pixel count.
+    fn labels(
+        &self,
+        fig: &Figure,
+        cam: &CameraRecord,
+        stage: &CameraStage,
+        scale: &Scale,
+    ) -> Vec<Label> {
+        let (wd, ht, p, reach) = (self.half.x, self.half.y, self.p, self.reach);
+        let s = scale.text - 1.0;
+        let u_c = format!("u_c = {}", num(stage.u_c));
+        let v_r = format!("v_r = {}", num(stage.v_r));
+        let n = "n points at the eye".to_owned();
+        let count = format!("N_c × N_r = {} × {} pixels", cam.columns, cam.rows);
+        vec![
+            label(fig, "P(r, c)".to_owned(), p, s, 6.0),
+            label(fig, u_c, DVec2::new(p.x, 0.0), s - 1.0, 3.0),
+            label(fig, v_r, DVec2::new(0.0, p.y), s - 1.0, 3.0),
+            label(fig, "u".to_owned(), DVec2::new(reach, 0.0), s, 5.0),
+            label(fig, "v".to_owned(), DVec2::new(0.0, reach), s, 5.0),
+            label(fig, n, DVec2::ZERO, s - 2.0, 6.0),
+            label(
+                fig,
+                format!("W = {}", num(wd)),
+                DVec2::new(wd / 2.0, self.below),
+                s,
+                3.0,
+            ),
+            label(
+                fig,
+                format!("H = {}", num(ht)),
+                DVec2::new(self.left, ht / 2.0),
+                s,
+                3.0,
+            ),
+            label(fig, count, DVec2::new(-wd, ht), s - 1.0, 2.0),
+        ]
+    }
+
+    /// The lines the labels keep off: the axes, the guides, the dimension
+    /// lines and the plane's edges.
+    fn lines(&self) -> Vec<[DVec2; 2]> {
+        let (wd, ht, p, reach) = (self.half.x, self.half.y, self.p, self.reach);
+        let corners = self.corners;
+        let mut lines = vec![
+            [DVec2::ZERO, DVec2::new(reach, 0.0)],
+            [DVec2::ZERO, DVec2::new(0.0, reach)],
+            [p, DVec2::new(p.x, 0.0)],
+            [p, DVec2::new(0.0, p.y)],
+            [DVec2::new(0.0, self.below), DVec2::new(wd, self.below)],
+            [DVec2::new(self.left, 0.0), DVec2::new(self.left, ht)],
+        ];
+        lines.extend((0..4).map(|k| [corners[k], corners[(k + 1) % 4]]));
+        lines
+    }
+}
+
+/// The pixels around the traced one, in the lecture's (c, r): the cells and
+/// their centers, the samples, then the words.
 fn grid_panel(
     cam: &CameraRecord,
     stages: &[&CameraStage],
@@ -204,104 +240,156 @@ fn grid_panel(
     scale: &Scale,
 ) -> Result<Figure, String> {
     let mut fig = panel(w, h, scale)?;
-    let first = stages[0];
-    let [px, py] = first.pixel;
-    let (c0, r0) = (f64::from(px), f64::from(cam.rows) - 1.0 - f64::from(py));
-    let (span_c, span_r) = (4.0, 3.0);
-    let clamp = |v: f64, n: u32| v.clamp(0.0, f64::from(n.max(1)) - 1.0);
-    let (c_lo, c_hi) = (
-        clamp(c0 - span_c, cam.columns),
-        clamp(c0 + span_c, cam.columns),
+    let grid = Around::pixel(cam, stages[0]);
+    fig.fit(
+        grid.lo - DVec2::new(1.4, 1.6),
+        grid.hi + DVec2::new(0.4, 2.2),
+        0.0,
     );
-    let (r_lo, r_hi) = (clamp(r0 - span_r, cam.rows), clamp(r0 + span_r, cam.rows));
-    let lo = DVec2::new(c_lo - 0.5, r_lo - 0.5);
-    let hi = DVec2::new(c_hi + 0.5, r_hi + 0.5);
-    fig.fit(lo - DVec2::new(1.4, 1.6), hi + DVec2::new(0.4, 2.2), 0.0);
-    let cell = |c: f64, r: f64| {
-        [
-            DVec2::new(c - 0.5, r - 0.5),
-            DVec2::new(c + 0.5, r - 0.5),
-            DVec2::new(c + 0.5, r + 0.5),
-            DVec2::new(c - 0.5, r + 0.5),
-        ]
-    };
-    fig.polygon(&cell(c0, r0), Some(([220, 232, 245], 255)), None);
-    let grid = scale_pen(scale, Pen::solid([170, 170, 170], 1.0));
-    let mut c = c_lo - 0.5;
-    while c <= c_hi + 0.5 {
-        fig.line(DVec2::new(c, lo.y), DVec2::new(c, hi.y), grid);
-        c += 1.0;
-    }
-    let mut r = r_lo - 0.5;
-    while r <= r_hi + 0.5 {
-        fig.line(DVec2::new(lo.x, r), DVec2::new(hi.x, r), grid);
-        r += 1.0;
-    }
-    let dot = (scale.text * 0.18).max(2.0);
-    let mut r = r_lo;
-    while r <= r_hi {
-        let mut c = c_lo;
-        while c <= c_hi {
-            fig.dot(DVec2::new(c, r), dot, [150, 150, 150], None);
-            c += 1.0;
-        }
-        r += 1.0;
-    }
-    for s in stages {
-        fig.dot(
-            DVec2::new(s.c, s.r),
-            dot * 1.8,
-            palette::REFRACTED,
-            Some(palette::INK),
-        );
-    }
-    let spacing = 2.0 * cam.half_width / f64::from(cam.columns.saturating_sub(1).max(1));
-    let sz = scale.text - 1.0;
-    // The traced column's c under the grid, its row's r to the left, the rest above.
-    let under = fig.to_px(DVec2::new(c0, lo.y)) + DVec2::new(0.0, f64::from(sz) * 1.4);
-    fig.text_px(
-        under,
-        &format!("c = {}", num(c0)),
-        sz,
-        palette::INK,
-        Anchor::Center,
-        false,
-    );
-    let beside = fig.to_px(DVec2::new(lo.x, r0)) + DVec2::new(-6.0, f64::from(sz) * 0.35);
-    fig.text_px(
-        beside,
-        &format!("r = {}", num(r0)),
-        sz,
-        palette::INK,
-        Anchor::Right,
-        false,
-    );
-    let above = fig.to_px(DVec2::new((lo.x + hi.x) / 2.0, hi.y));
-    let notes = [
-        format!(
-            "pixel {px},{py} (x right, y down) is column c = x = {}",
-            num(c0)
-        ),
-        format!(
-            "and row r = N_r − 1 − y = {} − 1 − {py} = {}",
-            cam.rows,
-            num(r0)
-        ),
-        format!("pixel centers are 2W/(N_c − 1) = {} apart", num(spacing)),
-    ];
-    let step = f64::from(sz) * 1.35;
-    for (k, note) in notes.iter().enumerate() {
-        let at = above - DVec2::new(0.0, step * (notes.len() - k) as f64 - step * 0.2);
-        fig.text_px(at, note, sz, palette::INK, Anchor::Center, false);
-    }
-    if stages.len() > 1 {
-        let at =
-            fig.to_px(DVec2::new((lo.x + hi.x) / 2.0, lo.y)) + DVec2::new(0.0, f64::from(sz) * 3.0);
-        let note = format!("{} samples inside the pixel (orange)", stages.len());
-        fig.text_px(at, &note, sz, palette::INK, Anchor::Center, false);
-    }
+    grid.draw_cells(&mut fig, scale);
+    grid.draw_centers(&mut fig, stages, scale);
+    grid.write_notes(&mut fig, cam, stages, scale);
     fig.frame_border();
     Ok(fig)
+}
+
+/// The window of pixels around the traced one, in `(c, r)`: a few columns
+/// and rows either side, within the image.
+struct Around {
+    /// The traced pixel, `x right, y down`.
+    pixel: [u32; 2],
+    /// Its column `c`.
+    c0: f64,
+    /// Its row `r`, counted up from the bottom.
+    r0: f64,
+    /// The first column shown.
+    c_lo: f64,
+    /// The last column shown.
+    c_hi: f64,
+    /// The first row shown.
+    r_lo: f64,
+    /// The last row shown.
+    r_hi: f64,
+    /// The window's lower-left corner: the shown cells' outer edges.
+    lo: DVec2,
+    /// Its upper-right corner.
+    hi: DVec2,
+}
+
+impl Around {
+    fn pixel(cam: &CameraRecord, first: &CameraStage) -> Self {
+        let [px, py] = first.pixel;
+        let (c0, r0) = (f64::from(px), f64::from(cam.rows) - 1.0 - f64::from(py));
+        let (span_c, span_r) = (4.0, 3.0);
+        let clamp = |v: f64, n: u32| v.clamp(0.0, f64::from(n.max(1)) - 1.0);
+        let (c_lo, c_hi) = (
+            clamp(c0 - span_c, cam.columns),
+            clamp(c0 + span_c, cam.columns),
+        );
+        let (r_lo, r_hi) = (clamp(r0 - span_r, cam.rows), clamp(r0 + span_r, cam.rows));
+        Around {
+            pixel: first.pixel,
+            c0,
+            r0,
+            c_lo,
+            c_hi,
+            r_lo,
+            r_hi,
+            lo: DVec2::new(c_lo - 0.5, r_lo - 0.5),
+            hi: DVec2::new(c_hi + 0.5, r_hi + 0.5),
+        }
+    }
+
+    /// The traced cell filled, and the grid of pixel edges.
+    fn draw_cells(&self, fig: &mut Figure, scale: &Scale) {
+        let (c0, r0, lo, hi) = (self.c0, self.r0, self.lo, self.hi);
+        let cell = [
+            DVec2::new(c0 - 0.5, r0 - 0.5),
+            DVec2::new(c0 + 0.5, r0 - 0.5),
+            DVec2::new(c0 + 0.5, r0 + 0.5),
+            DVec2::new(c0 - 0.5, r0 + 0.5),
+        ];
+        fig.polygon(&cell, Some(([220, 232, 245], 255)), None);
+        let grid = scale_pen(scale, Pen::solid([170, 170, 170], 1.0));
+        let mut c = self.c_lo - 0.5;
+        while c <= self.c_hi + 0.5 {
+            fig.line(DVec2::new(c, lo.y), DVec2::new(c, hi.y), grid);
+            c += 1.0;
+        }
+        let mut r = self.r_lo - 0.5;
+        while r <= self.r_hi + 0.5 {
+            fig.line(DVec2::new(lo.x, r), DVec2::new(hi.x, r), grid);
+            r += 1.0;
+        }
+    }
+
+    /// Each pixel's center, and the traced pixel's samples on top.
+    fn draw_centers(&self, fig: &mut Figure, stages: &[&CameraStage], scale: &Scale) {
+        let dot = (scale.text * 0.18).max(2.0);
+        let mut r = self.r_lo;
+        while r <= self.r_hi {
+            let mut c = self.c_lo;
+            while c <= self.c_hi {
+                fig.dot(DVec2::new(c, r), dot, [150, 150, 150], None);
+                c += 1.0;
+            }
+            r += 1.0;
+        }
+        for s in stages {
+            fig.dot(
+                DVec2::new(s.c, s.r),
+                dot * 1.8,
+                palette::REFRACTED,
+                Some(palette::INK),
+            );
+        }
+    }
+
+    /// The traced column's c under the grid, its row's r to the left, how
+    /// the pixel became them and the spacing above, the samples' count below.
+    fn write_notes(
+        &self,
+        fig: &mut Figure,
+        cam: &CameraRecord,
+        stages: &[&CameraStage],
+        scale: &Scale,
+    ) {
+        let (c0, r0, lo, hi) = (self.c0, self.r0, self.lo, self.hi);
+        let [px, py] = self.pixel;
+        let spacing = 2.0 * cam.half_width / f64::from(cam.columns.saturating_sub(1).max(1));
+        let sz = scale.text - 1.0;
+        let ink = palette::INK;
+        let under = fig.to_px(DVec2::new(c0, lo.y)) + DVec2::new(0.0, f64::from(sz) * 1.4);
+        let c_is = format!("c = {}", num(c0));
+        fig.text_px(under, &c_is, sz, ink, Anchor::Center, false);
+        let beside = fig.to_px(DVec2::new(lo.x, r0)) + DVec2::new(-6.0, f64::from(sz) * 0.35);
+        let r_is = format!("r = {}", num(r0));
+        fig.text_px(beside, &r_is, sz, ink, Anchor::Right, false);
+        let above = fig.to_px(DVec2::new((lo.x + hi.x) / 2.0, hi.y));
+        let notes = [
+            format!(
+                "pixel {px},{py} (x right, y down) is column c = x = {}",
+                num(c0)
+            ),
+            format!(
+                "and row r = N_r − 1 − y = {} − 1 − {py} = {}",
+                cam.rows,
+                num(r0)
+            ),
+            format!("pixel centers are 2W/(N_c − 1) = {} apart", num(spacing)),
+        ];
+        let step = f64::from(sz) * 1.35;
+        for (k, note) in notes.iter().enumerate() {
+            let at = above - DVec2::new(0.0, step * (notes.len() - k) as f64 - step * 0.2);
+            fig.text_px(at, note, sz, ink, Anchor::Center, false);
+        }
+        if stages.len() > 1 {
+            let at = fig.to_px(DVec2::new((lo.x + hi.x) / 2.0, lo.y))
+                + DVec2::new(0.0, f64::from(sz) * 3.0);
+            let note = format!("{} samples inside the pixel (orange)", stages.len());
+            fig.text_px(at, &note, sz, ink, Anchor::Center, false);
+        }
+    }
 }
 
 /// The eye, the image plane at distance `N` and the ray, seen along `u`.

@@ -13,18 +13,16 @@ use crate::figure::clip::{clip_line, clip_segment};
 use crate::figure::labels::{self, Label, Placed, PxRect};
 use crate::figure::pen::Rgb;
 use crate::figure::pen::{Pen, palette};
-use crate::methods::Accel;
 use crate::scene::Scene;
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::RayKind;
 use crate::views::diagram::arrange::layout;
-use crate::views::diagram::boxes;
 use crate::views::diagram::labels::{blocked, draw_label, label_requests, lines_px};
 use crate::views::diagram::layout::{Layout, ObjectShape};
+use crate::views::diagram::legend::draw_legend;
 use crate::views::diagram::options::Options;
 use crate::views::diagram::projection::Outline;
 use crate::views::diagram::reveal::Reveal;
-use crate::views::diagram::style::{NORMAL, Stroke, ray_pen};
+use crate::views::diagram::style::{MET_BOX, MISSED_BOX, NORMAL, ray_pen};
 use crate::views::diagram::style::{Scale, pale};
 use crate::views::numbers::num;
 use crate::views::text;
@@ -103,7 +101,7 @@ pub fn draw_with_labels(
     fig.frame_border();
     let (legend, legend_entries) = draw_legend(&mut fig, &lay, &scale);
     let requests = label_requests(&fig, scene, &lay, options, &scale, offscreen, &reveal);
-    let frame = frame_px(&fig);
+    let frame = PxRect::frame_of(&fig);
     let (placed, left_out) = labels::place_all(
         requests,
         &blocked(&fig, &lay, legend, &scale),
@@ -174,19 +172,6 @@ fn draw_boxes(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
         );
     }
     fig.tag("");
-}
-
-/// A box a ray entered.
-const MET_BOX: Pen = Pen::solid(palette::BOX, 1.2);
-/// A box tested and missed.
-const MISSED_BOX: Pen = Pen::pattern(palette::BOX, 0.9, &[2.0, 3.0]);
-
-fn frame_px(fig: &Figure) -> PxRect {
-    let f = fig.frame();
-    PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    }
 }
 
 /// Objects, under the rays, farthest first: each one's silhouette as a faint
@@ -316,8 +301,9 @@ fn draw_rays(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
     fig.tag("");
 }
 
-/// Blockers, lights behind surfaces, angle arcs, the other roots and ticks.
-fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
+/// How a ray that hit nothing passed the objects nearest it: a dotted gap
+/// from the ray to each one's surface.
+fn draw_near_misses(fig: &mut Figure, lay: &Layout, scale: &Scale) {
     for &(_, _, on_ray, on_object) in &lay.near_misses {
         let pen = scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.2, &[3.0, 3.0]));
         fig.line(on_ray, on_object, pen);
@@ -328,6 +314,12 @@ fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
             None,
         );
     }
+}
+
+/// The near misses, then blockers, lights behind surfaces, angle arcs, the
+/// other roots and ticks.
+fn draw_marks(fig: &mut Figure, lay: &Layout, scale: &Scale, reveal: &Reveal) {
+    draw_near_misses(fig, lay, scale);
     let m = &lay.marks;
     for b in &m.blocked {
         fig.tag(&reveal.shadow(b.node, b.shadow));
@@ -443,104 +435,6 @@ fn draw_off_frame(
         out.push((fig.to_px(tip - dir * inset), name));
     }
     out
-}
-
-/// The legend: only what is drawn, in the corner that hides the least.
-fn draw_legend(fig: &mut Figure, lay: &Layout, scale: &Scale) -> (PxRect, Vec<String>) {
-    let mut legend: Vec<(Pen, &str)> = Vec::new();
-    let kinds = [
-        (RayKind::Primary, "primary ray"),
-        (RayKind::Reflected, "reflected ray"),
-        (RayKind::Refracted, "refracted ray"),
-    ];
-    for (kind, name) in kinds {
-        if lay.segments.iter().any(|s| s.stroke == Stroke::Ray(kind)) {
-            legend.push((scale.pen(ray_pen(kind)), name));
-        }
-    }
-    let has = |stroke: Stroke| lay.segments.iter().any(|s| s.stroke == stroke);
-    if has(Stroke::ShadowReaches) {
-        legend.push((
-            scale.pen(Stroke::ShadowReaches.pen()),
-            "shadow ray, reaches the light",
-        ));
-    }
-    if has(Stroke::ShadowBlocked) {
-        legend.push((
-            scale.pen(Stroke::ShadowBlocked.pen()),
-            "shadow ray up to its blocker (×)",
-        ));
-    }
-    if !lay.marks.behind.is_empty() {
-        legend.push((
-            scale.pen(Pen::pattern(palette::SHADOW_BLOCKED, 1.3, &[2.0, 3.0])),
-            "light behind the surface: no shadow ray",
-        ));
-    }
-    if lay.segments.iter().any(|s| !s.passing.is_empty()) {
-        legend.push((
-            scale.pen(ray_pen(RayKind::Primary).passing()),
-            "a ray passing in front of or behind an object",
-        ));
-    }
-    if !lay.hits.is_empty() {
-        legend.push((scale.pen(NORMAL), "surface normal n"));
-    }
-    let (tested, met) = boxes::counts(&lay.boxes);
-    let (met_text, missed_text) = (
-        match lay.structure {
-            Accel::Grid => format!("grid cell the ray walked ({met})"),
-            Accel::Octree => format!("octree cube the ray walked ({met})"),
-            Accel::Bsp => {
-                format!("k-d tree cell the ray walked, sides on splitting planes ({met})")
-            }
-            _ => format!("box the ray entered ({met})"),
-        },
-        format!("box tested, missed ({})", tested - met),
-    );
-    if met > 0 {
-        legend.push((scale.pen(MET_BOX), &met_text));
-    }
-    if tested > met {
-        legend.push((scale.pen(MISSED_BOX), &missed_text));
-    }
-    let size = scale.text - 2.0;
-    let boxes = fig.legend_boxes(&legend, size);
-    let marks: Vec<DVec2> = lay
-        .segments
-        .iter()
-        .flat_map(|s| (0..=20).map(move |k| s.from + (s.to - s.from) * (f64::from(k) / 20.0)))
-        .chain(lay.hits.iter().map(|h| h.at))
-        // The objects too: a legend over a cluster hides what the figure shows.
-        .chain(lay.objects.iter().flat_map(|o| match o.silhouette {
-            Outline::Ellipse { center, axes } => vec![
-                center,
-                center + axes[0],
-                center - axes[0],
-                center + axes[1],
-                center - axes[1],
-            ],
-            _ => Vec::new(),
-        }))
-        .map(|p| fig.to_px(p))
-        .collect();
-    let covered = |(o, wh): (DVec2, DVec2)| {
-        marks
-            .iter()
-            .filter(|p| p.cmpge(o - 10.0).all() && p.cmple(o + wh + 10.0).all())
-            .count()
-    };
-    let corner = (0..4).min_by_key(|&c| (covered(boxes[c]), c)).unwrap_or(0);
-    fig.legend(&legend, size, corner);
-    let (o, wh) = boxes[corner];
-    let entries = legend.iter().map(|(_, t)| t.to_string()).collect();
-    (
-        PxRect {
-            min: o,
-            max: o + wh,
-        },
-        entries,
-    )
 }
 
 /// The part of the box `lo..hi` inside the solid of a plane drawn as a line

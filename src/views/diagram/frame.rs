@@ -9,6 +9,13 @@ use crate::views::diagram::options::Fit;
 
 /// The window to frame, per `fit`, with a margin; never degenerate.
 pub fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {
+    let (core, near) = framed(lay, fit);
+    window(core, near, lay.eye)
+}
+
+/// What `fit` frames: the core, never empty, and the points that join it
+/// when they are near it.
+fn framed(lay: &Layout, fit: Fit) -> (Vec<DVec2>, Vec<DVec2>) {
     let bounded = |i: usize| lay.object(i).and_then(|o| o.silhouette.bounds());
     let corners = |b: Option<(DVec2, DVec2)>| b.into_iter().flat_map(|(a, c)| [a, c]);
     let mut core: Vec<DVec2> = Vec::new();
@@ -71,6 +78,13 @@ pub fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {
             core.extend([s.from, s.to]);
         }
     }
+    (core, near)
+}
+
+/// The window around `core`, with the `near` points within half its size;
+/// a lone point (a floor hit in the open) still gets room: a tenth of the
+/// distance from the `eye`.
+fn window(mut core: Vec<DVec2>, near: Vec<DVec2>, eye: DVec2) -> (DVec2, DVec2) {
     let bounds = |ps: &[DVec2]| {
         (
             ps.iter()
@@ -86,11 +100,10 @@ pub fn frame(lay: &Layout, fit: Fit) -> (DVec2, DVec2) {
             .filter(|p| p.cmpge(core_lo - reach).all() && p.cmple(core_hi + reach).all()),
     );
     let (lo, hi) = bounds(&core);
-    // A lone hit (a floor point in the open) still gets room: a tenth of the eye's distance.
     let center = (lo + hi) / 2.0;
     let room = (hi - lo)
         .max_element()
-        .max(0.1 * (lay.eye - center).length())
+        .max(0.1 * (eye - center).length())
         .max(1e-6);
     let half = ((hi - lo) / 2.0).max(DVec2::splat(room / 2.0)) * 1.12;
     (center - half, center + half)

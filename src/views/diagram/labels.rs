@@ -28,142 +28,190 @@ pub(super) fn label_requests(
     offscreen: Vec<(DVec2, String)>,
     reveal: &Reveal,
 ) -> Vec<Label> {
-    let size = scale.text;
-    let text = |t: String, color: Rgb, target: Target| Label {
-        text: t,
-        size,
-        color,
-        target,
-        boxed: false,
-        optional: false,
-        tag: String::new(),
-    };
-    let point = |p: DVec2, r: f64| Target::Point {
-        at: fig.to_px(p),
-        clearance: scale.px(r),
-    };
-    let mut out = Vec::new();
     if options.labels == Labels::None {
-        return out;
+        return Vec::new();
     }
-    for t in &lay.marks.tir {
-        out.push(Label {
-            boxed: true,
-            size: size - 1.0,
-            tag: reveal.label(t.node, true),
-            ..text(t.text.clone(), palette::REFRACTED, point(t.at, 8.0))
-        });
-    }
+    let ask = Ask { fig, scale, reveal };
+    let mut out = tir_badges(&ask, lay);
     if options.labels == Labels::All {
-        for (k, h) in lay.hits.iter().enumerate() {
-            if fig.shows(h.at) {
-                out.push(Label {
-                    tag: reveal.label(h.node, true),
-                    ..text(format!("P{}", k + 1), palette::INK, point(h.at, 5.0))
-                });
-            }
+        out.extend(hit_names(&ask, lay));
+        out.extend(indices(&ask, lay));
+        out.extend(angles(&ask, lay));
+    }
+    out.extend(scene_names(&ask, scene, lay, offscreen));
+    out.extend(object_labels(fig, scene, lay, scale.text));
+    out.extend(ray_marks(&ask, lay));
+    out.extend(near_misses(&ask, scene, lay));
+    out
+}
+
+/// What a label request needs: the figure, to name a point by its pixel;
+/// the scale, for sizes; the reveal, to tag each with the step that shows it.
+struct Ask<'a> {
+    fig: &'a Figure,
+    scale: &'a Scale,
+    reveal: &'a Reveal,
+}
+
+impl Ask<'_> {
+    /// A plain label at the figure's text size.
+    fn text(&self, text: String, color: Rgb, target: Target) -> Label {
+        Label {
+            text,
+            size: self.scale.text,
+            color,
+            target,
+            boxed: false,
+            optional: false,
+            tag: String::new(),
         }
-        for b in &lay.marks.boundaries {
-            // Each index on its own side of the boundary, along the normal.
-            for (label, side) in [(&b.n1, 1.0), (&b.n2, -1.0)] {
-                let at =
-                    fig.to_px(b.at) + DVec2::new(b.normal.x, -b.normal.y) * side * scale.px(58.0);
-                // An index belongs on its own side: left out rather than led
-                // across the boundary when that side has no room.
-                out.push(Label {
-                    size: size - 2.0,
-                    optional: true,
-                    tag: reveal.label(b.node, true),
-                    ..text(
-                        label.clone(),
-                        palette::OBJECT,
-                        Target::Point {
-                            at,
-                            clearance: scale.px(2.0),
-                        },
-                    )
-                });
-            }
+    }
+
+    /// The point `p` (drawing units), kept clear by `r` (pixels at scale 1).
+    fn point(&self, p: DVec2, r: f64) -> Target {
+        Target::Point {
+            at: self.fig.to_px(p),
+            clearance: self.scale.px(r),
         }
-        for a in &lay.marks.angles {
-            let mid = (a.from + a.to).normalize_or(a.to);
-            let at = fig.to_px(a.at) + DVec2::new(mid.x, -mid.y) * scale.px(30.0);
+    }
+
+    /// The pixel `at`, kept clear by `r` (pixels at scale 1).
+    fn pixel(&self, at: DVec2, r: f64) -> Target {
+        Target::Point {
+            at,
+            clearance: self.scale.px(r),
+        }
+    }
+}
+
+/// A badge at each total internal reflection.
+fn tir_badges(ask: &Ask, lay: &Layout) -> Vec<Label> {
+    (lay.marks.tir.iter())
+        .map(|t| Label {
+            boxed: true,
+            size: ask.scale.text - 1.0,
+            tag: ask.reveal.label(t.node, true),
+            ..ask.text(t.text.clone(), palette::REFRACTED, ask.point(t.at, 8.0))
+        })
+        .collect()
+}
+
+/// The hits in the frame, numbered P1, P2, … in the layout's order.
+fn hit_names(ask: &Ask, lay: &Layout) -> Vec<Label> {
+    (lay.hits.iter().enumerate())
+        .filter(|(_, h)| ask.fig.shows(h.at))
+        .map(|(k, h)| Label {
+            tag: ask.reveal.label(h.node, true),
+            ..ask.text(format!("P{}", k + 1), palette::INK, ask.point(h.at, 5.0))
+        })
+        .collect()
+}
+
+/// Each index of a refracting boundary on its own side, along the normal: left
+/// out rather than led across the boundary when that side has no room.
+fn indices(ask: &Ask, lay: &Layout) -> Vec<Label> {
+    let mut out = Vec::new();
+    for b in &lay.marks.boundaries {
+        for (label, side) in [(&b.n1, 1.0), (&b.n2, -1.0)] {
+            let at = ask.fig.to_px(b.at)
+                + DVec2::new(b.normal.x, -b.normal.y) * side * ask.scale.px(58.0);
             out.push(Label {
-                size: size - 2.0,
-                tag: reveal.label(a.node, true),
-                ..text(
-                    a.label.clone(),
-                    palette::INK,
-                    Target::Point {
-                        at,
-                        clearance: scale.px(3.0),
-                    },
-                )
+                size: ask.scale.text - 2.0,
+                optional: true,
+                tag: ask.reveal.label(b.node, true),
+                ..ask.text(label.clone(), palette::OBJECT, ask.pixel(at, 2.0))
             });
         }
     }
+    out
+}
+
+/// Each angle's name and value, just outside its arc's middle.
+fn angles(ask: &Ask, lay: &Layout) -> Vec<Label> {
+    (lay.marks.angles.iter())
+        .map(|a| {
+            let mid = (a.from + a.to).normalize_or(a.to);
+            let at = ask.fig.to_px(a.at) + DVec2::new(mid.x, -mid.y) * ask.scale.px(30.0);
+            Label {
+                size: ask.scale.text - 2.0,
+                tag: ask.reveal.label(a.node, true),
+                ..ask.text(a.label.clone(), palette::INK, ask.pixel(at, 3.0))
+            }
+        })
+        .collect()
+}
+
+/// The scene's own names: the lights in the frame, the arrows toward those
+/// outside it (`offscreen`, in pixels), the eye and the image plane.
+fn scene_names(
+    ask: &Ask,
+    scene: &Scene,
+    lay: &Layout,
+    offscreen: Vec<(DVec2, String)>,
+) -> Vec<Label> {
+    let (fig, ink) = (ask.fig, palette::INK);
+    let mut out = Vec::new();
     for (light, &p) in scene.lights.iter().zip(&lay.lights) {
         if fig.shows(p) {
-            out.push(text(light.name.clone(), palette::INK, point(p, 14.0)));
+            out.push(ask.text(light.name.clone(), ink, ask.point(p, 14.0)));
         }
     }
     for (at, name) in offscreen {
-        out.push(text(
-            name,
-            palette::INK,
-            Target::Point {
-                at,
-                clearance: scale.px(6.0),
-            },
-        ));
+        out.push(ask.text(name, ink, ask.pixel(at, 6.0)));
     }
     if fig.shows(lay.eye) {
-        out.push(text("eye".to_owned(), palette::INK, point(lay.eye, 6.0)));
+        out.push(ask.text("eye".to_owned(), ink, ask.point(lay.eye, 6.0)));
     }
     if let Some((a, b, _)) = lay.image_plane {
         let end = if fig.shows(a) { a } else { b };
         if fig.shows(end) {
             out.push(Label {
-                size: size - 2.0,
-                ..text("image plane".to_owned(), palette::INK, point(end, 3.0))
+                size: ask.scale.text - 2.0,
+                ..ask.text("image plane".to_owned(), ink, ask.point(end, 3.0))
             });
         }
     }
-    out.extend(object_labels(fig, scene, lay, size));
-    for t in &lay.marks.ticks {
-        out.push(Label {
-            size: size - 4.0,
-            optional: true,
-            tag: reveal.label(t.node, false),
-            ..text(t.label.clone(), palette::INK, point(t.at, 5.0))
-        });
-    }
-    for r in &lay.marks.roots {
-        // Its open dot stays: where many bounces repeat the same roots, the
-        // words that would need a leader across the crowd are left out.
-        out.push(Label {
-            size: size - 3.0,
-            optional: true,
-            tag: reveal.label(r.node, true),
-            ..text(r.label.clone(), palette::INK, point(r.at, 5.0))
-        });
-    }
-    for s in &lay.marks.steps {
-        out.push(Label {
-            size: size - 3.0,
-            optional: true,
-            boxed: true,
-            ..text(s.number.to_string(), palette::INK, point(s.at, 6.0))
-        });
-    }
-    for &(i, gap, on_ray, on_object) in &lay.near_misses {
-        out.push(text(
-            format!("misses '{}' by {}", scene.objects[i].name, num(gap)),
-            palette::SHADOW_BLOCKED,
-            point((on_ray + on_object) / 2.0, 3.0),
-        ));
-    }
     out
+}
+
+/// The small marks along the rays, each optional: the ticks of `t`, the
+/// roots passed over and the step numbers. A root's open dot stays: where
+/// many bounces repeat the same roots, the words that would need a leader
+/// across the crowd are left out.
+fn ray_marks(ask: &Ask, lay: &Layout) -> Vec<Label> {
+    let (size, ink) = (ask.scale.text, palette::INK);
+    let ticks = lay.marks.ticks.iter().map(|t| Label {
+        size: size - 4.0,
+        optional: true,
+        tag: ask.reveal.label(t.node, false),
+        ..ask.text(t.label.clone(), ink, ask.point(t.at, 5.0))
+    });
+    let roots = lay.marks.roots.iter().map(|r| Label {
+        size: size - 3.0,
+        optional: true,
+        tag: ask.reveal.label(r.node, true),
+        ..ask.text(r.label.clone(), ink, ask.point(r.at, 5.0))
+    });
+    let steps = lay.marks.steps.iter().map(|s| Label {
+        size: size - 3.0,
+        optional: true,
+        boxed: true,
+        ..ask.text(s.number.to_string(), ink, ask.point(s.at, 6.0))
+    });
+    ticks.chain(roots).chain(steps).collect()
+}
+
+/// How far a ray that hit nothing passed each object nearest it.
+fn near_misses(ask: &Ask, scene: &Scene, lay: &Layout) -> Vec<Label> {
+    (lay.near_misses.iter())
+        .map(|&(i, gap, on_ray, on_object)| {
+            ask.text(
+                format!("misses '{}' by {}", scene.objects[i].name, num(gap)),
+                palette::SHADOW_BLOCKED,
+                ask.point((on_ray + on_object) / 2.0, 3.0),
+            )
+        })
+        .collect()
 }
 
 /// Labels for the objects worth naming: those the tree touches, and the rest

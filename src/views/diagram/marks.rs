@@ -10,8 +10,10 @@ use glam::{DVec2, DVec3};
 
 use crate::geometry::object::Object;
 use crate::math::angle::angle_between;
-use crate::tree::arithmetic::Fate;
-use crate::tree::ray_tree::{Branch, HitRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord};
+use crate::tree::arithmetic::{Fate, RefractionRecord};
+use crate::tree::ray_tree::{
+    Branch, BranchRecord, HitRecord, RayKind, RayNode, RayTree, ShadowOutcomeRecord,
+};
 use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::options::{Labels, Options};
 use crate::views::diagram::projection::Projection;
@@ -171,95 +173,14 @@ pub fn marks(
     shown: &Option<Vec<usize>>,
 ) -> Marks {
     let mut m = Marks::default();
-    let depth_ok = |d: u32| options.depth.is_none_or(|max| d <= max);
-    let w = proj.toward_viewer();
-    let in_plane = |v: DVec3| v.normalize_or_zero().dot(w).abs() < 1e-6;
-    for (i, node) in tree.nodes.iter().enumerate() {
-        let Some(h) = &node.hit else { continue };
-        if !depth_ok(node.depth) || shown.as_ref().is_some_and(|s| !s.contains(&i)) {
-            continue;
-        }
-        let at = proj.point(h.point);
+    for (i, node, h) in drawn_hits(tree, options, shown) {
         if options.shadows {
             shadow_marks(node, i, proj, &mut m);
         }
-        let flat = in_plane(h.incoming) && in_plane(h.shading_normal);
-        let child_dir = |branch: &Option<crate::tree::ray_tree::BranchRecord>| {
-            branch
-                .as_ref()
-                .and_then(|b| b.node)
-                .filter(|&c| depth_ok(tree.nodes[c].depth))
-                .map(|c| tree.nodes[c].direction)
-        };
-        let unit = |v: DVec3| proj.vector(v).normalize_or_zero();
-        let (back, n) = (unit(-h.incoming), unit(h.shading_normal));
-        let labelled = options.labels == Labels::All && node.depth <= 2 && flat;
-        let reflected = child_dir(&node.reflected).filter(|&v| labelled && in_plane(v));
-        let refracted = child_dir(&node.refracted)
-            .filter(|&t| labelled && in_plane(t))
-            .zip(h.refraction.as_ref().and_then(|r| r.theta2));
-        let theta = angle_between(-h.incoming, h.shading_normal).to_degrees();
-        if reflected.is_some() || refracted.is_some() {
-            // One arc for the angle of incidence, named for both laws when both apply.
-            let name = match (reflected.is_some(), refracted.is_some()) {
-                (true, true) => "θ₁ = θᵢ",
-                (false, true) => "θ₁",
-                _ => "θᵢ",
-            };
-            m.angles.push(Angle {
-                at,
-                from: back,
-                to: n,
-                label: format!("{name} = {}", degrees(theta)),
-                guide: None,
-                node: i,
-            });
-        }
-        if let Some(v) = reflected {
-            m.angles.push(Angle {
-                at,
-                from: n,
-                to: unit(v),
-                label: format!("θᵣ = {}", degrees(theta)),
-                guide: None,
-                node: i,
-            });
-        }
-        if let Some((t, theta2)) = refracted {
-            m.angles.push(Angle {
-                at,
-                from: -n,
-                to: unit(t),
-                label: format!("θ₂ = {}", degrees(theta2)),
-                guide: Some(-n),
-                node: i,
-            });
-        }
-        let Some(r) = &h.refraction else { continue };
-        let tir = node
-            .refracted
-            .as_ref()
-            .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
-        if tir && flat {
-            let text = if m.tir.is_empty() {
-                format!(
-                    "total internal reflection: θ₁ = {} > critical angle {}",
-                    degrees(r.theta1),
-                    r.critical.map_or(String::new(), degrees)
-                )
-            } else {
-                "total internal reflection".to_owned()
-            };
-            m.tir.push(Tir { at, text, node: i });
-        }
-        if labelled {
-            m.boundaries.push(Boundary {
-                at,
-                normal: n,
-                n1: format!("n₁ = {}", num(h.n1)),
-                n2: format!("n₂ = {}", num(h.n2)),
-                node: i,
-            });
+        let seen = Seen::of(tree, i, h, proj, options);
+        m.angles.extend(angles(&seen, h, proj));
+        if let Some(r) = &h.refraction {
+            refraction_marks(&seen, node, h, r, &mut m);
         }
     }
     if options.ticks {
@@ -272,6 +193,134 @@ pub fn marks(
         m.steps = step_numbers(tree, steps, proj, options, shown);
     }
     m
+}
+
+/// A hit as the drawing plane shows it: what its angles, badge and indices
+/// need.
+struct Seen {
+    /// The hit's node.
+    node: usize,
+    /// The hit, drawn.
+    at: DVec2,
+    /// Back along the incoming ray, drawn (unit).
+    back: DVec2,
+    /// The normal the formulas use, drawn (unit).
+    n: DVec2,
+    /// The incoming ray and the normal lie in the drawing plane.
+    flat: bool,
+    /// Its angles and indices are named: every label asked for, a hit of the
+    /// first two levels, in the plane.
+    labelled: bool,
+    /// The reflected ray's direction, when drawn, named and in the plane.
+    reflected: Option<DVec3>,
+    /// The refracted ray's direction and θ₂, when drawn, named and in the plane.
+    refracted: Option<(DVec3, f64)>,
+}
+
+impl Seen {
+    fn of(tree: &RayTree, i: usize, h: &HitRecord, proj: &Projection, options: &Options) -> Self {
+        let node = &tree.nodes[i];
+        let depth_ok = |d: u32| options.depth.is_none_or(|max| d <= max);
+        let w = proj.toward_viewer();
+        let in_plane = |v: DVec3| v.normalize_or_zero().dot(w).abs() < 1e-6;
+        let flat = in_plane(h.incoming) && in_plane(h.shading_normal);
+        let child_dir = |branch: &Option<BranchRecord>| {
+            branch
+                .as_ref()
+                .and_then(|b| b.node)
+                .filter(|&c| depth_ok(tree.nodes[c].depth))
+                .map(|c| tree.nodes[c].direction)
+        };
+        let unit = |v: DVec3| proj.vector(v).normalize_or_zero();
+        let labelled = options.labels == Labels::All && node.depth <= 2 && flat;
+        Seen {
+            node: i,
+            at: proj.point(h.point),
+            back: unit(-h.incoming),
+            n: unit(h.shading_normal),
+            flat,
+            labelled,
+            reflected: child_dir(&node.reflected).filter(|&v| labelled && in_plane(v)),
+            refracted: child_dir(&node.refracted)
+                .filter(|&t| labelled && in_plane(t))
+                .zip(h.refraction.as_ref().and_then(|r| r.theta2)),
+        }
+    }
+}
+
+/// The arcs at a hit: the angle of incidence (one arc, named for both laws
+/// when both apply), the angle of reflection, the angle of refraction.
+fn angles(seen: &Seen, h: &HitRecord, proj: &Projection) -> Vec<Angle> {
+    let unit = |v: DVec3| proj.vector(v).normalize_or_zero();
+    let theta = angle_between(-h.incoming, h.shading_normal).to_degrees();
+    let angle = |from: DVec2, to: DVec2, label: String, guide: Option<DVec2>| Angle {
+        at: seen.at,
+        from,
+        to,
+        label,
+        guide,
+        node: seen.node,
+    };
+    let mut out = Vec::new();
+    let name = match (seen.reflected.is_some(), seen.refracted.is_some()) {
+        (false, false) => None,
+        (true, true) => Some("θ₁ = θᵢ"),
+        (false, true) => Some("θ₁"),
+        (true, false) => Some("θᵢ"),
+    };
+    if let Some(name) = name {
+        let label = format!("{name} = {}", degrees(theta));
+        out.push(angle(seen.back, seen.n, label, None));
+    }
+    if let Some(v) = seen.reflected {
+        let label = format!("θᵣ = {}", degrees(theta));
+        out.push(angle(seen.n, unit(v), label, None));
+    }
+    if let Some((t, theta2)) = seen.refracted {
+        let label = format!("θ₂ = {}", degrees(theta2));
+        out.push(angle(-seen.n, unit(t), label, Some(-seen.n)));
+    }
+    out
+}
+
+/// At a refracting hit: a badge where total internal reflection happened
+/// (the first one with its angles), and the indices either side.
+fn refraction_marks(
+    seen: &Seen,
+    node: &RayNode,
+    h: &HitRecord,
+    r: &RefractionRecord,
+    m: &mut Marks,
+) {
+    let tir = node
+        .refracted
+        .as_ref()
+        .is_some_and(|b| b.outcome == Branch::TotalInternalReflection);
+    if tir && seen.flat {
+        let text = if m.tir.is_empty() {
+            format!(
+                "total internal reflection: θ₁ = {} > critical angle {}",
+                degrees(r.theta1),
+                r.critical.map_or(String::new(), degrees)
+            )
+        } else {
+            "total internal reflection".to_owned()
+        };
+        m.tir.push(Tir {
+            at: seen.at,
+            text,
+            node: seen.node,
+        });
+    }
+    if seen.labelled {
+        m.boundaries.push(Boundary {
+            at: seen.at,
+            normal: seen.n,
+            n1: format!("n₁ = {}", num(h.n1)),
+            n2: format!("n₂ = {}", num(h.n2)),
+            node: seen.node,
+        });
+    }
 }
 
 fn shadow_marks(node: &RayNode, i: usize, proj: &Projection, m: &mut Marks) {

@@ -2,7 +2,7 @@
 //! slide draws it. The scene is projected onto a drawing plane
 //! ([`projection`], [`section`]), the recorded rays laid out on it
 //! ([`arrange`] into a [`layout::Layout`], framed by [`frame`], annotated by
-//! [`marks`] and [`boxes`]), then drawn ([`draw`], with [`labels`]). The
+//! [`marks`] and [`boxes`]), then drawn ([`draw`], with [`labels`] and a legend). The
 //! camera's and an object's own space have views of their own.
 
 pub mod options; // what the reader asks of a diagram: the fit, the labels, the plane
@@ -16,6 +16,7 @@ pub mod marks; // the angles, indices and badges a slide puts on a diagram
 pub mod arrange; // laying a recorded tree out on the drawing plane
 pub mod reveal; // when each part of a diagram appears, tagged in its SVG for the players
 pub mod labels; // what a ray diagram labels, and drawing the labels
+mod legend; // the legend: only what is drawn, in the corner that hides the least
 pub mod draw; // a ray diagram as a figure
 pub mod camera_view; // the image plane face-on, with a pixel's place on it
 pub mod object_view; // a transformed sphere's hit in its own space, beside the world

@@ -8,13 +8,13 @@
 use glam::{DVec2, DVec3};
 
 use crate::figure::canvas::{Anchor, Figure};
-use crate::figure::labels::{self, Label, PxRect, Target};
+use crate::figure::labels::{self, Label, PxRect};
 use crate::figure::pen::{Pen, palette};
 use crate::geometry::object::Shape;
 use crate::scene::Scene;
 use crate::tree::arithmetic::Fate;
 use crate::tree::document::TraceDocument;
-use crate::tree::ray_tree::HitRecord;
+use crate::tree::ray_tree::{HitRecord, TestRecord};
 use crate::views::diagram::arrange::layout;
 use crate::views::diagram::draw::draw_with_labels;
 use crate::views::diagram::options::Options;
@@ -82,17 +82,16 @@ pub fn draw_marked(
     };
     let mut left = draw_with_labels(trace, scene, &world)?.figure;
     let normals = point_rule_normal(&mut left, trace, scene, &world, hit)?;
-    let (right, axes, hit_px) = own_space(
-        sphere.center,
-        sphere.radius,
-        (ray.origin, ray.direction),
-        hit.t,
+    let space = OwnSpace {
+        center: sphere.center,
+        radius: sphere.radius,
+        s: ray.origin,
+        c: ray.direction,
+        t_h: hit.t,
         test,
-        options.width - half,
-        height,
-        &scale,
-        options.svg,
-    )?;
+    };
+    let (right, axes, hit_px) =
+        own_space(&space, (options.width - half, height), &scale, options.svg)?;
     let mut page = Figure::page(options.width, options.height).ok_or("the figure is too small")?;
     if options.svg {
         page = page.with_svg();
@@ -201,16 +200,41 @@ pub fn object_axes_plane(c: DVec3, rel: DVec3) -> (DVec3, DVec3, DVec3) {
     (e1, n.cross(e1), n)
 }
 
-/// The sphere's own space, in the plane of its center and the ray.
-#[allow(clippy::too_many_arguments)]
-fn own_space(
+/// The sphere and the inverse-transformed ray `S' + t·c'` in its own space:
+/// what the object-space panel draws.
+struct OwnSpace<'a> {
+    /// The sphere's center in its own space.
     center: DVec3,
+    /// Its radius there.
     radius: f64,
-    (s, c): (DVec3, DVec3),
+    /// `S'`.
+    s: DVec3,
+    /// `c'`.
+    c: DVec3,
+    /// The hit's `t`, the same as the world ray's.
     t_h: f64,
-    test: &crate::tree::ray_tree::TestRecord,
-    width: u32,
-    height: u32,
+    /// The test of the sphere, with every root.
+    test: &'a TestRecord,
+}
+
+/// Where the object-space panel draws the ray, in its drawing plane.
+struct OwnRay {
+    /// Where the ray is drawn from: `S'` itself, or the frame's edge on the
+    /// way from it.
+    start: DVec2,
+    /// `S'` is near enough to be in the frame.
+    near_s: bool,
+    /// `P' = S' + t_h·c'`.
+    hit: DVec2,
+    /// The farthest root, where the line through the sphere ends.
+    far: DVec2,
+}
+
+/// The sphere's own space, in the plane of its center and the ray: the
+/// sphere, its axes, the ray and its roots, their names, the title.
+fn own_space(
+    space: &OwnSpace,
+    (width, height): (u32, u32),
     scale: &Scale,
     svg: bool,
 ) -> Result<(Figure, Vec<Axis>, DVec2), String> {
@@ -220,13 +244,61 @@ fn own_space(
     if svg {
         fig = fig.with_svg();
     }
-    let (e1, e2, normal) = object_axes_plane(c, s - center);
-    let at = |p: DVec3| DVec2::new((p - center).dot(e1), (p - center).dot(e2));
-    let far_root = test.roots.iter().map(|r| r.t).fold(t_h, f64::max);
-    // Framed on the sphere; S' joins the frame only when it is near.
+    let (e1, e2, normal) = object_axes_plane(space.c, space.s - space.center);
+    let at = |p: DVec3| DVec2::new((p - space.center).dot(e1), (p - space.center).dot(e2));
+    let drawn = frame_own_space(&mut fig, space, &at);
+    fig.ellipse(
+        DVec2::ZERO,
+        [DVec2::X * space.radius, DVec2::Y * space.radius],
+        Some(([244, 226, 190], 255)),
+        Some(Pen::solid(palette::OBJECT, 1.6).scaled(scale.k as f32)),
+    );
+    let axes = draw_own_axes(&mut fig, (e1, e2, normal), space.radius, scale);
+    draw_own_ray(&mut fig, &drawn, scale);
+    let mut labels = ray_labels(&fig, space, &drawn, scale);
+    labels.extend((axes.iter()).map(|(tip, name)| own_label(&fig, name.clone(), *tip, 3.0, scale)));
+    let mut dots = vec![PxRect::around(fig.to_px(drawn.hit), 6.0 * scale.k)];
+    if drawn.near_s {
+        dots.push(PxRect::around(fig.to_px(drawn.start), 6.0 * scale.k));
+    }
+    let (root_labels, root_dots) = draw_other_roots(&mut fig, space, &at, scale);
+    labels.extend(root_labels);
+    dots.extend(root_dots);
+    let lines = own_lines(&fig, &drawn, space.radius, &axes);
+    for p in labels::place_weighted(labels, &dots, &lines, PxRect::frame_of(&fig)) {
+        p.draw(&mut fig, 1.0);
+    }
+    let (vlo, vhi) = fig.visible();
+    let sz = scale.text - 1.0;
+    let title = fig.to_px(DVec2::new(vlo.x, vhi.y)) + DVec2::new(4.0, -f64::from(sz) * 0.6);
+    let words = format!(
+        "object space: the untransformed sphere; c' = M⁻¹c = {}",
+        vec3(space.c)
+    );
+    fig.text_px(title, &words, sz, palette::INK, Anchor::Left, false);
+    fig.frame_border();
+    let axes = axes
+        .into_iter()
+        .map(|(tip, name)| (name, fig.to_px(DVec2::ZERO), fig.to_px(tip)))
+        .collect();
+    let hit = fig.to_px(drawn.hit);
+    Ok((fig, axes, hit))
+}
+
+/// Frames the panel on the sphere, with the hit and the farthest root; `S'`
+/// joins the frame only when it is near. Returns where the ray's marks go.
+fn frame_own_space(fig: &mut Figure, space: &OwnSpace, at: &impl Fn(DVec3) -> DVec2) -> OwnRay {
+    let (s, c, radius) = (space.s, space.c, space.radius);
+    let far_root = space
+        .test
+        .roots
+        .iter()
+        .map(|r| r.t)
+        .fold(space.t_h, f64::max);
+    let hit = at(s + space.t_h * c);
     let near_s = at(s).length() <= 3.5 * radius;
     let mut pts = vec![DVec2::splat(-1.6 * radius), DVec2::splat(1.6 * radius)];
-    pts.extend([at(s + t_h * c), at(s + far_root * c)]);
+    pts.extend([hit, at(s + far_root * c)]);
     if near_s {
         pts.push(at(s));
     }
@@ -239,20 +311,28 @@ fn own_space(
     let pad = (hi - lo).max_element() * 0.08;
     fig.fit(lo - pad, hi + pad, 0.0);
     let (vlo, vhi) = fig.visible();
-    // Where the ray comes into view: S' itself, or the frame's edge on the way from it.
     let start = if near_s {
         at(s)
     } else {
-        crate::figure::clip::clip_segment(at(s), at(s + t_h * c), vlo, vhi)
-            .map_or(at(s), |(a, _)| a)
+        crate::figure::clip::clip_segment(at(s), hit, vlo, vhi).map_or(at(s), |(a, _)| a)
     };
-    fig.ellipse(
-        DVec2::ZERO,
-        [DVec2::X * radius, DVec2::Y * radius],
-        Some(([244, 226, 190], 255)),
-        Some(Pen::solid(palette::OBJECT, 1.6).scaled(scale.k as f32)),
-    );
-    // The object's own axes from its center, as they fall on the drawing plane.
+    OwnRay {
+        start,
+        near_s,
+        hit,
+        far: at(s + far_root * c),
+    }
+}
+
+/// The object's own axes from its center, as they fall on the drawing plane
+/// `(e1, e2, normal)`, longest first: an axis nearly on end, or drawn over a
+/// longer one, would only confuse. Returns each tip with its name.
+fn draw_own_axes(
+    fig: &mut Figure,
+    (e1, e2, normal): (DVec3, DVec3, DVec3),
+    radius: f64,
+    scale: &Scale,
+) -> Vec<(DVec2, String)> {
     let axis_pen = Pen::solid(palette::INK, 1.2).scaled(scale.k as f32);
     let mut axes: Vec<(DVec2, String)> = Vec::new();
     let mut onto: Vec<(DVec3, &str, DVec2)> =
@@ -262,7 +342,6 @@ fn own_space(
             .collect();
     onto.sort_by(|a, b| b.2.length().total_cmp(&a.2.length()));
     for (axis, name, v) in onto {
-        // An axis nearly on end, or drawn over a longer one, would only confuse.
         let along_drawn = axes
             .iter()
             .any(|(tip, _)| tip.normalize().dot(v.normalize()) > 0.98);
@@ -278,55 +357,66 @@ fn own_space(
             format!("{name}{}", if exact { "" } else { " (foreshortened)" }),
         ));
     }
+    axes
+}
+
+/// The ray to the hit, on through the sphere to the farthest root, with `S'`
+/// (when near) and the hit as dots.
+fn draw_own_ray(fig: &mut Figure, drawn: &OwnRay, scale: &Scale) {
     let pen = Pen::solid(palette::PRIMARY, 2.5).scaled(scale.k as f32);
-    let hit = at(s + t_h * c);
-    fig.arrow(start, hit, pen);
-    fig.line(hit, at(s + far_root * c), pen.passing());
-    if near_s {
-        fig.dot(at(s), (scale.text * 0.3).max(3.0), palette::INK, None);
+    fig.arrow(drawn.start, drawn.hit, pen);
+    fig.line(drawn.hit, drawn.far, pen.passing());
+    let r = (scale.text * 0.3).max(3.0);
+    if drawn.near_s {
+        fig.dot(drawn.start, r, palette::INK, None);
     }
-    fig.dot(
-        hit,
-        (scale.text * 0.3).max(3.0),
-        palette::PRIMARY,
-        Some(palette::INK),
-    );
-    let sz = scale.text - 1.0;
-    let k = scale.k;
-    let point = |fig: &Figure, p: DVec2, r: f64| Target::Point {
-        at: fig.to_px(p),
-        clearance: r * k,
-    };
-    let label = |text: String, target: Target, optional: bool| Label {
+    fig.dot(drawn.hit, r, palette::PRIMARY, Some(palette::INK));
+}
+
+/// A plain label at `p` (drawing units) in the panel's ink.
+fn own_label(fig: &Figure, text: String, p: DVec2, r: f64, scale: &Scale) -> Label {
+    Label::at_point(
         text,
-        size: sz,
-        color: palette::INK,
-        target,
-        boxed: false,
-        optional,
-        tag: String::new(),
-    };
-    let mut labels = vec![
-        label(
-            format!("S' = M⁻¹S = {}", vec3(s)) + if near_s { "" } else { " (off the frame)" },
-            point(&fig, start, 6.0),
-            false,
+        scale.text - 1.0,
+        palette::INK,
+        fig.to_px(p),
+        r * scale.k,
+    )
+}
+
+/// The names of `S'` and of the hit with its `t`.
+fn ray_labels(fig: &Figure, space: &OwnSpace, drawn: &OwnRay, scale: &Scale) -> Vec<Label> {
+    let (s, c, t_h) = (space.s, space.c, space.t_h);
+    let off = if drawn.near_s { "" } else { " (off the frame)" };
+    vec![
+        own_label(
+            fig,
+            format!("S' = M⁻¹S = {}", vec3(s)) + off,
+            drawn.start,
+            6.0,
+            scale,
         ),
-        label(
+        own_label(
+            fig,
             format!("tₕ = {}: P' = S' + tₕ·c' = {}", num(t_h), vec3(s + t_h * c)),
-            point(&fig, hit, 6.0),
-            false,
+            drawn.hit,
+            6.0,
+            scale,
         ),
-    ];
-    for (tip, name) in &axes {
-        labels.push(label(name.clone(), point(&fig, *tip, 3.0), false));
-    }
-    let mut dots = vec![PxRect::around(fig.to_px(hit), 6.0 * k)];
-    if near_s {
-        dots.push(PxRect::around(fig.to_px(start), 6.0 * k));
-    }
-    for r in test.roots.iter().filter(|r| r.fate != Fate::Chosen) {
-        let p = at(s + r.t * c);
+    ]
+}
+
+/// The sphere's roots that are not the hit, as open dots; returns their
+/// labels (left out where there is no room) and their dots' boxes.
+fn draw_other_roots(
+    fig: &mut Figure,
+    space: &OwnSpace,
+    at: &impl Fn(DVec3) -> DVec2,
+    scale: &Scale,
+) -> (Vec<Label>, Vec<PxRect>) {
+    let (mut labels, mut dots) = (Vec::new(), Vec::new());
+    for r in space.test.roots.iter().filter(|r| r.fate != Fate::Chosen) {
+        let p = at(space.s + r.t * space.c);
         fig.dot(
             p,
             (scale.text * 0.25).max(2.5),
@@ -334,18 +424,23 @@ fn own_space(
             Some(palette::INK),
         );
         labels.push(Label {
-            size: sz - 1.0,
-            ..label(format!("t = {}", num(r.t)), point(&fig, p, 5.0), true)
+            size: scale.text - 2.0,
+            optional: true,
+            ..own_label(fig, format!("t = {}", num(r.t)), p, 5.0, scale)
         });
-        dots.push(PxRect::around(fig.to_px(p), 5.0 * k));
+        dots.push(PxRect::around(fig.to_px(p), 5.0 * scale.k));
     }
-    let f = fig.frame();
-    let frame = PxRect {
-        min: DVec2::new(f64::from(f.left()), f64::from(f.top())),
-        max: DVec2::new(f64::from(f.right()), f64::from(f.bottom())),
-    };
-    // Labels keep off the ray (most) and the sphere's outline, and off the dots.
-    let mut lines = vec![([fig.to_px(start), fig.to_px(at(s + far_root * c))], 4)];
+    (labels, dots)
+}
+
+/// The lines labels keep off: the ray most, the sphere's outline and the axes less.
+fn own_lines(
+    fig: &Figure,
+    drawn: &OwnRay,
+    radius: f64,
+    axes: &[(DVec2, String)],
+) -> Vec<([DVec2; 2], usize)> {
+    let mut lines = vec![([fig.to_px(drawn.start), fig.to_px(drawn.far)], 4)];
     let rim = |k: u32| {
         let a = std::f64::consts::TAU * f64::from(k) / 48.0;
         fig.to_px(DVec2::new(a.cos(), a.sin()) * radius)
@@ -355,26 +450,5 @@ fn own_space(
         axes.iter()
             .map(|(tip, _)| ([fig.to_px(DVec2::ZERO), fig.to_px(*tip)], 2)),
     );
-    for p in labels::place_weighted(labels, &dots, &lines, frame) {
-        p.draw(&mut fig, 1.0);
-    }
-    let title = fig.to_px(DVec2::new(vlo.x, vhi.y)) + DVec2::new(4.0, -f64::from(sz) * 0.6);
-    fig.text_px(
-        title,
-        &format!(
-            "object space: the untransformed sphere; c' = M⁻¹c = {}",
-            vec3(c)
-        ),
-        sz,
-        palette::INK,
-        Anchor::Left,
-        false,
-    );
-    fig.frame_border();
-    let axes = axes
-        .into_iter()
-        .map(|(tip, name)| (name, fig.to_px(DVec2::ZERO), fig.to_px(tip)))
-        .collect();
-    let hit = fig.to_px(hit);
-    Ok((fig, axes, hit))
+    lines
 }

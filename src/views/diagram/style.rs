@@ -52,6 +52,12 @@ pub fn ray_pen(kind: RayKind) -> Pen {
 /// The pen of surface normals.
 pub const NORMAL: Pen = Pen::solid(palette::NORMAL, 2.0);
 
+/// The pen of a box a ray entered.
+pub const MET_BOX: Pen = Pen::solid(palette::BOX, 1.2);
+
+/// The pen of a box tested and missed.
+pub const MISSED_BOX: Pen = Pen::pattern(palette::BOX, 0.9, &[2.0, 3.0]);
+
 /// Sizes scaled with the figure, so 600×400 reads as well as 1200×800.
 #[derive(Clone, Copy, Debug)]
 pub struct Scale {

@@ -13,8 +13,10 @@ use crate::tree::arithmetic::{
 use crate::tree::ray_tree::{
     HitRecord, LightRecord, LocalRecord, RayNode, ShadowOutcomeRecord, ShadowRecord, TestRecord,
 };
-use crate::views::explain_shapes::{cone_quadratic, crossing_fate, polygon};
 use crate::views::numbers::{color, degrees, factor, num, vec3};
+
+mod shapes; // the polygon's and the cone's tests, written out
+use shapes::{cone_quadratic, cone_roots, polygon};
 
 /// A step's headline and the lines that show its arithmetic.
 pub type Lines = (String, Vec<String>);
@@ -103,13 +105,27 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
         TestMethod::MollerTrumbore => " (Möller–Trumbore)",
         _ => "",
     };
-    let fates = fates(&test.roots, hit_found);
+    let found = found(test, node, &fates(&test.roots, hit_found), &mut details);
+    (
+        format!("test {kind} '{}'{method}: {found}", test.name),
+        details,
+    )
+}
+
+/// What the test's arithmetic found, in words, with the lines that show its
+/// numbers added to `details`; `fates` are its roots with what became of each.
+fn found(
+    test: &TestRecord,
+    node: &RayNode,
+    fates: &[(f64, &'static str)],
+    details: &mut Vec<String>,
+) -> String {
     let roots = fates
         .iter()
         .map(|(t, why)| format!("t = {} ({why})", num(*t)))
         .collect::<Vec<_>>()
         .join(", ");
-    let found = match &test.arithmetic {
+    match &test.arithmetic {
         Some(Arithmetic::Quadratic {
             origin,
             direction,
@@ -118,60 +134,14 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
             c,
             discriminant,
         }) => {
-            let (s, c_) = if test.object_ray.is_some() {
-                ("S'", "c'")
-            } else {
-                ("S", "c")
-            };
-            let (seen_from, seen_along) = test
-                .object_ray
-                .map_or((node.origin, node.direction), |r| (r.origin, r.direction));
-            let (s, c_) = if (*origin, *direction) == (seen_from, seen_along) {
-                (s, c_)
-            } else {
-                details.push(format!(
-                    "the sphere moved to the origin and scaled to radius 1 ({s} → ({s} − center)/r, {c_} → {c_}/r): S₁ = {}, c₁ = {}",
-                    vec3(*origin),
-                    vec3(*direction)
-                ));
-                ("S₁", "c₁")
-            };
+            let (s, c_) = sphere_names(test, node, (*origin, *direction), details);
             details.push(format!(
                 "A = |{c_}|² = {}, B = {s}·{c_} = {}, C = |{s}|² − 1 = {}",
                 num(*a),
                 num(*b),
                 num(*c)
             ));
-            let d = *discriminant;
-            let lecture_count = if d < 0.0 {
-                0
-            } else if d == 0.0 {
-                1
-            } else {
-                2
-            };
-            if test.method == TestMethod::StableQuadratic && test.roots.len() != lecture_count {
-                // B² − AC cancels where B² and AC are huge and nearly equal (a far
-                // sphere); the stable form computes it without the subtraction.
-                let found = match test.roots.len() {
-                    0 => "no root: the ray misses".to_owned(),
-                    1 => format!("one root: {roots}"),
-                    n => format!("{n} roots: {roots}"),
-                };
-                format!(
-                    "B² − AC = {} as the lecture writes it (nearly equal numbers subtracted: rounding decides); the stable form (Ray Tracing Gems ch. 7) finds {found}",
-                    num(d)
-                )
-            } else if d < 0.0 {
-                format!("B² − AC = {} < 0: no root, the ray misses", num(d))
-            } else if d == 0.0 {
-                format!("B² − AC = 0: one root, t = −B/A: {roots}")
-            } else {
-                format!(
-                    "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {roots}",
-                    num(d)
-                )
-            }
+            sphere_roots(test, *discriminant, &roots)
         }
         Some(Arithmetic::Plane { n_dot_c, numerator }) if *n_dot_c != 0.0 => {
             let root = fates
@@ -187,15 +157,7 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
         Some(Arithmetic::Plane { .. }) => "n·c = 0: the ray runs parallel, no root".to_owned(),
         Some(Arithmetic::Slabs { axes }) => {
             details.push(slabs(axes));
-            match slabs_overlap(axes) {
-                None => "the slabs' intervals do not overlap: no root".to_owned(),
-                Some(leave) if !leave.is_finite() => {
-                    "the slabs' intervals overlap without end: no root".to_owned()
-                }
-                Some(_) => format!(
-                    "the slabs' intervals overlap: enters at the last slab's start, leaves at the first's end: {roots}"
-                ),
-            }
+            slabs_roots(axes, &roots)
         }
         Some(Arithmetic::Barycentric { weights }) => format!(
             "{roots}, barycentric weights {}",
@@ -225,45 +187,92 @@ pub fn test(test: &TestRecord, kind: &str, node: &RayNode) -> Lines {
             crossings,
             ..
         }) => {
-            let names = if test.object_ray.is_some() {
-                ("S'", "c'")
-            } else {
-                ("S", "c")
-            };
-            details.extend(cone_quadratic(*ratio, [*a, *b, *c], names));
-            let each = crossings
-                .iter()
-                .map(|x| {
-                    let why = crossing_fate(x.t, x.z, *ratio, &fates);
-                    format!("t = {} at z = {} ({why})", num(x.t), num(x.z))
-                })
-                .collect::<Vec<_>>()
-                .join(", ");
-            let d = *discriminant;
-            if *a == 0.0 && *b == 0.0 {
-                "A = B = 0: the ray runs along the surface's lines and never crosses it: no root"
-                    .to_owned()
-            } else if *a == 0.0 {
-                format!(
-                    "A = 0: the ray runs parallel to a line of the surface, so 2B t + C = 0 has one root, t = −C/(2B): {each}"
-                )
-            } else if d < 0.0 {
-                format!("B² − AC = {} < 0: no root, the ray misses", num(d))
-            } else if d == 0.0 {
-                format!("B² − AC = 0: one root, t = −B/A: {each}")
-            } else {
-                format!(
-                    "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {each}",
-                    num(d)
-                )
-            }
+            details.extend(cone_quadratic(*ratio, [*a, *b, *c], ray_names(test)));
+            cone_roots(*ratio, [*a, *b], *discriminant, crossings, fates)
         }
         None => "miss".to_owned(),
+    }
+}
+
+/// The ray's names in the test's formulas: `S'` and `c'` for the
+/// inverse-transformed ray, else `S` and `c`.
+fn ray_names(test: &TestRecord) -> (&'static str, &'static str) {
+    if test.object_ray.is_some() {
+        ("S'", "c'")
+    } else {
+        ("S", "c")
+    }
+}
+
+/// The ray's names in the sphere's quadratic: the test's own, or `S₁` and
+/// `c₁` when the sphere was moved to the origin and scaled to radius 1 (a
+/// detail line then says so).
+fn sphere_names(
+    test: &TestRecord,
+    node: &RayNode,
+    (origin, direction): (DVec3, DVec3),
+    details: &mut Vec<String>,
+) -> (&'static str, &'static str) {
+    let (s, c_) = ray_names(test);
+    let (seen_from, seen_along) = test
+        .object_ray
+        .map_or((node.origin, node.direction), |r| (r.origin, r.direction));
+    if (origin, direction) == (seen_from, seen_along) {
+        return (s, c_);
+    }
+    details.push(format!(
+        "the sphere moved to the origin and scaled to radius 1 ({s} → ({s} − center)/r, {c_} → {c_}/r): S₁ = {}, c₁ = {}",
+        vec3(origin),
+        vec3(direction)
+    ));
+    ("S₁", "c₁")
+}
+
+/// The sphere's roots by the sign of `B² − AC` (`d`), or, where the stable
+/// form found other roots than the lecture's would, both.
+fn sphere_roots(test: &TestRecord, d: f64, roots: &str) -> String {
+    let lecture_count = if d < 0.0 {
+        0
+    } else if d == 0.0 {
+        1
+    } else {
+        2
     };
-    (
-        format!("test {kind} '{}'{method}: {found}", test.name),
-        details,
-    )
+    if test.method == TestMethod::StableQuadratic && test.roots.len() != lecture_count {
+        // B² − AC cancels where B² and AC are huge and nearly equal (a far
+        // sphere); the stable form computes it without the subtraction.
+        let found = match test.roots.len() {
+            0 => "no root: the ray misses".to_owned(),
+            1 => format!("one root: {roots}"),
+            n => format!("{n} roots: {roots}"),
+        };
+        format!(
+            "B² − AC = {} as the lecture writes it (nearly equal numbers subtracted: rounding decides); the stable form (Ray Tracing Gems ch. 7) finds {found}",
+            num(d)
+        )
+    } else if d < 0.0 {
+        format!("B² − AC = {} < 0: no root, the ray misses", num(d))
+    } else if d == 0.0 {
+        format!("B² − AC = 0: one root, t = −B/A: {roots}")
+    } else {
+        format!(
+            "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {roots}",
+            num(d)
+        )
+    }
+}
+
+/// The box's roots: where the slabs' intervals overlap, if they do.
+fn slabs_roots(axes: &[Slab; 3], roots: &str) -> String {
+    match slabs_overlap(axes) {
+        None => "the slabs' intervals do not overlap: no root".to_owned(),
+        Some(leave) if !leave.is_finite() => {
+            "the slabs' intervals overlap without end: no root".to_owned()
+        }
+        Some(_) => format!(
+            "the slabs' intervals overlap: enters at the last slab's start, leaves at the first's end: {roots}"
+        ),
+    }
 }
 
 /// The verdict read off the intervals the trace prints, by the box test's own

@@ -1,7 +1,8 @@
 //! The tests of the shapes beyond the lecture's sphere, in words: the
 //! polygon's plane and crossing number, the open cone's quadratic and which
-//! of its crossings fall on the cone. Part of [`crate::views::explain`].
+//! of its crossings fall on the cone.
 
+use crate::tree::arithmetic::Crossing;
 use crate::views::numbers::{factor, num};
 
 /// A polygon's test in words: the plane's `t`, then the crossing number's
@@ -86,14 +87,45 @@ pub(super) fn cone_quadratic(ratio: f64, [a, b, c]: [f64; 3], (s, d): (&str, &st
     ]
 }
 
+/// The cone's roots: which the quadratic has (`A` and `B` decide when the
+/// ray runs along the surface's lines, then `B² − AC`), each crossing with
+/// its height and what became of it.
+pub(super) fn cone_roots(
+    ratio: f64,
+    [a, b]: [f64; 2],
+    d: f64,
+    crossings: &[Crossing],
+    fates: &[(f64, &'static str)],
+) -> String {
+    let each = crossings
+        .iter()
+        .map(|x| {
+            let why = crossing_fate(x.t, x.z, ratio, fates);
+            format!("t = {} at z = {} ({why})", num(x.t), num(x.z))
+        })
+        .collect::<Vec<_>>()
+        .join(", ");
+    if a == 0.0 && b == 0.0 {
+        "A = B = 0: the ray runs along the surface's lines and never crosses it: no root".to_owned()
+    } else if a == 0.0 {
+        format!(
+            "A = 0: the ray runs parallel to a line of the surface, so 2B t + C = 0 has one root, t = −C/(2B): {each}"
+        )
+    } else if d < 0.0 {
+        format!("B² − AC = {} < 0: no root, the ray misses", num(d))
+    } else if d == 0.0 {
+        format!("B² − AC = 0: one root, t = −B/A: {each}")
+    } else {
+        format!(
+            "B² − AC = {} > 0: two roots, t = (−B ± √(B² − AC))/A: {each}",
+            num(d)
+        )
+    }
+}
+
 /// What became of a crossing of the infinite cone at height `z`: off the open
 /// cone it is no root; on it, its fate among the test's roots.
-pub(super) fn crossing_fate(
-    t: f64,
-    z: f64,
-    ratio: f64,
-    fates: &[(f64, &'static str)],
-) -> &'static str {
+fn crossing_fate(t: f64, z: f64, ratio: f64, fates: &[(f64, &'static str)]) -> &'static str {
     if z < 0.0 {
         "below the open end z = 0: not on the cone"
     } else if ratio < 1.0 && z * (1.0 - ratio) > 1.0 {
