@@ -16,6 +16,7 @@
 use std::path::Path;
 use std::time::Instant;
 
+use raytree::geometry::structures::Structure;
 use raytree::methods::Accel;
 use raytree::scene::Scene;
 use raytree::trace::render::render_counting_with;

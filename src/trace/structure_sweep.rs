@@ -12,9 +12,9 @@
 
 use std::time::Instant;
 
+use crate::geometry::structures::Built;
 use crate::methods::{Accel, Level};
 use crate::scene::Scene;
-use crate::trace::accelerator::Structure;
 use crate::trace::progress::Progress;
 use crate::trace::render::{render_counting_with, render_with_tracer};
 use crate::trace::tracer::Tracer;
@@ -203,7 +203,7 @@ fn measure_scene(
         let building = Instant::now();
         let tracer = Tracer::new(scene);
         row.build_seconds = building.elapsed().as_secs_f64();
-        if let Some(Structure::Grid(grid)) = tracer.accelerator().structure() {
+        if let Some(Built::Grid(grid)) = tracer.accelerator().structure() {
             row.grid_cells = Some(grid.resolution());
         }
         // A fresh tracer for each render: none starts with another's blockers.
