@@ -16,6 +16,7 @@
 use std::path::Path;
 use std::time::Instant;
 
+use raytree::geometry::structures::Structure;
 use raytree::methods::Accel;
 use raytree::scene::Scene;
 use raytree::trace::render::render_counting_with;
@@ -43,13 +44,26 @@ fn main() {
     let quick = std::env::args().any(|a| a == "--test" || a == "--quick");
     let threads = rayon::current_num_threads();
     println!("raytree benchmarks on {threads} threads (medians; tracing only)\n");
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
+    shipped_scenes(&root, quick);
+    let per_ray = time_per_ray(quick);
+    let at = |n: usize| per_ray.iter().find(|p| p.0 == n).map(|p| p.1);
+    if let (Some(small), Some(large)) = (at(1_000), at(1_000_000)) {
+        println!(
+            "time per ray, 1,000,000 ÷ 1,000 objects: {:.2}× (target ≤ 2×)",
+            large / small
+        );
+    }
+    gaspra_hierarchy(&root);
+}
 
+/// Table 1: rays per second on the shipped scenes.
+fn shipped_scenes(root: &Path, quick: bool) {
     println!("Shipped scenes, 640×480, 1 sample per pixel, max depth 8");
     println!(
         "{:<14} {:>8} {:>10} {:>10} {:>12} {:>10}",
         "scene", "objects", "accel", "rays", "median ms", "M rays/s"
     );
-    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../scenes");
     for name in ["whitted.json", "spheres.json", "gaspra.json"] {
         let scene = raytree::scene::loader::load(&root.join(name)).expect("shipped scene");
         let accel = if Tracer::new(&scene).accelerator().bvh().is_some() {
@@ -68,7 +82,11 @@ fn main() {
             rays as f64 / seconds / 1e6
         );
     }
+}
 
+/// Table 2: time per ray as random spheres grow in number, with the
+/// hierarchy and without; returns (objects, seconds per ray with it).
+fn time_per_ray(quick: bool) -> Vec<(usize, f64)> {
     println!("\nTime per ray against object count (random spheres, 320×240, 1 spp)");
     println!(
         "{:>9} {:>10} {:>10} {:>14} {:>14} {:>12} {:>12}",
@@ -115,15 +133,11 @@ fn main() {
             none
         );
     }
+    per_ray
+}
 
-    let at = |n: usize| per_ray.iter().find(|p| p.0 == n).map(|p| p.1);
-    if let (Some(small), Some(large)) = (at(1_000), at(1_000_000)) {
-        println!(
-            "time per ray, 1,000,000 ÷ 1,000 objects: {:.2}× (target ≤ 2×)",
-            large / small
-        );
-    }
-
+/// Table 3: the Gaspra mesh's own hierarchy, built again and timed.
+fn gaspra_hierarchy(root: &Path) {
     let gaspra = raytree::scene::loader::load(&root.join("gaspra.json")).expect("shipped scene");
     for o in &gaspra.objects {
         if let raytree::geometry::object::Shape::Mesh(m) = &o.shape {

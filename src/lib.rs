@@ -16,7 +16,7 @@
 //! - local illumination: [`shading::phong`], with shadow rays in [`trace::tracer`];
 //! - reflected and refracted rays, Snell's law: [`shading::optics`];
 //! - the recursion that ties them together: [`trace::tracer`];
-//! - efficiency, avoiding intersection tests: [`geometry::bvh`], [`trace::accelerator`].
+//! - efficiency, avoiding intersection tests: [`geometry::structures`], [`trace::accelerator`].
 //!
 //! The types a program drives are re-exported here: load a [`Scene`], [`render`]
 //! it into an [`Image`], or [`record`] one pixel's [`RayTree`].

@@ -5,9 +5,8 @@ use std::ops::ControlFlow;
 
 use glam::DVec3;
 
-use crate::geometry::bvh::Bvh;
-
 use crate::geometry::hit::{Roots, Search, Surface, TestCounts};
+use crate::geometry::structures::bvh::Bvh;
 use crate::geometry::triangle::{ShearedRay, Triangle, TriangleHit};
 use crate::math::bounds::{Bounds, RayBox};
 use crate::math::ray::Ray;

@@ -1,7 +1,7 @@
 //! Render settings: how big the image is, how pixels are sampled, how deep the
 //! recursion goes, and which method each numerical step uses.
 
-use crate::geometry::{grid, octree};
+use crate::geometry::structures::{grid, octree};
 use crate::methods::{
     Accel, Antialiasing, IntersectionMethods, Level, Offset, SphereMethod, TriangleMethod, Weights,
 };
@@ -37,7 +37,7 @@ pub struct RenderSettings {
     #[serde(default)]
     pub accel: Accel,
     /// The grid's cells along the scene's longest side, the other sides in
-    /// proportion (`auto`: about four cells an object, see `geometry::grid`).
+    /// proportion (`auto`: about four cells an object, see `geometry::structures::grid`).
     #[serde(default)]
     pub grid_res: Level,
     /// The deepest level of the octree or the k-d tree (`auto`: 10 for the

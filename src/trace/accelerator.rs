@@ -7,16 +7,14 @@
 use std::cell::Cell;
 use std::ops::ControlFlow;
 
-use crate::geometry::bvh::Bvh;
-use crate::geometry::grid::Grid;
 use crate::geometry::hit::{Roots, Search, TestCounts};
-use crate::geometry::kdtree::KdTree;
 use crate::geometry::object::{Object, Shape};
-use crate::geometry::octree::{self, Octree};
 use crate::geometry::sphere::Sphere;
-use crate::math::bounds::{Bounds, RayBox};
+use crate::geometry::structures::bvh::Bvh;
+use crate::geometry::structures::{self, Built, Items, Subdivision};
+use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
-use crate::methods::{Accel, IntersectionMethods, Level};
+use crate::methods::{Accel, IntersectionMethods};
 use crate::scene::Scene;
 
 /// With [`Accel::Auto`], scenes with at least this many bounded objects get a
@@ -31,11 +29,12 @@ pub struct Accelerator {
     /// structure, as candidates (a sphere copied, as in `leaves`).
     always: Vec<Candidate>,
     /// The structure over the bounded objects.
-    structure: Option<Structure>,
-    /// The object index of each of the structure's primitives (but the BVH's).
+    structure: Option<Built>,
+    /// The object index of each of the structure's primitives, for a structure
+    /// that hands them out one by one (all but the BVH).
     names: Vec<u32>,
-    /// The hierarchy's objects in the order its leaves list them: a leaf is a
-    /// run of these.
+    /// The objects in the order a structure's leaves list them, for one whose
+    /// leaves are runs of that order (the BVH): a leaf is a run of these.
     leaves: Vec<Candidate>,
 }
 
@@ -87,19 +86,6 @@ impl Candidate {
     }
 }
 
-/// One of the efficiency slide's structures over the bounded objects.
-#[derive(Clone, Debug)]
-pub enum Structure {
-    /// A bounding volume hierarchy.
-    Bvh(Bvh),
-    /// A uniform grid.
-    Grid(Grid),
-    /// An octree.
-    Octree(Octree),
-    /// A k-d tree (the axis-aligned BSP tree).
-    Bsp(KdTree),
-}
-
 thread_local! {
     /// Accelerators built on this thread so far.
     static BUILT: Cell<u64> = const { Cell::new(0) };
@@ -131,32 +117,22 @@ impl Accelerator {
             .iter()
             .map(|&i| bounds[i as usize].expect("bounded"))
             .collect();
-        let depth = match scene.settings.tree_depth {
-            Level::Auto => None,
-            Level::Given(d) => Some(d),
+        let subdivision = Subdivision {
+            grid_res: scene.settings.grid_res,
+            depth_limit: scene.settings.tree_depth,
         };
-        let structure = match accel {
-            Accel::Grid => Structure::Grid(match scene.settings.grid_res {
-                Level::Auto => Grid::build(&boxes),
-                Level::Given(side) => Grid::build_with_side(&boxes, side),
-            }),
-            Accel::Octree => Structure::Octree(Octree::build_to_depth(
-                &boxes,
-                depth.unwrap_or(octree::MAX_DEPTH),
-            )),
-            Accel::Bsp => Structure::Bsp(KdTree::build_to_depth(&boxes, depth)),
-            _ => Structure::Bvh(Bvh::build(&boxes)),
-        };
-        // The BVH's leaves are runs of `leaves`; the other structures hand out
-        // their own indices, translated through `bounded` as they visit.
-        let (names, leaves) = match &structure {
-            Structure::Bvh(bvh) => {
-                let leaves = (bvh.leaf_order().iter())
+        let structure = structures::build(accel, &boxes, subdivision);
+        // A structure whose leaves are runs of one order (the BVH) hands out
+        // runs of `leaves`; the others hand out their own indices, translated
+        // through `bounded` as they visit.
+        let (names, leaves) = match structure.leaf_order() {
+            Some(order) => {
+                let leaves = (order.iter())
                     .map(|&i| Candidate::of(&scene.objects, bounded[i as usize]))
                     .collect();
                 (Vec::new(), leaves)
             }
-            _ => (bounded, Vec::new()),
+            None => (bounded, Vec::new()),
         };
         Accelerator {
             always: (always.into_iter())
@@ -203,32 +179,35 @@ impl Accelerator {
 
     /// The hierarchy, if the structure is one.
     pub fn bvh(&self) -> Option<&Bvh> {
-        match &self.structure {
-            Some(Structure::Bvh(b)) => Some(b),
-            _ => None,
-        }
+        self.structure.as_ref().and_then(Built::bvh)
     }
 
     /// The structure over the bounded objects, if any.
-    pub fn structure(&self) -> Option<&Structure> {
+    pub fn structure(&self) -> Option<&Built> {
         self.structure.as_ref()
     }
 
     /// Which structure the rays go through: the setting, with `auto` resolved
     /// (never [`Accel::Auto`]).
     pub fn kind(&self) -> Accel {
-        match &self.structure {
-            None => Accel::None,
-            Some(Structure::Bvh(_)) => Accel::Bvh,
-            Some(Structure::Grid(_)) => Accel::Grid,
-            Some(Structure::Octree(_)) => Accel::Octree,
-            Some(Structure::Bsp(_)) => Accel::Bsp,
+        self.structure.as_ref().map_or(Accel::None, Built::accel)
+    }
+
+    /// The candidates a structure hands out: a run of `leaves`, or the object
+    /// of `names` a primitive index stands for.
+    #[inline]
+    fn items(&self) -> Items<'_, Candidate, impl Fn(usize) -> Candidate + '_> {
+        Items {
+            in_leaf_order: &self.leaves,
+            named: |i| Candidate::Object(self.names[i]),
         }
     }
 
     /// Calls `visit(candidate, t_max)` for every object the ray may meet in
     /// `(t_min, *t_max)`: the unbounded ones first, then the hierarchy's, nearer
-    /// leaves first. `visit` may shrink `t_max` or break (see [`Bvh::traverse`]).
+    /// leaves first. `visit` may shrink `t_max` or break (see [`Structure::walk`]).
+    ///
+    /// [`Structure::walk`]: crate::geometry::structures::Structure::walk
     #[inline]
     pub fn visit(
         &self,
@@ -242,8 +221,8 @@ impl Accelerator {
     }
 
     /// [`Accelerator::visit`] with the hierarchy's boxes taken in their stored
-    /// order, not nearest first (see [`Bvh::traverse_leaves_any`]): for a
-    /// shadow ray, which any blocker ends.
+    /// order, not nearest first (see [`Built::walk_items_any`]): for a shadow
+    /// ray, which any blocker ends.
     #[inline]
     pub fn visit_any(
         &self,
@@ -253,23 +232,19 @@ impl Accelerator {
         tested: &mut TestCounts,
         mut visit: impl FnMut(&Candidate, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        if let Some(Structure::Bvh(bvh)) = &self.structure {
-            for candidate in &self.always {
-                visit(candidate, t_max)?;
-            }
-            let ray = RayBox::new(ray);
-            return bvh.traverse_leaves_any(&ray, t_min, t_max, tested, |run, t| {
-                for candidate in &self.leaves[run] {
-                    visit(candidate, t)?;
-                }
-                ControlFlow::Continue(())
-            });
+        for candidate in &self.always {
+            visit(candidate, t_max)?;
         }
-        self.visit(ray, t_min, t_max, tested, visit)
+        let Some(structure) = &self.structure else {
+            return ControlFlow::Continue(());
+        };
+        structure.walk_items_any(ray, t_min, t_max, tested, self.items(), visit)
     }
 
     /// [`Accelerator::visit`], also calling `seen(bounds, met)` for every box
-    /// of the hierarchy tested (see [`Bvh::traverse_leaves_seeing`]).
+    /// or cell of the structure tested (see [`Structure::walk`]).
+    ///
+    /// [`Structure::walk`]: crate::geometry::structures::Structure::walk
     #[inline]
     pub fn visit_seeing(
         &self,
@@ -286,26 +261,6 @@ impl Accelerator {
         let Some(structure) = &self.structure else {
             return ControlFlow::Continue(());
         };
-        let names = &self.names;
-        match structure {
-            Structure::Bvh(bvh) => {
-                let ray = RayBox::new(ray);
-                bvh.traverse_leaves_seeing(&ray, t_min, t_max, tested, seen, |run, t| {
-                    for candidate in &self.leaves[run] {
-                        visit(candidate, t)?;
-                    }
-                    ControlFlow::Continue(())
-                })
-            }
-            Structure::Grid(g) => g.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
-                visit(&Candidate::Object(names[i]), t)
-            }),
-            Structure::Octree(o) => o.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
-                visit(&Candidate::Object(names[i]), t)
-            }),
-            Structure::Bsp(k) => k.traverse_seeing(ray, t_min, t_max, tested, seen, |i, t| {
-                visit(&Candidate::Object(names[i]), t)
-            }),
-        }
+        structure.walk_items(ray, t_min, t_max, tested, seen, self.items(), visit)
     }
 }

@@ -12,9 +12,9 @@
 
 use std::time::Instant;
 
+use crate::geometry::structures::Built;
 use crate::methods::{Accel, Level};
 use crate::scene::Scene;
-use crate::trace::accelerator::Structure;
 use crate::trace::progress::Progress;
 use crate::trace::render::{render_counting_with, render_with_tracer};
 use crate::trace::tracer::Tracer;
@@ -203,7 +203,7 @@ fn measure_scene(
         let building = Instant::now();
         let tracer = Tracer::new(scene);
         row.build_seconds = building.elapsed().as_secs_f64();
-        if let Some(Structure::Grid(grid)) = tracer.accelerator().structure() {
+        if let Some(Built::Grid(grid)) = tracer.accelerator().structure() {
             row.grid_cells = Some(grid.resolution());
         }
         // A fresh tracer for each render: none starts with another's blockers.
@@ -361,47 +361,9 @@ fn parse_row(line: &str) -> Result<Row, String> {
     if scene.is_empty() || scene.chars().any(char::is_control) || scene.chars().count() > 100 {
         return Err("scene: must be a printable name of 1 to 100 characters".to_owned());
     }
-    let Some(structure) = STRUCTURES.iter().copied().find(|a| a.name() == f[1]) else {
-        return Err(format!(
-            "structure: '{}' is not none, bvh, grid, octree or bsp",
-            f[1]
-        ));
-    };
-    let grid = structure == Accel::Grid;
-    let grid_res = match (grid, f[2].as_str()) {
-        (false, "") => None,
-        (false, s) => {
-            return Err(format!(
-                "grid_res: '{s}' given for {}, which is no grid",
-                f[1]
-            ));
-        }
-        (true, "auto") => Some(Level::Auto),
-        (true, s) => Some(Level::Given(
-            s.parse::<u32>()
-                .ok()
-                .filter(|n| (1..=160).contains(n))
-                .ok_or_else(|| format!("grid_res: '{s}' is not auto or 1 to 160"))?,
-        )),
-    };
-    let grid_cells = match (grid, f[3].as_str()) {
-        (false, "") => None,
-        (false, s) => {
-            return Err(format!(
-                "grid_cells: '{s}' given for {}, which is no grid",
-                f[1]
-            ));
-        }
-        (true, s) => {
-            let n: Vec<usize> = s
-                .split('x')
-                .map(|v| v.parse::<usize>().ok().filter(|&n| (1..=1024).contains(&n)))
-                .collect::<Option<_>>()
-                .filter(|n: &Vec<usize>| n.len() == 3)
-                .ok_or_else(|| format!("grid_cells: '{s}' is not XxYxZ, each 1 to 1024"))?;
-            Some([n[0], n[1], n[2]])
-        }
-    };
+    let structure = parse_structure(&f[1])?;
+    let grid_res = parse_grid_res(structure, &f[1], &f[2])?;
+    let grid_cells = parse_grid_cells(structure, &f[1], &f[3])?;
     let (objects, rays, steps, primitives) = (whole(4)?, whole(5)?, whole(6)?, whole(7)?);
     if rays == 0 {
         return Err("rays: must be at least 1".to_owned());
@@ -425,8 +387,65 @@ fn parse_row(line: &str) -> Result<Row, String> {
         build_seconds: seconds(10, &f[10])?,
         run_seconds,
     };
-    // Written from the counts and runs by the same arithmetic, in numbers that
-    // read back exactly: any difference is an edit, not rounding.
+    check_ratios(&row, &f, &names)?;
+    Ok(row)
+}
+
+/// The `structure` field: one of [`STRUCTURES`], by its name.
+fn parse_structure(field: &str) -> Result<Accel, String> {
+    STRUCTURES
+        .iter()
+        .copied()
+        .find(|a| a.name() == field)
+        .ok_or_else(|| format!("structure: '{field}' is not none, bvh, grid, octree or bsp"))
+}
+
+/// The `grid_res` field: empty but for the grid (named `name`), whose is
+/// `auto` or a side of 1 to 160.
+fn parse_grid_res(structure: Accel, name: &str, field: &str) -> Result<Option<Level>, String> {
+    match (structure == Accel::Grid, field) {
+        (false, "") => Ok(None),
+        (false, s) => Err(format!(
+            "grid_res: '{s}' given for {name}, which is no grid"
+        )),
+        (true, "auto") => Ok(Some(Level::Auto)),
+        (true, s) => Ok(Some(Level::Given(
+            s.parse::<u32>()
+                .ok()
+                .filter(|n| (1..=160).contains(n))
+                .ok_or_else(|| format!("grid_res: '{s}' is not auto or 1 to 160"))?,
+        ))),
+    }
+}
+
+/// The `grid_cells` field: empty but for the grid (named `name`), whose is
+/// `XxYxZ`, each 1 to 1024.
+fn parse_grid_cells(
+    structure: Accel,
+    name: &str,
+    field: &str,
+) -> Result<Option<[usize; 3]>, String> {
+    match (structure == Accel::Grid, field) {
+        (false, "") => Ok(None),
+        (false, s) => Err(format!(
+            "grid_cells: '{s}' given for {name}, which is no grid"
+        )),
+        (true, s) => {
+            let n: Vec<usize> = s
+                .split('x')
+                .map(|v| v.parse::<usize>().ok().filter(|&n| (1..=1024).contains(&n)))
+                .collect::<Option<_>>()
+                .filter(|n: &Vec<usize>| n.len() == 3)
+                .ok_or_else(|| format!("grid_cells: '{s}' is not XxYxZ, each 1 to 1024"))?;
+            Ok(Some([n[0], n[1], n[2]]))
+        }
+    }
+}
+
+/// The ratios and the median of the line's fields `f` (named `names`) are
+/// the row's own. Written from the counts and runs by the same arithmetic, in
+/// numbers that read back exactly: any difference is an edit, not rounding.
+fn check_ratios(row: &Row, f: &[String], names: &[&str]) -> Result<(), String> {
     for (k, want) in [
         (8, row.steps_per_ray()),
         (9, row.primitives_per_ray()),
@@ -439,7 +458,7 @@ fn parse_row(line: &str) -> Result<Row, String> {
             ));
         }
     }
-    Ok(row)
+    Ok(())
 }
 
 /// Whether the rows make a whole comparison, and which.

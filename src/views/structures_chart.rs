@@ -294,23 +294,7 @@ fn mark(fig: &mut Figure, x: f64, y: f64) {
 }
 
 fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64; 4]) {
-    let mut entries: Vec<(Rgb, u8, &str)> = STRUCTURES
-        .iter()
-        .map(|&a| (color(a), 255, a.name()))
-        .collect();
-    entries.push(([120, 120, 120], 90, "pale part: traversal steps"));
-    entries.push(([120, 120, 120], 255, "solid part: primitive tests"));
-    legend_row(fig, DVec2::new(left, top - 14.0), &entries);
-    let tri_x = right - 170.0;
-    mark(fig, tri_x, top - 12.0);
-    fig.text_px(
-        DVec2::new(tri_x + 9.0, top - 14.0),
-        "each scene's best",
-        13.0,
-        palette::INK,
-        Anchor::Left,
-        false,
-    );
+    structures_legend(fig, left, top, right);
     let [upper, lower] = panel_boxes([left, top, right, bottom], 24.0);
     let tests = Panel::new(
         upper,
@@ -336,39 +320,7 @@ fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]:
     let size = name_size(&names, slot);
     for (g, group) in groups.iter().enumerate() {
         let x0 = left + slot * g as f64 + (slot - bar * group.len() as f64) / 2.0;
-        let fewest = best(group, Row::tests_per_ray);
-        let fastest = best(group, Row::trace_seconds);
-        for (k, r) in group.iter().enumerate() {
-            let (a, b) = (x0 + bar * k as f64 + 1.0, x0 + bar * (k + 1) as f64 - 1.0);
-            let col = color(r.structure);
-            let y_all = tests.y(r.tests_per_ray());
-            fig.rect_px(
-                DVec2::new(a, y_all),
-                DVec2::new(b, tests.bottom),
-                Some((col, 90)),
-                Some(Pen::solid(col, 1.0)),
-            );
-            let y_prim = tests.y(r.primitives_per_ray());
-            fig.rect_px(
-                DVec2::new(a, y_prim),
-                DVec2::new(b, tests.bottom),
-                Some((col, 255)),
-                None,
-            );
-            let y_time = times.y(r.trace_seconds());
-            fig.rect_px(
-                DVec2::new(a, y_time),
-                DVec2::new(b, times.bottom),
-                Some((col, 255)),
-                None,
-            );
-            if k == fewest {
-                mark(fig, (a + b) / 2.0, y_all);
-            }
-            if k == fastest {
-                mark(fig, (a + b) / 2.0, y_time);
-            }
-        }
+        draw_bars(fig, group, x0, bar, [&tests, &times]);
         let centre = left + slot * (g as f64 + 0.5);
         for (panel, dy) in [(&tests, 16.0), (&times, 16.0)] {
             fig.text_px(
@@ -379,6 +331,67 @@ fn draw_structures(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]:
                 Anchor::Center,
                 false,
             );
+        }
+    }
+}
+
+/// The structures' colors, the two parts of a bar, and the mark of each
+/// scene's best, in a row above the panels.
+fn structures_legend(fig: &mut Figure, left: f64, top: f64, right: f64) {
+    let mut entries: Vec<(Rgb, u8, &str)> = STRUCTURES
+        .iter()
+        .map(|&a| (color(a), 255, a.name()))
+        .collect();
+    entries.push(([120, 120, 120], 90, "pale part: traversal steps"));
+    entries.push(([120, 120, 120], 255, "solid part: primitive tests"));
+    legend_row(fig, DVec2::new(left, top - 14.0), &entries);
+    let tri_x = right - 170.0;
+    mark(fig, tri_x, top - 12.0);
+    fig.text_px(
+        DVec2::new(tri_x + 9.0, top - 14.0),
+        "each scene's best",
+        13.0,
+        palette::INK,
+        Anchor::Left,
+        false,
+    );
+}
+
+/// One scene's bars, `bar` pixels wide from `x0`: in the tests panel all
+/// its tests pale and its primitive tests solid, in the times panel its
+/// trace time; the fewest tests and the fastest trace marked.
+fn draw_bars(fig: &mut Figure, group: &[Row], x0: f64, bar: f64, [tests, times]: [&Panel; 2]) {
+    let fewest = best(group, Row::tests_per_ray);
+    let fastest = best(group, Row::trace_seconds);
+    for (k, r) in group.iter().enumerate() {
+        let (a, b) = (x0 + bar * k as f64 + 1.0, x0 + bar * (k + 1) as f64 - 1.0);
+        let col = color(r.structure);
+        let y_all = tests.y(r.tests_per_ray());
+        fig.rect_px(
+            DVec2::new(a, y_all),
+            DVec2::new(b, tests.bottom),
+            Some((col, 90)),
+            Some(Pen::solid(col, 1.0)),
+        );
+        let y_prim = tests.y(r.primitives_per_ray());
+        fig.rect_px(
+            DVec2::new(a, y_prim),
+            DVec2::new(b, tests.bottom),
+            Some((col, 255)),
+            None,
+        );
+        let y_time = times.y(r.trace_seconds());
+        fig.rect_px(
+            DVec2::new(a, y_time),
+            DVec2::new(b, times.bottom),
+            Some((col, 255)),
+            None,
+        );
+        if k == fewest {
+            mark(fig, (a + b) / 2.0, y_all);
+        }
+        if k == fastest {
+            mark(fig, (a + b) / 2.0, y_time);
         }
     }
 }
@@ -454,7 +467,27 @@ fn draw_sweep(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64
         "trace time, seconds (one thread, median of the runs), log scale",
         seconds,
     );
-    for panel in [&per_ray, &times] {
+    resolution_axis(fig, [&per_ray, &times], left, right, bottom);
+    let mut given: Vec<&Row> = c
+        .rows
+        .iter()
+        .filter(|r| matches!(r.grid_res, Some(Level::Given(_))))
+        .collect();
+    given.sort_by(|a, b| side(a).total_cmp(&side(b)));
+    let series: [Series; 3] = [
+        (&per_ray, steps_c, Row::steps_per_ray),
+        (&per_ray, prims_c, Row::primitives_per_ray),
+        (&times, time_c, Row::trace_seconds),
+    ];
+    for (k, one) in series.into_iter().enumerate() {
+        draw_series(fig, c, &given, one, k, [left, right]);
+    }
+}
+
+/// The resolution's ticks under both panels, at each power of two from 1 to
+/// 256, and its name in the bottom right corner.
+fn resolution_axis(fig: &mut Figure, panels: [&Panel; 2], left: f64, right: f64, bottom: f64) {
+    for panel in panels {
         for k in 0..=8 {
             let n = 2f64.powi(k);
             let x = res_x(left, right, n);
@@ -481,49 +514,48 @@ fn draw_sweep(fig: &mut Figure, c: &Comparison, [left, top, right, bottom]: [f64
         Anchor::Right,
         false,
     );
-    let mut given: Vec<&Row> = c
-        .rows
-        .iter()
-        .filter(|r| matches!(r.grid_res, Some(Level::Given(_))))
-        .collect();
-    given.sort_by(|a, b| side(a).total_cmp(&side(b)));
-    let series: [Series; 3] = [
-        (&per_ray, steps_c, Row::steps_per_ray),
-        (&per_ray, prims_c, Row::primitives_per_ray),
-        (&times, time_c, Row::trace_seconds),
-    ];
-    // The auto rule's label once per panel: below the steps' ring (the
-    // primitive tests' ring sits above it), above the time's.
-    for (k, (panel, col, f)) in series.into_iter().enumerate() {
-        let at = |r: &Row| DVec2::new(res_x(left, right, side(r)), panel.y(f(r)));
-        for w in given.windows(2) {
-            fig.line_px(at(w[0]), at(w[1]), Pen::solid(col, 2.5));
+}
+
+/// Series `k` of the sweep: a line through the resolutions `given`, sorted,
+/// and a dot at every row, the auto rule's ringed (and labelled once per
+/// panel: below the steps' ring, the primitive tests' ring sitting above it,
+/// and above the time's).
+fn draw_series(
+    fig: &mut Figure,
+    c: &Comparison,
+    given: &[&Row],
+    (panel, col, f): Series,
+    k: usize,
+    [left, right]: [f64; 2],
+) {
+    let at = |r: &Row| DVec2::new(res_x(left, right, side(r)), panel.y(f(r)));
+    for w in given.windows(2) {
+        fig.line_px(at(w[0]), at(w[1]), Pen::solid(col, 2.5));
+    }
+    for r in &c.rows {
+        let p = fig.from_px(at(r));
+        if r.grid_res != Some(Level::Auto) {
+            fig.dot(p, 4.5, col, Some(palette::INK));
+            continue;
         }
-        for r in &c.rows {
-            let p = fig.from_px(at(r));
-            if r.grid_res == Some(Level::Auto) {
-                fig.dot(p, 9.0, palette::PAPER, Some(palette::INK));
-                fig.dot(p, 5.0, col, Some(palette::INK));
-                let cells = r
-                    .grid_cells
-                    .map_or(String::new(), |[x, y, z]| format!(" {x}×{y}×{z}"));
-                let dy = match k {
-                    0 => 20.0,
-                    1 => continue,
-                    _ => -10.0,
-                };
-                fig.text_px(
-                    at(r) + DVec2::new(12.0, dy),
-                    &format!("auto{cells}"),
-                    12.0,
-                    palette::INK,
-                    Anchor::Left,
-                    false,
-                );
-            } else {
-                fig.dot(p, 4.5, col, Some(palette::INK));
-            }
-        }
+        fig.dot(p, 9.0, palette::PAPER, Some(palette::INK));
+        fig.dot(p, 5.0, col, Some(palette::INK));
+        let cells = r
+            .grid_cells
+            .map_or(String::new(), |[x, y, z]| format!(" {x}×{y}×{z}"));
+        let dy = match k {
+            0 => 20.0,
+            1 => continue,
+            _ => -10.0,
+        };
+        fig.text_px(
+            at(r) + DVec2::new(12.0, dy),
+            &format!("auto{cells}"),
+            12.0,
+            palette::INK,
+            Anchor::Left,
+            false,
+        );
     }
 }
 

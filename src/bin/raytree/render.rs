@@ -4,9 +4,9 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
+use raytree::geometry::structures::Structure;
 use raytree::io::image_file;
 use raytree::methods::Accel;
-use raytree::trace::accelerator::Structure;
 use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
@@ -86,13 +86,11 @@ pub fn run(args: &Args) -> Result<()> {
         let build_seconds = building.elapsed().as_secs_f64();
         let structure = tracer.accelerator().kind();
         // What was built, in the structure's own numbers (a grid's cells per
-        // side, a tree's nodes and leaves); the BVH's are in `raytree memory`.
-        let built = tracer.accelerator().structure().and_then(|s| match s {
-            Structure::Grid(g) => Some(g.describe()),
-            Structure::Octree(o) => Some(o.describe()),
-            Structure::Bsp(k) => Some(k.describe()),
-            Structure::Bvh(_) => None,
-        });
+        // side, a tree's nodes and leaves); the BVH has none to show.
+        let built = tracer
+            .accelerator()
+            .structure()
+            .and_then(Structure::describe);
         let tracing = Instant::now();
         let (image, rays) = pool
             .install(|| {

@@ -87,6 +87,40 @@ fn read(path: &Path, out: &Path) -> Result<Comparison> {
 
 /// Loads the scenes, measures them, writes the chart and the CSV.
 fn measure(args: &Args) -> Result<Comparison> {
+    refuse_misuse(args)?;
+    let (loaded, inputs) = load(args)?;
+    let png = output::create(&args.output, &inputs)?;
+    let csv = (args.csv.as_deref())
+        .map(|p| output::create(p, &inputs))
+        .transpose()?;
+    let mode = if args.grid_sweep {
+        Mode::GridSweep
+    } else {
+        Mode::Structures
+    };
+    let rows = measure_rows(&loaded, mode, args.runs)?;
+    // Read after the runs: the machine's load as they ended.
+    let comparison = Comparison {
+        mode,
+        about: about(&loaded, args),
+        rows,
+    };
+    let figure = structures_chart::draw(&comparison, args.size.0, args.size.1)
+        .context("the chart size is too small")?;
+    // Both files or neither.
+    let (picture, figures) = (figure.png(), structure_sweep::csv(&comparison));
+    let mut files = vec![(png, picture.as_slice())];
+    files.extend(csv.map(|file| (file, figures.as_bytes())));
+    output::commit_all(files)?;
+    if let Some(c) = &args.csv {
+        output::note(&format!("wrote {}", c.display()))?;
+    }
+    Ok(comparison)
+}
+
+/// Refuses what the measurement cannot do: too many scenes, `--accel`, a grid
+/// sweep of several scenes or of a given resolution, the CSV in the chart's file.
+fn refuse_misuse(args: &Args) -> Result<()> {
     if args.scenes.len() > MAX_SCENES {
         return Err(usage(format_args!(
             "{} scenes given: at most {MAX_SCENES} (each takes minutes at the SPD's size)",
@@ -115,7 +149,16 @@ fn measure(args: &Args) -> Result<Comparison> {
             csv.display()
         )));
     }
-    let mut loaded: Vec<(String, Scene)> = Vec::new();
+    Ok(())
+}
+
+/// Scenes, each with the name of its file.
+type Loaded = Vec<(String, Scene)>;
+
+/// The scenes, each with its file's name (refused if two share one), and
+/// every file they were read from.
+fn load(args: &Args) -> Result<(Loaded, Vec<PathBuf>)> {
+    let mut loaded: Loaded = Vec::new();
     let mut inputs = Vec::new();
     for path in &args.scenes {
         let scene_args = SceneArgs {
@@ -137,15 +180,17 @@ fn measure(args: &Args) -> Result<Comparison> {
         inputs.extend(scene_args.inputs(&scene));
         loaded.push((name, scene));
     }
-    let png = output::create(&args.output, &inputs)?;
-    let csv = (args.csv.as_deref())
-        .map(|p| output::create(p, &inputs))
-        .transpose()?;
-    let mode = if args.grid_sweep {
-        Mode::GridSweep
-    } else {
-        Mode::Structures
-    };
+    Ok((loaded, inputs))
+}
+
+/// The measured rows, with progress on standard error. A failure to write it
+/// (a closed pipe) is kept and reported after, since the measurement cannot
+/// be stopped midway.
+fn measure_rows(
+    loaded: &[(String, Scene)],
+    mode: Mode,
+    runs: u32,
+) -> Result<Vec<structure_sweep::Row>> {
     let named: Vec<Named> = loaded
         .iter()
         .map(|(name, scene)| Named {
@@ -153,33 +198,16 @@ fn measure(args: &Args) -> Result<Comparison> {
             scene,
         })
         .collect();
-    // Progress on standard error; a failure to write it (a closed pipe) is
-    // kept and reported after, since the measurement cannot be stopped midway.
     let mut failed: Option<std::io::Error> = None;
-    let rows = structure_sweep::measure(&named, mode, args.runs as usize, &mut |line: &str| {
+    let rows = structure_sweep::measure(&named, mode, runs as usize, &mut |line: &str| {
         if failed.is_none() {
             failed = output::note(&format!("structures: {line}")).err();
         }
     });
-    if let Some(e) = failed {
-        return Err(e.into());
+    match failed {
+        Some(e) => Err(e.into()),
+        None => Ok(rows),
     }
-    let comparison = Comparison {
-        mode,
-        about: about(&loaded, args),
-        rows,
-    };
-    let figure = structures_chart::draw(&comparison, args.size.0, args.size.1)
-        .context("the chart size is too small")?;
-    // Both files or neither.
-    let (picture, figures) = (figure.png(), structure_sweep::csv(&comparison));
-    let mut files = vec![(png, picture.as_slice())];
-    files.extend(csv.map(|file| (file, figures.as_bytes())));
-    output::commit_all(files)?;
-    if let Some(c) = &args.csv {
-        output::note(&format!("wrote {}", c.display()))?;
-    }
-    Ok(comparison)
 }
 
 /// How it was measured, in one line: the date, the size, the protocol, the

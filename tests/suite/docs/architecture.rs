@@ -36,7 +36,7 @@ const TRACING: &[&str] = &[
     "crate::trace::accelerator",
     "crate::trace::render",
     "crate::trace::pixel",
-    "crate::geometry::bvh",
+    "crate::geometry::structures",
 ];
 
 /// Crates that own a terminal: progress bars, raw mode, a TUI. The library

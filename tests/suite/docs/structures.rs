@@ -84,92 +84,122 @@ fn the_structures_page_shows_todays_counts_and_its_own_tables() {
         if needs_spd && !available(csv, &[Need::Spd], "its scenes are the SPD's") {
             continue;
         }
-        // The table and the chart, as the CSV gives them.
-        let redrawn = dir.join("redrawn.png");
-        let from = succeeds(
-            &[
-                "structures",
-                "--from",
-                root().join(csv).to_str().unwrap(),
-                "-o",
-                redrawn.to_str().unwrap(),
-            ],
-            root(),
-        );
-        let table = String::from_utf8(from.stdout).unwrap();
-        assert!(
-            page.contains(table.trim()),
-            "docs/structures.md does not show what `raytree structures --from {csv}` prints:\n{table}"
-        );
-        assert!(
-            std::fs::read(&redrawn).unwrap() == std::fs::read(root().join(png)).unwrap(),
-            "{png} is not {csv} redrawn"
-        );
-        // Its counts, each row rendered again. Rows that traced for over a
-        // second on one thread are left out (testing every object of a
-        // thousand-object scene, the coarsest grids): the suite stays quick,
-        // and the rows kept walk every structure and every scene.
-        let text = std::fs::read_to_string(root().join(csv)).unwrap();
-        let mut lines = text.lines().filter(|l| !l.starts_with('#'));
-        let header: Vec<&str> = lines.next().unwrap().split(',').collect();
-        let col = |name: &str| header.iter().position(|h| *h == name).unwrap();
-        let settings: Vec<&str> = ["--protocol", "--width", "--height"]
-            .into_iter()
-            .filter_map(|flag| Some([flag, value(run, flag)?]))
-            .flatten()
-            .collect();
-        let scenes: Vec<&String> = run[1..]
-            .iter()
-            .take_while(|a| !a.starts_with("--"))
-            .collect();
-        let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
-        let jobs: Vec<&Vec<&str>> = rows
-            .iter()
-            .filter(|r| r[col("trace_seconds_median")].parse::<f64>().unwrap() <= 1.0)
-            .collect();
-        let check = |row: &Vec<&str>| {
-            let name = row[col("scene")];
-            let scene = scenes
-                .iter()
-                .find(|s| s.ends_with(&format!("/{name}")))
-                .unwrap_or_else(|| panic!("{csv}: no scene {name} in its command"));
-            let mut args = vec![
-                "render",
-                scene.as_str(),
-                "--stats",
-                "--threads",
-                "1",
-                "--accel",
-                row[col("structure")],
-                "-o",
-            ];
-            let out = dir.join(format!("{name}-{}.png", row[col("structure")]));
-            args.push(out.to_str().unwrap());
-            args.extend(&settings);
-            let grid_res = row[col("grid_res")];
-            if !grid_res.is_empty() {
-                args.extend(["--grid-res", grid_res]);
-            }
-            let stats = String::from_utf8(succeeds(&args, root()).stdout).unwrap();
-            let number = |c: &str| row[col(c)].parse::<u64>().unwrap();
-            let documented = (number("rays"), number("steps"), number("primitives"));
-            assert_eq!(
-                counted(&stats),
-                documented,
-                "{csv}: {name} through {} (grid_res {grid_res:?}) counts (rays, steps, primitives) differently now; remake the page with its command",
-                row[col("structure")]
-            );
-        };
-        // Two at a time: the machine has two cores.
-        let (even, odd): (Vec<_>, Vec<_>) = jobs.iter().enumerate().partition(|(i, _)| i % 2 == 0);
-        std::thread::scope(|s| {
-            s.spawn(|| odd.iter().for_each(|(_, r)| check(r)));
-            even.iter().for_each(|(_, r)| check(r));
-        });
-        checked += jobs.len();
+        shows_its_table_and_chart(&page, csv, png, &dir);
+        checked += counts_again(run, csv, &dir);
     }
     assert!(checked > 0 || !crate::tools::on_ci(), "no row checked");
     let _ = std::fs::remove_dir_all(&dir);
+}
+
+/// The page shows the table `raytree structures --from CSV` prints, and its
+/// chart `png` is that CSV redrawn, to the byte.
+fn shows_its_table_and_chart(page: &str, csv: &str, png: &str, dir: &Path) {
+    let redrawn = dir.join("redrawn.png");
+    let from = succeeds(
+        &[
+            "structures",
+            "--from",
+            root().join(csv).to_str().unwrap(),
+            "-o",
+            redrawn.to_str().unwrap(),
+        ],
+        root(),
+    );
+    let table = String::from_utf8(from.stdout).unwrap();
+    assert!(
+        page.contains(table.trim()),
+        "docs/structures.md does not show what `raytree structures --from {csv}` prints:\n{table}"
+    );
+    assert!(
+        std::fs::read(&redrawn).unwrap() == std::fs::read(root().join(png)).unwrap(),
+        "{png} is not {csv} redrawn"
+    );
+}
+
+/// The CSV's counts, each row rendered again by the page's command `run`;
+/// how many rows were checked. Rows that traced for over a second on one
+/// thread are left out (testing every object of a thousand-object scene, the
+/// coarsest grids): the suite stays quick, and the rows kept walk every
+/// structure and every scene.
+fn counts_again(run: &[String], csv: &str, dir: &Path) -> usize {
+    let text = std::fs::read_to_string(root().join(csv)).unwrap();
+    let mut lines = text.lines().filter(|l| !l.starts_with('#'));
+    let header: Vec<&str> = lines.next().unwrap().split(',').collect();
+    let rows: Vec<Vec<&str>> = lines.map(|l| l.split(',').collect()).collect();
+    let jobs: Vec<Row> = rows
+        .iter()
+        .map(|cells| Row {
+            header: &header,
+            cells,
+        })
+        .filter(|r| r.get("trace_seconds_median").parse::<f64>().unwrap() <= 1.0)
+        .collect();
+    // Two at a time: the machine has two cores.
+    let (even, odd): (Vec<_>, Vec<_>) = jobs.iter().enumerate().partition(|(i, _)| i % 2 == 0);
+    std::thread::scope(|s| {
+        s.spawn(|| {
+            odd.iter()
+                .for_each(|(_, r)| counts_the_same(run, csv, r, dir))
+        });
+        even.iter()
+            .for_each(|(_, r)| counts_the_same(run, csv, r, dir));
+    });
+    jobs.len()
+}
+
+/// One line of a CSV, its cells found by the header's names.
+struct Row<'a> {
+    header: &'a [&'a str],
+    cells: &'a [&'a str],
+}
+
+impl Row<'_> {
+    /// The cell of the column `name`.
+    fn get(&self, name: &str) -> &str {
+        self.cells[self.header.iter().position(|h| *h == name).unwrap()]
+    }
+}
+
+/// `render --stats` of the row's scene through its structure, at the size and
+/// protocol of the page's command `run`, counts the row's rays, steps and
+/// primitive tests.
+fn counts_the_same(run: &[String], csv: &str, row: &Row, dir: &Path) {
+    let name = row.get("scene");
+    let scene = run[1..]
+        .iter()
+        .take_while(|a| !a.starts_with("--"))
+        .find(|s| s.ends_with(&format!("/{name}")))
+        .unwrap_or_else(|| panic!("{csv}: no scene {name} in its command"));
+    let structure = row.get("structure");
+    let out = dir.join(format!("{name}-{structure}.png"));
+    let mut args = vec![
+        "render",
+        scene.as_str(),
+        "--stats",
+        "--threads",
+        "1",
+        "--accel",
+        structure,
+        "-o",
+        out.to_str().unwrap(),
+    ];
+    for flag in ["--protocol", "--width", "--height"] {
+        if let Some(v) = value(run, flag) {
+            args.extend([flag, v]);
+        }
+    }
+    let grid_res = row.get("grid_res");
+    if !grid_res.is_empty() {
+        args.extend(["--grid-res", grid_res]);
+    }
+    let stats = String::from_utf8(succeeds(&args, root()).stdout).unwrap();
+    let number = |c: &str| row.get(c).parse::<u64>().unwrap();
+    let documented = (number("rays"), number("steps"), number("primitives"));
+    assert_eq!(
+        counted(&stats),
+        documented,
+        "{csv}: {name} through {structure} (grid_res {grid_res:?}) counts (rays, steps, primitives) differently now; remake the page with its command",
+    );
 }
 
 #[test]

@@ -7,7 +7,8 @@
 use glam::DVec3;
 use raytree::scene::source::SceneSource;
 use raytree::tree::document::TraceDocument;
-use raytree::tree::ray_tree::BoxRecord;
+use raytree::tree::ray_tree::{BoxRecord, RayNode};
+use raytree::tree::steps::{Step, StepKind};
 use raytree::views::diagram::draw::draw_with_labels;
 use raytree::views::diagram::options::Options;
 use raytree::views::diagram::projection::View;
@@ -179,7 +180,6 @@ fn scenes_without_a_hierarchy_record_no_boxes() {
 #[test]
 fn a_grid_walks_cells_sit_among_its_tests_where_the_search_made_them() {
     use raytree::methods::Accel;
-    use raytree::tree::steps::{StepKind, steps};
     let file = "lessons/12-efficiency/scatter.json";
     let mut scene =
         raytree::scene::loader::load(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(file))
@@ -190,83 +190,88 @@ fn a_grid_walks_cells_sit_among_its_tests_where_the_search_made_them() {
         let trace =
             raytree::tree::record::pixel(&scene, SceneSource::new(file, ""), x, y, None).unwrap();
         let tree = &trace.samples[0].tree;
-        let order = steps(tree);
+        let order = raytree::tree::steps::steps(tree);
         for (i, node) in tree.nodes.iter().enumerate() {
-            let first = node
-                .boxes
-                .first()
-                .map_or(node.tests.len(), |b| b.after_tests);
-            for test in &node.tests[..first] {
-                assert!(
-                    scene.objects[test.object].bounds().is_none(),
-                    "({x}, {y}) ray {i}: '{}' tested before the walk, but a cell could hold it",
-                    test.name
-                );
-            }
-            for (k, cell) in node.boxes.iter().enumerate() {
-                let end = node
-                    .boxes
-                    .get(k + 1)
-                    .map_or(node.tests.len(), |b| b.after_tests);
-                assert!(
-                    cell.after_tests <= end,
-                    "({x}, {y}) ray {i}: stamps go backwards"
-                );
-                for test in &node.tests[cell.after_tests..end] {
-                    let b = scene.objects[test.object].bounds().unwrap_or_else(|| {
-                        panic!(
-                            "({x}, {y}) ray {i}: unbounded '{}' tested in a cell",
-                            test.name
-                        )
-                    });
-                    // The grid lists an object in every cell its box overlaps,
-                    // widened by a few roundings: a relative 1e-9 covers them
-                    // and is far below any cell's size here (about 1).
-                    let slack = 1e-9 * (1.0 + b.max.abs().max(b.min.abs()).max_element());
-                    let apart = (0..3)
-                        .any(|a| b.max[a] < cell.min[a] - slack || b.min[a] > cell.max[a] + slack);
-                    assert!(
-                        !apart,
-                        "({x}, {y}) ray {i}: '{}' tested after cell {} it does not touch",
-                        test.name,
-                        k + 1
-                    );
-                    placed += 1;
-                }
-            }
-            // In the steps, each test comes after exactly the cells stamped
-            // at or before it, and the cells come in the order walked.
-            let mine: Vec<StepKind> = order
-                .iter()
-                .filter(|s| s.node == i)
-                .map(|s| s.kind)
-                .collect();
-            let mut walked = 0;
-            for kind in mine {
-                match kind {
-                    StepKind::Visit(k) => {
-                        assert_eq!(k, walked, "({x}, {y}) ray {i}: cells out of order");
-                        walked += 1;
-                    }
-                    StepKind::Test(t) => {
-                        let due = node.boxes.iter().filter(|b| b.after_tests <= t).count();
-                        assert_eq!(
-                            walked, due,
-                            "({x}, {y}) ray {i}: test {t} after {walked} cells"
-                        );
-                    }
-                    _ => {}
-                }
-            }
-            assert_eq!(
-                walked,
-                node.boxes.len(),
-                "({x}, {y}) ray {i}: every cell is a step"
-            );
+            let at = format!("({x}, {y}) ray {i}");
+            only_unbounded_objects_come_before_the_walk(&scene, node, &at);
+            placed += tests_after_a_cell_touch_it(&scene, node, &at);
+            every_cell_is_a_step_before_its_tests(&order, i, node, &at);
         }
     }
     assert!(
         placed >= 10,
         "only {placed} tests placed: pick pixels that walk the grid"
     );
+}
+
+/// The objects a ray tested before its first cell are unbounded (the floor):
+/// a cell could hold any other.
+fn only_unbounded_objects_come_before_the_walk(
+    scene: &raytree::scene::Scene,
+    node: &RayNode,
+    at: &str,
+) {
+    let first = node
+        .boxes
+        .first()
+        .map_or(node.tests.len(), |b| b.after_tests);
+    for test in &node.tests[..first] {
+        assert!(
+            scene.objects[test.object].bounds().is_none(),
+            "{at}: '{}' tested before the walk, but a cell could hold it",
+            test.name
+        );
+    }
+}
+
+/// The objects tested after a cell and before the next have boxes that
+/// overlap the cell; how many tests were so placed.
+fn tests_after_a_cell_touch_it(scene: &raytree::scene::Scene, node: &RayNode, at: &str) -> usize {
+    let mut placed = 0;
+    for (k, cell) in node.boxes.iter().enumerate() {
+        let end = node
+            .boxes
+            .get(k + 1)
+            .map_or(node.tests.len(), |b| b.after_tests);
+        assert!(cell.after_tests <= end, "{at}: stamps go backwards");
+        for test in &node.tests[cell.after_tests..end] {
+            let b = scene.objects[test.object]
+                .bounds()
+                .unwrap_or_else(|| panic!("{at}: unbounded '{}' tested in a cell", test.name));
+            // The grid lists an object in every cell its box overlaps,
+            // widened by a few roundings: a relative 1e-9 covers them
+            // and is far below any cell's size here (about 1).
+            let slack = 1e-9 * (1.0 + b.max.abs().max(b.min.abs()).max_element());
+            let apart =
+                (0..3).any(|a| b.max[a] < cell.min[a] - slack || b.min[a] > cell.max[a] + slack);
+            assert!(
+                !apart,
+                "{at}: '{}' tested after cell {} it does not touch",
+                test.name,
+                k + 1
+            );
+            placed += 1;
+        }
+    }
+    placed
+}
+
+/// In the steps of ray `i`, each test comes after exactly the cells stamped
+/// at or before it, and the cells come in the order walked.
+fn every_cell_is_a_step_before_its_tests(order: &[Step], i: usize, node: &RayNode, at: &str) {
+    let mut walked = 0;
+    for step in order.iter().filter(|s| s.node == i) {
+        match step.kind {
+            StepKind::Visit(k) => {
+                assert_eq!(k, walked, "{at}: cells out of order");
+                walked += 1;
+            }
+            StepKind::Test(t) => {
+                let due = node.boxes.iter().filter(|b| b.after_tests <= t).count();
+                assert_eq!(walked, due, "{at}: test {t} after {walked} cells");
+            }
+            _ => {}
+        }
+    }
+    assert_eq!(walked, node.boxes.len(), "{at}: every cell is a step");
 }

@@ -26,62 +26,24 @@ fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
             (rng.f64() - 0.5) * scale,
         )
     };
-    let v = |v: DVec3| format!("[{}, {}, {}]", v.x, v.y, v.z);
     let mut list = vec![
         r#"{ "plane": { "point": [0, -6, 0], "normal": [0.1, 1, 0] }, "material": "matte" }"#
             .to_owned(),
         format!(
             r#"{{ "mesh": {{ "file": "{}" }}, "material": "glass", "transform": [{{ "translate": {} }}] }}"#,
             obj.display(),
-            v(p(8.0))
+            json(p(8.0))
         ),
         format!(
             r#"{{ "mesh": {{ "file": "{}", "smooth": false }}, "material": "matte", "transform": [{{ "scale": [2, 0.5, 1] }}, {{ "rotate_z": 30 }}, {{ "translate": {} }}] }}"#,
             obj.display(),
-            v(p(8.0))
+            json(p(8.0))
         ),
     ];
     for i in 0..objects {
         let c = p(10.0);
         let material = ["matte", "mirror", "glass"][i % 3];
-        let shape = match i % 6 {
-            0 => format!(
-                r#""sphere": {{ "center": {}, "radius": {} }}"#,
-                v(c),
-                0.2 + 0.3 * (c.x.abs() % 1.0)
-            ),
-            1 => format!(
-                r#""box": {{ "min": {}, "max": {} }}"#,
-                v(c),
-                v(c + DVec3::new(0.4, 0.7, 0.3))
-            ),
-            2 => format!(
-                r#""triangle": {{ "vertices": [{}, {}, {}] }}"#,
-                v(c),
-                v(c + p(1.5)),
-                v(c + p(1.5))
-            ),
-            3 => {
-                let (u, w) = (p(1.5), p(1.5));
-                format!(
-                    r#""polygon": {{ "vertices": [{}, {}, {}, {}], "one_sided": {} }}"#,
-                    v(c),
-                    v(c + u),
-                    v(c + u + w),
-                    v(c + w),
-                    i % 12 == 3
-                )
-            }
-            4 => format!(
-                r#""sphere": {{ "center": [0, 0, 0], "radius": 0.4 }}, "transform": [{{ "scale": [1, 0.5, 1.5] }}, {{ "translate": {} }}]"#,
-                v(c)
-            ),
-            _ => format!(
-                r#""box": {{ "min": [-0.3, -0.3, -0.3], "max": [0.3, 0.3, 0.3] }}, "transform": [{{ "rotate": {{ "axis": {}, "degrees": 40 }} }}, {{ "translate": {} }}]"#,
-                v(p(1.0) + DVec3::X),
-                v(c)
-            ),
-        };
+        let shape = shape(i, c, &mut p);
         list.push(format!("{{ {shape}, \"material\": \"{material}\" }}"));
     }
     let mut s = String::new();
@@ -101,6 +63,56 @@ fn random_scene(seed: u64, objects: usize, dir: &std::path::Path) -> String {
         list.join(",\n")
     );
     s
+}
+
+/// A point as a scene file writes it.
+fn json(v: DVec3) -> String {
+    format!("[{}, {}, {}]", v.x, v.y, v.z)
+}
+
+/// The shape of the random scene's object `i`, at `c`, in turn a sphere, a
+/// box, a triangle, a polygon (a twelfth of them one-sided), a transformed
+/// sphere and a transformed box; `p(scale)` gives random offsets.
+fn shape(i: usize, c: DVec3, p: &mut impl FnMut(f64) -> DVec3) -> String {
+    let v = json;
+    match i % 6 {
+        0 => format!(
+            r#""sphere": {{ "center": {}, "radius": {} }}"#,
+            v(c),
+            0.2 + 0.3 * (c.x.abs() % 1.0)
+        ),
+        1 => format!(
+            r#""box": {{ "min": {}, "max": {} }}"#,
+            v(c),
+            v(c + DVec3::new(0.4, 0.7, 0.3))
+        ),
+        2 => format!(
+            r#""triangle": {{ "vertices": [{}, {}, {}] }}"#,
+            v(c),
+            v(c + p(1.5)),
+            v(c + p(1.5))
+        ),
+        3 => {
+            let (u, w) = (p(1.5), p(1.5));
+            format!(
+                r#""polygon": {{ "vertices": [{}, {}, {}, {}], "one_sided": {} }}"#,
+                v(c),
+                v(c + u),
+                v(c + u + w),
+                v(c + w),
+                i % 12 == 3
+            )
+        }
+        4 => format!(
+            r#""sphere": {{ "center": [0, 0, 0], "radius": 0.4 }}, "transform": [{{ "scale": [1, 0.5, 1.5] }}, {{ "translate": {} }}]"#,
+            v(c)
+        ),
+        _ => format!(
+            r#""box": {{ "min": [-0.3, -0.3, -0.3], "max": [0.3, 0.3, 0.3] }}, "transform": [{{ "rotate": {{ "axis": {}, "degrees": 40 }} }}, {{ "translate": {} }}]"#,
+            v(p(1.0) + DVec3::X),
+            v(c)
+        ),
+    }
 }
 
 #[test]

@@ -7,49 +7,24 @@ use std::ops::{ControlFlow, Range};
 
 use wide::f32x4;
 
-use crate::geometry::bvh::Bvh;
-use crate::geometry::bvh::build::SAH_MAX_DEPTH;
-use crate::geometry::bvh::node::{Child, Node, WIDTH, round_down};
 use crate::geometry::hit::TestCounts;
+use crate::geometry::structures::bvh::Bvh;
+use crate::geometry::structures::bvh::build::SAH_DEPTH_LIMIT;
+use crate::geometry::structures::bvh::node::{Child, Node, WIDTH, round_down};
 use crate::math::bounds::{Bounds, RayBox};
 
 /// Room on the traversal stack: up to `WIDTH - 1` entries per level, and a tree
-/// is at most `SAH_MAX_DEPTH` + log₄(2²⁸) levels deep.
-const STACK: usize = (WIDTH - 1) * (SAH_MAX_DEPTH as usize + 16);
+/// is at most `SAH_DEPTH_LIMIT` + log₄(2²⁸) levels deep.
+const STACK: usize = (WIDTH - 1) * (SAH_DEPTH_LIMIT as usize + 16);
 
 impl Bvh {
-    /// Calls `visit(primitive, t_max)` for every primitive in a leaf whose box the
-    /// ray meets within `(t_min, *t_max)`, nearer boxes first. `visit` may shrink
-    /// `t_max` (a closest-hit search) or break (a shadow ray's any-hit). Every box
-    /// tested is counted in `tested` (four to a node, less in a node not full).
-    #[inline]
-    pub fn traverse(
-        &self,
-        ray: &RayBox,
-        t_min: f64,
-        t_max: &mut f64,
-        tested: &mut TestCounts,
-        mut visit: impl FnMut(usize, &mut f64) -> ControlFlow<()>,
-    ) -> ControlFlow<()> {
-        self.walk::<true>(
-            ray,
-            t_min,
-            t_max,
-            tested,
-            |_, _| {},
-            |leaf, t_max| {
-                for &p in &self.order[leaf] {
-                    visit(p as usize, t_max)?;
-                }
-                ControlFlow::Continue(())
-            },
-        )
-    }
-
-    /// [`Bvh::traverse`] a leaf at a time: `visit(leaf, t_max)` gets the leaf's
-    /// run of [`Bvh::leaf_order`], so a caller that keeps its primitives in
-    /// that order (a mesh's triangles) reads them side by side, with no index
-    /// per primitive, and may test them together.
+    /// Calls `visit(leaf, t_max)` for every leaf whose box the ray meets within
+    /// `(t_min, *t_max)`, nearer boxes first, with the leaf's run of
+    /// [`Bvh::leaf_order`]: a caller that keeps its primitives in that order (a
+    /// mesh's triangles) reads them side by side, with no index per primitive,
+    /// and may test them together. `visit` may shrink `t_max` (a closest-hit
+    /// search) or break (a shadow ray's any-hit). Every box tested is counted
+    /// in `tested` (four to a node, less in a node not full).
     #[inline]
     pub fn traverse_leaves(
         &self,
@@ -59,7 +34,7 @@ impl Bvh {
         tested: &mut TestCounts,
         visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        self.walk::<true>(ray, t_min, t_max, tested, |_, _| {}, visit)
+        self.walk_boxes::<true>(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
     /// [`Bvh::traverse_leaves`] with the boxes met taken in the node's order,
@@ -78,7 +53,7 @@ impl Bvh {
         tested: &mut TestCounts,
         visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        self.walk::<false>(ray, t_min, t_max, tested, |_, _| {}, visit)
+        self.walk_boxes::<false>(ray, t_min, t_max, tested, |_, _| {}, visit)
     }
 
     /// [`Bvh::traverse_leaves`], also calling `seen(bounds, met)` for every box
@@ -94,11 +69,11 @@ impl Bvh {
         seen: impl FnMut(Bounds, bool),
         visit: impl FnMut(Range<usize>, &mut f64) -> ControlFlow<()>,
     ) -> ControlFlow<()> {
-        self.walk::<true>(ray, t_min, t_max, tested, seen, visit)
+        self.walk_boxes::<true>(ray, t_min, t_max, tested, seen, visit)
     }
 
     #[inline(always)]
-    fn walk<const NEAREST_FIRST: bool>(
+    fn walk_boxes<const NEAREST_FIRST: bool>(
         &self,
         ray: &RayBox,
         t_min: f64,

@@ -1,7 +1,7 @@
 //! Mailboxing (Amanatides & Woo, 1987; Arnaldi, Priol & Bouatouch, 1987): a
 //! structure that lists a primitive in several cells or leaves must still hand
 //! it to a ray once, or the ray would test it again in every cell it crosses.
-//! The grid, the octree and the k-d tree share this one set of the primitives
+//! The grid, the octree and the BSP tree share this one set of the primitives
 //! a walk has handed out.
 
 use arrayvec::ArrayVec;

@@ -1,12 +1,14 @@
-//! What the tests of the grid, the octree and the k-d tree share: a cube of
+//! What the tests of the grid, the octree and the BSP tree share: a cube of
 //! given half side, a structure's whole walk with an interval that never
-//! shrinks, and the reference sphere hit the closest-hit tests compare with.
+//! shrinks, the reference sphere hit the closest-hit tests compare with, and
+//! a structure's description for a failure's message.
 
 use std::ops::ControlFlow;
 
 use glam::DVec3;
 
 use crate::geometry::hit::TestCounts;
+use crate::geometry::structures::Structure;
 use crate::math::bounds::Bounds;
 use crate::math::ray::Ray;
 
@@ -18,9 +20,14 @@ pub fn cube(at: DVec3, half: f64) -> Bounds {
     }
 }
 
+/// What the structure says of itself (empty if nothing).
+pub fn described(structure: &impl Structure) -> String {
+    structure.describe().unwrap_or_default()
+}
+
 /// Every primitive a walk hands out, in order, and the steps it counted, for
 /// a walk given `t_max = ∞` that no visit shrinks or breaks. `walk` runs one
-/// structure's `traverse_seeing` with the `t_max`, the counts and the visit
+/// structure's `walk` with the `t_max`, the counts and the visit
 /// it is given.
 pub fn everything_visited(
     walk: impl FnOnce(

@@ -1,4 +1,4 @@
-//! Building the bounding volume hierarchy of [`crate::geometry::bvh`], top-down
+//! Building the bounding volume hierarchy of [`crate::geometry::structures::bvh`], top-down
 //! with the binned surface area heuristic (Wald, "On fast Construction of
 //! SAH-based Bounding Volume Hierarchies", 2007; pbrt-v4 §7.3.2): each split is
 //! the one of [`BINS`] candidate planes along the widest axis of the centroids
@@ -10,7 +10,9 @@
 
 use glam::DVec3;
 
-use crate::geometry::bvh::node::{Child, MAX_LEAF, MAX_PRIMITIVES, Node, WIDTH, set_lane};
+use crate::geometry::structures::bvh::node::{
+    Child, MAX_LEAF, MAX_PRIMITIVES, Node, WIDTH, set_lane,
+};
 use crate::math::bounds::Bounds;
 
 /// Candidate split planes per split.
@@ -23,7 +25,7 @@ const PARALLEL_MIN: usize = 8192;
 const PARALLEL_PASS: usize = 8 * PARALLEL_MIN;
 /// Below this depth the heuristic's splits are taken; deeper, the median's, so a
 /// pathological scene cannot make the tree (and a traversal's stack) deep.
-pub(crate) const SAH_MAX_DEPTH: u32 = 32;
+pub(crate) const SAH_DEPTH_LIMIT: u32 = 32;
 
 /// A primitive while building: its box and its box's center.
 #[derive(Clone, Copy)]
@@ -202,7 +204,7 @@ fn split(items: &mut [Item], bounds: &Bounds, depth: u32) -> Option<Split> {
     let split = if items.len() == 1 || extent[axis] <= 0.0 {
         // One primitive, or all centered on one point: no plane separates them.
         None
-    } else if depth < SAH_MAX_DEPTH {
+    } else if depth < SAH_DEPTH_LIMIT {
         sah_split(items, bounds, &centroids, axis)
     } else {
         Some(median_split(items, axis))

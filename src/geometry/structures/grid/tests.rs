@@ -1,8 +1,10 @@
-//! Tests of the grid (`src/geometry/grid.rs`): that it never misses a
-//! primitive the ray meets, visits each once, and stops early.
+//! Tests of the grid: that it never misses a primitive the ray meets, visits
+//! each once, and stops early.
 
+use super::build::{capped, resolution};
 use super::*;
-use crate::geometry::walk_tests::{cube, everything_visited};
+use crate::geometry::structures::walk_tests::{cube, described, everything_visited};
+use crate::math::float::gamma;
 
 /// Whether the ray meets the box at some `t ≥ t_min`: the slab test in f64,
 /// the leaving distances widened by `2γ(3)` for their rounding (pbrt-v4
@@ -30,7 +32,7 @@ fn meets(b: &Bounds, ray: &Ray, t_min: f64) -> bool {
 /// Every primitive the walk hands out from `t_min` on, and its steps.
 fn walk(grid: &Grid, ray: &Ray, t_min: f64) -> (Vec<usize>, u32) {
     everything_visited(|t_max, tested, visit| {
-        grid.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+        grid.walk(ray, t_min, t_max, tested, |_, _| {}, visit)
     })
 }
 
@@ -143,7 +145,7 @@ fn the_walk_visits_every_box_the_ray_meets_once() {
                     assert!(
                         once.binary_search(&p).is_ok(),
                         "{} skipped box {p} {b:?}: ray {ray:?} from {t_min}",
-                        grid.describe()
+                        described(&grid)
                     );
                 }
             }
@@ -283,7 +285,7 @@ fn closest_hit_matches_the_loop_over_everything() {
         }
         let mut found = None;
         let mut t = f64::INFINITY;
-        let _ = grid.traverse_seeing(
+        let _ = grid.walk(
             &ray,
             t_min,
             &mut t,
@@ -318,7 +320,7 @@ fn row() -> (Vec<Bounds>, Grid, Ray) {
 fn breaking_stops_the_walk() {
     let (_, grid, ray) = row();
     let mut visited = 0;
-    let flow = grid.traverse_seeing(
+    let flow = grid.walk(
         &ray,
         0.0,
         &mut { f64::INFINITY },
@@ -341,7 +343,7 @@ fn a_near_hit_ends_the_walk() {
     assert_eq!(all.len(), 100);
     let mut tested = TestCounts::default();
     let mut visited = Vec::new();
-    let _ = grid.traverse_seeing(
+    let _ = grid.walk(
         &ray,
         0.0,
         &mut { f64::INFINITY },
@@ -368,9 +370,9 @@ fn an_empty_grid_visits_nothing() {
         let (visited, steps) = walk(&grid, &Ray::new(DVec3::ZERO, DVec3::ONE), 0.0);
         assert_eq!((visited.len(), steps), (0, 0));
         assert!(
-            grid.describe().contains("0 primitives"),
+            described(&grid).contains("0 primitives"),
             "{}",
-            grid.describe()
+            described(&grid)
         );
     }
 }

@@ -1,13 +1,14 @@
-//! Tests of the octree (`src/geometry/octree.rs`): that it never misses a
-//! primitive the ray meets, visits each once, and stops early.
+//! Tests of the octree: that it never misses a primitive the ray meets, visits
+//! each once, and stops early.
 
 use super::*;
-use crate::geometry::walk_tests::{cube, everything_visited, sphere_hit};
+use crate::geometry::structures::walk_tests::{cube, described, everything_visited, sphere_hit};
+use glam::DVec3;
 
 /// Every primitive the walk hands out from `t_min` on, in order, and its steps.
 fn walk(tree: &Octree, ray: &Ray, t_min: f64) -> (Vec<usize>, u32) {
     everything_visited(|t_max, tested, visit| {
-        tree.traverse_seeing(ray, t_min, t_max, tested, |_, _| {}, visit)
+        tree.walk(ray, t_min, t_max, tested, |_, _| {}, visit)
     })
 }
 
@@ -199,7 +200,7 @@ fn visits_every_primitive_the_ray_meets_exactly_once() {
     let mut rng = fastrand::Rng::with_seed(28);
     let boxes = mixed_scene(&mut rng);
     let tree = Octree::build(&boxes);
-    assert!(tree.depth >= 3, "{}", tree.describe());
+    assert!(tree.depth >= 3, "{}", described(&tree));
     let (mut met_total, mut visited_total) = (0, 0);
     for case in 0..8000 {
         let ray = awkward_ray(&mut rng, &boxes, case);
@@ -273,7 +274,7 @@ fn closest_hit_matches_testing_every_sphere() {
         }
         let mut found = None;
         let mut t_max = f64::INFINITY;
-        let _ = tree.traverse_seeing(
+        let _ = tree.walk(
             &ray,
             t_min,
             &mut t_max,
@@ -309,7 +310,7 @@ fn breaking_and_shrinking_stop_the_walk() {
     let (boxes, ray) = row();
     let tree = Octree::build(&boxes);
     let mut visited = 0;
-    let flow = tree.traverse_seeing(
+    let flow = tree.walk(
         &ray,
         0.0,
         &mut { f64::INFINITY },
@@ -330,7 +331,7 @@ fn breaking_and_shrinking_stop_the_walk() {
     let mut t_max = f64::INFINITY;
     let mut tested = TestCounts::default();
     let mut visited = Vec::new();
-    let _ = tree.traverse_seeing(
+    let _ = tree.walk(
         &ray,
         0.0,
         &mut t_max,
@@ -361,7 +362,7 @@ fn empty_and_single() {
     let empty = Octree::build(&[]);
     let ray = Ray::new(DVec3::ZERO, DVec3::ONE);
     assert_eq!(walk(&empty, &ray, 0.0), (vec![], 0));
-    assert_eq!(empty.describe(), "octree: empty");
+    assert_eq!(described(&empty), "octree: empty");
 
     let flat = Bounds {
         min: DVec3::new(1.0, 2.0, 3.0),
@@ -375,9 +376,9 @@ fn empty_and_single() {
     let behind = Ray::new(DVec3::new(1.5, 5.0, 3.5), DVec3::Y);
     assert_eq!(walk(&one, &behind, 0.0).0, vec![] as Vec<usize>);
     assert!(
-        one.describe().contains("1 primitives"),
+        described(&one).contains("1 primitives"),
         "{}",
-        one.describe()
+        described(&one)
     );
 }
 
@@ -403,7 +404,7 @@ fn memory_stays_bounded() {
         .collect();
     let tree = Octree::build(&sticks);
     assert!(tree.entries.len() <= Octree::entry_cap(3000));
-    assert!(tree.depth <= MAX_DEPTH);
+    assert!(tree.depth <= DEPTH_LIMIT);
     let mut listed: Vec<u32> = tree.entries.clone();
     listed.sort_unstable();
     listed.dedup();
@@ -432,14 +433,17 @@ fn a_cluster_in_one_corner_is_split_down_to_small_leaves() {
         .unwrap();
     // Eight spheres and the floor in a leaf at most, or a leaf at the depth limit.
     assert!(
-        fullest <= LEAF_SIZE + 1 || tree.depth == MAX_DEPTH,
+        fullest <= LEAF_SIZE + 1 || tree.depth == DEPTH_LIMIT,
         "{}",
-        tree.describe()
+        described(&tree)
     );
-    assert!(tree.depth >= 7, "{}", tree.describe());
+    assert!(tree.depth >= 7, "{}", described(&tree));
     for asked in [0, 3] {
         let shallow = Octree::build_to_depth(&boxes, asked);
-        assert_eq!(shallow.depth, asked, "{}", shallow.describe());
+        assert_eq!(shallow.depth, asked, "{}", described(&shallow));
     }
-    assert_eq!(Octree::build_to_depth(&boxes, 1_000_000).max_depth, DEEPEST);
+    assert_eq!(
+        Octree::build_to_depth(&boxes, 1_000_000).depth_limit,
+        DEEPEST
+    );
 }
