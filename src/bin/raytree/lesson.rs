@@ -5,7 +5,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
-use raytree::course::{lesson, spec_number, vectors};
+use raytree::course::{lesson, number, vectors};
 use raytree::inspector::{self, App};
 use raytree::tree::document::TraceDocument;
 
@@ -148,7 +148,7 @@ fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
             })?;
             traces.insert(&number.run, doc);
         }
-        spec_number::from_trace(&number.source, &traces[number.run.as_str()]).map_err(|e| {
+        number::from_trace(&number.source, &traces[number.run.as_str()]).map_err(|e| {
             anyhow!(
                 "{}: line {}: number {name}: {e}",
                 spec.display(),
