@@ -1,7 +1,7 @@
 //! A chapter's checked questions, written where its exercises go: each a
-//! box `player.js` turns into an answer field, checked against the value
-//! raytree printed in this build; without JavaScript (and on GitHub) the
-//! hint and the worked answer are folds, as the exercises are.
+//! box `book/player/questions.js` turns into an answer field, checked
+//! against the value raytree printed in this build; without JavaScript (and
+//! on GitHub) the hint and the worked answer are folds, as the exercises are.
 
 use std::fmt::Write;
 
