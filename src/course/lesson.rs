@@ -1,5 +1,5 @@
 //! The lessons: one folder per lecture topic, `lessons/NN-topic/`, holding the
-//! text (`lesson.md`), its spec ([`crate::course::lesson_spec`]: the commands
+//! text (`lesson.md`), its spec ([`crate::course::spec`]: the commands
 //! behind its figures and numbers, its exercises) and a guided step-through
 //! ([`crate::course::guide`], `steps.toml`). This module finds them, loads one
 //! with its scene, and narrates its step-through against a fresh trace: what
@@ -9,8 +9,7 @@ use std::fmt::Write;
 use std::path::{Component, Path, PathBuf};
 
 use crate::course::guide::{self, Narration, Script};
-use crate::course::lesson_frame;
-use crate::course::lesson_spec::{self, Spec};
+use crate::course::spec::{self, Spec, frame};
 use crate::scene::Scene;
 use crate::scene::source::{self, SceneSource};
 use crate::tree::document::TraceDocument;
@@ -86,7 +85,7 @@ pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
         })?;
         let folder = item.path();
         let spec_path = folder.join(SPEC);
-        let spec = lesson_spec::load(&spec_path)?;
+        let spec = spec::load(&spec_path)?;
         for (field, value) in [("title", &spec.title), ("summary", &spec.summary)] {
             if value
                 .as_deref()
@@ -117,7 +116,7 @@ pub fn list(dir: &Path) -> Result<Vec<Entry>, String> {
 }
 
 /// A lesson says what a learner can do after it and how long it takes
-/// (`crate::course::lesson_frame`); a book page need not.
+/// (`crate::course::spec::frame`); a book page need not.
 fn need_frame(spec_path: &Path, spec: &Spec) -> Result<(), String> {
     let at = spec_path.display();
     if spec.frame.objectives.is_empty() {
@@ -227,10 +226,10 @@ fn tidy(path: &Path) -> PathBuf {
     out
 }
 
-/// One stop of a step-through: the step's headline as the trace prints it,
-/// and the script's sentence with its numbers.
+/// One stop of a step-through as told: the step's headline as the trace
+/// prints it, and the script's sentence with its numbers filled in.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Stop {
+pub struct NarratedStop {
     /// The step, 1-based.
     pub step: usize,
     /// The step's first line in `raytree trace --steps`.
@@ -247,7 +246,7 @@ pub struct StepThrough {
     /// How many steps the traced sample has.
     pub steps: usize,
     /// The stops, in order.
-    pub stops: Vec<Stop>,
+    pub stops: Vec<NarratedStop>,
 }
 
 /// Traces the script's pixel and fills in its stops.
@@ -259,7 +258,7 @@ pub fn step_through(lesson: &Lesson) -> Result<StepThrough, String> {
     let steps = trace.steps(lesson.script.sample);
     let stops = told
         .into_iter()
-        .map(|n| Stop {
+        .map(|n| NarratedStop {
             step: n.step + 1,
             headline: text::describe(&trace, lesson.script.sample, &steps[n.step]).0,
             say: n.text,
@@ -283,7 +282,7 @@ pub fn step_through_text(lesson: &Lesson, walk: &StepThrough) -> String {
         lesson.entry.number,
         lesson.entry.title()
     );
-    out.push_str(&lesson_frame::text(&lesson.entry.spec.frame));
+    out.push_str(&frame::text(&lesson.entry.spec.frame));
     out.push('\n');
     let what = lesson.script.title.as_deref().unwrap_or("Step-through");
     let _ = writeln!(

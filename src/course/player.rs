@@ -5,12 +5,16 @@
 //! script (`book/player/player.js`) only shows and hides what this made,
 //! so the book's player and `raytree lesson N` cannot tell different stories.
 
+use std::collections::BTreeSet;
+
 use serde::Serialize;
 
+use crate::course::guide::PlayerView;
 use crate::course::lesson::{Lesson, StepThrough};
 use crate::methods::Accel;
-use crate::tree::ray_tree::ShadowOutcomeRecord;
-use crate::tree::steps::StepKind;
+use crate::tree::document::TraceDocument;
+use crate::tree::ray_tree::{RayNode, ShadowOutcomeRecord};
+use crate::tree::steps::{Step, StepKind};
 use crate::views::diagram::draw;
 use crate::views::diagram::options::{Fit, Options};
 use crate::views::diagram::reveal::Reveal;
@@ -97,106 +101,42 @@ pub const DIAGRAM_SIZE: (u32, u32) = (960, 640);
 pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
     let sample = lesson.script.sample;
     let trace = &walk.trace;
-    let options = Options {
-        width: DIAGRAM_SIZE.0,
-        height: DIAGRAM_SIZE.1,
-        sample,
-        svg: true,
-        // The boxes or cells a structure's search visits appear step by step
-        // with the rays (lesson 12 walks a grid).
-        boxes: trace.structure != Accel::None,
-        depth: lesson.script.player.depth,
-        ticks: lesson.script.player.ticks,
-        shadows: !lesson.script.player.no_shadows,
-        fit: if lesson.script.player.whole_tree {
-            Fit::Tree
-        } else {
-            Fit::Hits
-        },
-        ..Options::default()
-    };
-    let figure = draw::draw(trace, &lesson.scene, &options).map_err(|e| {
-        format!(
-            "{}: the player's diagram: {e}",
-            lesson.script.path.display()
-        )
-    })?;
+    let figure =
+        draw::draw(trace, &lesson.scene, &diagram_options(lesson, trace)).map_err(|e| {
+            format!(
+                "{}: the player's diagram: {e}",
+                lesson.script.path.display()
+            )
+        })?;
     let svg = figure
         .svg()
         .ok_or("the diagram was drawn without its SVG")?;
-    let steps = trace.steps(sample);
-    let lines = |k: usize| {
-        let (head, rest) = text::describe(trace, sample, &steps[k]);
-        std::iter::once(head).chain(rest).collect::<Vec<_>>()
+    let shadows_drawn = figure
+        .svg_tags()
+        .map(|tags| Reveal::of(trace, sample).shadows_drawn(tags))
+        .unwrap_or_default();
+    let steps = Steps {
+        trace,
+        sample,
+        all: trace.steps(sample),
     };
     let stops = walk
         .stops
         .iter()
         .map(|s| PlayerStop {
             step: s.step,
-            ray: steps[s.step - 1].node,
+            ray: steps.all[s.step - 1].node,
             say: s.say.clone(),
-            lines: lines(s.step - 1),
+            lines: steps.lines(s.step - 1),
         })
         .collect();
-    let tree = &trace.samples[sample].tree;
-    let reveal = Reveal::of(trace, sample);
-    let step_of = |node: usize, kinds: &[StepKind]| {
-        steps
-            .iter()
-            .position(|s| s.node == node && kinds.contains(&s.kind))
-    };
-    let rays = tree
+    let view = &lesson.script.player;
+    let rays = trace.samples[sample]
+        .tree
         .nodes
         .iter()
         .enumerate()
-        .map(|(i, n)| {
-            let spawn_step = step_of(i, &[StepKind::Spawn]);
-            let spawn = spawn_step.map(lines);
-            let end = step_of(i, &[StepKind::Hit, StepKind::Miss]);
-            let drawn = lesson.script.player.depth.is_none_or(|d| n.depth <= d);
-            let shadows = n
-                .shadow_rays
-                .iter()
-                .enumerate()
-                .filter(|_| drawn && !lesson.script.player.no_shadows)
-                // Only what the diagram draws: a light behind the surface
-                // casts no ray, and one wholly outside the frame is not seen.
-                .filter(|&(k, _)| svg.contains(&reveal.shadow(i, k)))
-                .filter_map(|(k, s)| {
-                    let step = step_of(i, &[StepKind::Shadow(k)])?;
-                    Some(PlayerShadow {
-                        outcome: match s.outcome {
-                            ShadowOutcomeRecord::Reaches { transmitted } if transmitted < 1.0 => {
-                                "dimmed"
-                            }
-                            ShadowOutcomeRecord::Reaches { .. } => "reaches",
-                            ShadowOutcomeRecord::Blocked { .. } => "blocked",
-                            ShadowOutcomeRecord::FacesAway => "not cast",
-                        },
-                        light: s.name.clone(),
-                        step: step + 1,
-                        lines: lines(step),
-                    })
-                })
-                .collect();
-            PlayerRay {
-                parent: n.parent,
-                kind: n.kind.name(),
-                depth: n.depth,
-                spawn: spawn_step.map_or(steps.len(), |k| k + 1),
-                spawn_lines: spawn.as_ref().map_or(0, Vec::len),
-                lines: spawn
-                    .into_iter()
-                    .flatten()
-                    .chain(end.into_iter().flat_map(lines))
-                    .collect(),
-                found: end.map(|k| k + 1),
-                hit: n.hit.as_ref().map(|h| h.name.clone()),
-                drawn,
-                shadows,
-            }
-        })
+        .map(|(i, n)| ray(&steps, view, i, n, &shadows_drawn))
         .collect();
     let [x, y] = lesson.script.pixel;
     Ok(Player {
@@ -204,11 +144,126 @@ pub fn make(lesson: &Lesson, walk: &StepThrough) -> Result<Player, String> {
         title: lesson.script.title.clone().unwrap_or_default(),
         pixel: [x, y],
         scene: lesson.script.scene.display().to_string(),
-        steps: steps.len(),
+        steps: steps.all.len(),
         svg,
         stops,
         rays,
     })
+}
+
+/// The diagram as the script's `[player]` asks for it, in SVG.
+fn diagram_options(lesson: &Lesson, trace: &TraceDocument) -> Options {
+    let view = &lesson.script.player;
+    Options {
+        width: DIAGRAM_SIZE.0,
+        height: DIAGRAM_SIZE.1,
+        sample: lesson.script.sample,
+        svg: true,
+        // The boxes or cells a structure's search visits appear step by step
+        // with the rays (lesson 12 walks a grid).
+        boxes: trace.structure != Accel::None,
+        depth: view.depth,
+        ticks: view.ticks,
+        shadows: !view.no_shadows,
+        fit: if view.whole_tree {
+            Fit::Tree
+        } else {
+            Fit::Hits
+        },
+        ..Options::default()
+    }
+}
+
+/// The followed sample's steps, and each one's lines in the trace.
+struct Steps<'a> {
+    trace: &'a TraceDocument,
+    sample: usize,
+    all: Vec<Step>,
+}
+
+impl Steps<'_> {
+    /// Step `k`'s lines (0-based): the headline, then its arithmetic.
+    fn lines(&self, k: usize) -> Vec<String> {
+        let (head, rest) = text::describe(self.trace, self.sample, &self.all[k]);
+        std::iter::once(head).chain(rest).collect()
+    }
+
+    /// The first step (0-based) of `node` of one of `kinds`.
+    fn of(&self, node: usize, kinds: &[StepKind]) -> Option<usize> {
+        self.all
+            .iter()
+            .position(|s| s.node == node && kinds.contains(&s.kind))
+    }
+}
+
+/// Ray `i` (`n`) with its lines, what it meets, and the shadow rays its hit
+/// casts that the diagram draws (`shadows_drawn`).
+fn ray(
+    steps: &Steps,
+    view: &PlayerView,
+    i: usize,
+    n: &RayNode,
+    shadows_drawn: &BTreeSet<(usize, usize)>,
+) -> PlayerRay {
+    let spawn_step = steps.of(i, &[StepKind::Spawn]);
+    let spawn = spawn_step.map(|k| steps.lines(k));
+    let end = steps.of(i, &[StepKind::Hit, StepKind::Miss]);
+    let drawn = view.depth.is_none_or(|d| n.depth <= d);
+    let shadows = if drawn && !view.no_shadows {
+        shadows(steps, i, n, shadows_drawn)
+    } else {
+        Vec::new()
+    };
+    PlayerRay {
+        parent: n.parent,
+        kind: n.kind.name(),
+        depth: n.depth,
+        spawn: spawn_step.map_or(steps.all.len(), |k| k + 1),
+        spawn_lines: spawn.as_ref().map_or(0, Vec::len),
+        lines: spawn
+            .into_iter()
+            .flatten()
+            .chain(end.into_iter().flat_map(|k| steps.lines(k)))
+            .collect(),
+        found: end.map(|k| k + 1),
+        hit: n.hit.as_ref().map(|h| h.name.clone()),
+        drawn,
+        shadows,
+    }
+}
+
+/// The shadow rays of ray `i` (`n`) that the diagram draws: a light behind
+/// the surface casts no ray, and one wholly outside the frame is not seen.
+fn shadows(
+    steps: &Steps,
+    i: usize,
+    n: &RayNode,
+    shadows_drawn: &BTreeSet<(usize, usize)>,
+) -> Vec<PlayerShadow> {
+    n.shadow_rays
+        .iter()
+        .enumerate()
+        .filter(|&(k, _)| shadows_drawn.contains(&(i, k)))
+        .filter_map(|(k, s)| {
+            let step = steps.of(i, &[StepKind::Shadow(k)])?;
+            Some(PlayerShadow {
+                outcome: outcome(&s.outcome),
+                light: s.name.clone(),
+                step: step + 1,
+                lines: steps.lines(step),
+            })
+        })
+        .collect()
+}
+
+/// What a shadow ray found, in a word for the list.
+fn outcome(outcome: &ShadowOutcomeRecord) -> &'static str {
+    match *outcome {
+        ShadowOutcomeRecord::Reaches { transmitted } if transmitted < 1.0 => "dimmed",
+        ShadowOutcomeRecord::Reaches { .. } => "reaches",
+        ShadowOutcomeRecord::Blocked { .. } => "blocked",
+        ShadowOutcomeRecord::FacesAway => "not cast",
+    }
 }
 
 /// The player as the script file a chapter loads: it files the data under

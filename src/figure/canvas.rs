@@ -88,6 +88,12 @@ impl Figure {
         self.svg.as_ref().map(Svg::document)
     }
 
+    /// The tags the SVG's elements carry ([`Figure::tag`]), beside
+    /// [`Figure::svg`]: what was drawn of each tagged part.
+    pub fn svg_tags(&self) -> Option<&std::collections::BTreeSet<String>> {
+        self.svg.as_ref().map(Svg::tags)
+    }
+
     /// The plot frame, in pixels.
     pub fn frame(&self) -> Rect {
         self.frame

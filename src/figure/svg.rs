@@ -4,6 +4,7 @@
 //! zoom and highlight parts of one) and still match its PNG shape for shape.
 //! Text is written as text in the same font family, not as glyph outlines.
 
+use std::collections::BTreeSet;
 use std::fmt::Write;
 
 use glam::DVec2;
@@ -20,6 +21,9 @@ pub struct Svg {
     body: String,
     /// Attributes every element gets while set ([`Svg::tag`]).
     tag: String,
+    /// Every tag an element was written with: what the drawing holds of
+    /// each tagged part, known without reading the document back.
+    tagged: BTreeSet<String>,
 }
 
 /// How a shape is painted: its fill and its outline.
@@ -63,6 +67,7 @@ impl Svg {
             defs,
             body,
             tag: String::new(),
+            tagged: BTreeSet::new(),
         }
     }
 
@@ -76,6 +81,20 @@ impl Svg {
         } else {
             format!(" {attributes}")
         };
+    }
+
+    /// The tags elements were written with so far ([`Svg::tag`]'s attributes).
+    pub fn tags(&self) -> &BTreeSet<String> {
+        &self.tagged
+    }
+
+    /// Notes the current tag as written on an element.
+    fn written(&mut self) {
+        if let Some(attributes) = self.tag.strip_prefix(' ')
+            && !self.tagged.contains(attributes)
+        {
+            self.tagged.insert(attributes.to_owned());
+        }
     }
 
     /// A polyline or polygon through `points` (pixels).
@@ -107,6 +126,7 @@ impl Svg {
         }
         let attributes = self.paint(paint);
         let _ = writeln!(self.body, "<path d=\"{d}\"{attributes}{}/>", self.tag);
+        self.written();
     }
 
     /// A circle of `radius` pixels around `center`.
@@ -119,6 +139,7 @@ impl Svg {
             num(center.y),
             self.tag
         );
+        self.written();
     }
 
     /// `text` with its baseline starting at `at` (pixels), `size` pixels high,
@@ -138,6 +159,7 @@ impl Svg {
             self.tag,
             escape(text)
         );
+        self.written();
     }
 
     /// An 8-bit RGB image, `width` pixels wide, with its top-left corner at `(x, y)`.
@@ -170,6 +192,7 @@ impl Svg {
             "<g transform=\"translate({x} {y})\">\n{}</g>",
             panel.body
         );
+        self.tagged.extend(panel.tagged.iter().cloned());
     }
 
     /// The whole document.

@@ -6,7 +6,7 @@ use std::path::{Path, PathBuf};
 
 use anyhow::{Result, anyhow};
 use raytree::course::learner::vectors;
-use raytree::course::{lesson, spec_number};
+use raytree::course::{lesson, number};
 use raytree::inspector::{self, App};
 use raytree::tree::document::TraceDocument;
 
@@ -149,7 +149,7 @@ fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
             })?;
             traces.insert(&number.run, doc);
         }
-        spec_number::from_trace(&number.source, &traces[number.run.as_str()]).map_err(|e| {
+        number::from_trace(&number.source, &traces[number.run.as_str()]).map_err(|e| {
             anyhow!(
                 "{}: line {}: number {name}: {e}",
                 spec.display(),

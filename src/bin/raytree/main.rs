@@ -264,6 +264,6 @@ mod tests {
             .map(clap::Command::get_name)
             .filter(|n| *n != "help")
             .collect();
-        assert_eq!(names, raytree::course::lesson_command::COMMANDS);
+        assert_eq!(names, raytree::course::spec::command::COMMANDS);
     }
 }

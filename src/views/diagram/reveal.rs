@@ -7,7 +7,7 @@
 //! the scene (objects, lights, the eye) carry no tag: they are there from the
 //! start.
 
-use std::collections::HashMap;
+use std::collections::{BTreeSet, HashMap};
 
 use crate::tree::document::TraceDocument;
 use crate::tree::steps::StepKind;
@@ -88,6 +88,14 @@ impl Reveal {
     pub fn shadow(&self, node: usize, k: usize) -> String {
         let tag = tag(Part::Shadow, node, self.shadow.get(&(node, k)));
         format!("{tag} data-shadow=\"{k}\"")
+    }
+
+    /// The shadow rays a drawing holds, as `(node, k)`, from the tags its SVG
+    /// carries ([`crate::figure::canvas::Figure::svg_tags`]): a light behind
+    /// the surface casts no ray, and one wholly outside the frame is not drawn.
+    pub fn shadows_drawn(&self, tags: &BTreeSet<String>) -> BTreeSet<(usize, usize)> {
+        let drawn = |&&(node, k): &&(usize, usize)| tags.contains(&self.shadow(node, k));
+        self.shadow.keys().filter(drawn).copied().collect()
     }
 
     /// The attributes of `node`'s hit and what is marked there.

@@ -5,16 +5,17 @@
 //! key, must at every stop show exactly the rays the trace has spawned by
 //! that stop's step; each checked question must say wrong to a wrong answer
 //! and right to raytree's value; no page may scroll sideways at 1280 pixels.
-//! The page reports what it shows through `player.js`'s `?selftest` probe,
-//! which presses the real controls; what it should show comes from the
-//! trace, here.
+//! The page reports what it shows through the probe (`probe.js`), which
+//! this test alone adds to each built page it opens and which presses the
+//! real controls; what it should show comes from the trace, here. Readers'
+//! pages load only `book/player/player.js` and `questions.js`.
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use raytree::course::lesson;
-use raytree::tree::ray_tree::ShadowOutcomeRecord;
-use raytree::tree::steps::StepKind;
+use raytree::tree::ray_tree::{RayTree, ShadowOutcomeRecord};
+use raytree::tree::steps::{Step, StepKind};
 use serde_json::Value;
 
 use super::book::run;
@@ -22,6 +23,9 @@ use crate::tools::{Need, available};
 
 /// The page's width in the browser, as the readers used it.
 const WIDTH: u32 = 1280;
+
+/// The probe, added to a built page after the book's own scripts.
+const PROBE: &str = include_str!("probe.js");
 
 #[test]
 fn the_books_players_and_questions_work_in_a_real_browser() {
@@ -89,9 +93,10 @@ fn the_books_players_and_questions_work_in_a_real_browser() {
     );
 }
 
-/// Opens `page` with `?selftest` and returns the probe's report and every
-/// console message the page logged.
+/// Opens `page` (of the scratch build) with the probe added and returns the
+/// probe's report and every console message the page logged.
 fn open(page: &Path, scratch: &Path) -> (Value, Vec<String>) {
+    add_probe(page);
     let profile: PathBuf = scratch.join("chromium-profile");
     let out = Command::new("chromium")
         .args([
@@ -106,7 +111,7 @@ fn open(page: &Path, scratch: &Path) -> (Value, Vec<String>) {
         ])
         .arg(format!("--user-data-dir={}", profile.display()))
         .arg("--dump-dom")
-        .arg(format!("file://{}?selftest", page.display()))
+        .arg(format!("file://{}", page.display()))
         .output()
         .unwrap();
     let dom = String::from_utf8_lossy(&out.stdout);
@@ -159,40 +164,77 @@ fn check_player(
             player["lesson"]
         ));
     }
-    let steps = walk.trace.steps(loaded.script.sample);
-    let tree = &walk.trace.samples[loaded.script.sample].tree;
-    // The diagram draws rays to the script's [player] depth, and the list
-    // names what it draws: those rays, and their shadow rays unless the
-    // script leaves them out (lessons 3 to 5 once listed eleven rays beside
-    // a diagram of one).
-    let depth = loaded.script.player.depth.unwrap_or(u32::MAX);
-    let drawn = |s: &&raytree::tree::steps::Step| tree.nodes[s.node].depth <= depth;
-    let spawned_by = |step: usize| -> Vec<u64> {
-        steps[..step]
+    let drawn = Drawn {
+        steps: walk.trace.steps(loaded.script.sample),
+        tree: &walk.trace.samples[loaded.script.sample].tree,
+        depth: loaded.script.player.depth.unwrap_or(u32::MAX),
+        no_shadows: loaded.script.player.no_shadows,
+    };
+    out.extend(check_stops(name, player, walk, &drawn));
+    out.extend(check_shadow_click(name, player));
+    if drawn.tree.nodes.is_empty() {
+        out.push(format!("{name}: the traced pixel has no rays"));
+    }
+    out.extend(check_ray_clicks(name, player, drawn.tree));
+    out
+}
+
+/// What the trace says the player's diagram draws. It draws rays to the
+/// script's [player] depth, and the list names what it draws: those rays,
+/// and their shadow rays unless the script leaves them out (lessons 3 to 5
+/// once listed eleven rays beside a diagram of one).
+struct Drawn<'a> {
+    steps: Vec<Step>,
+    tree: &'a RayTree,
+    depth: u32,
+    no_shadows: bool,
+}
+
+impl Drawn<'_> {
+    fn drawn(&self, s: &Step) -> bool {
+        self.tree.nodes[s.node].depth <= self.depth
+    }
+
+    /// The drawn rays spawned by `step`, in spawn order.
+    fn spawned_by(&self, step: usize) -> Vec<u64> {
+        self.steps[..step]
             .iter()
             .filter(|s| s.kind == StepKind::Spawn)
-            .filter(drawn)
+            .filter(|s| self.drawn(s))
             .map(|s| s.node as u64)
             .collect()
-    };
-    // Shadow rays cast by then (a light behind the surface casts none).
-    let shadows_by = |step: usize| -> u64 {
-        let cast = steps[..step]
+    }
+
+    /// Shadow rays cast by then (a light behind the surface casts none).
+    fn shadows_by(&self, step: usize) -> u64 {
+        let cast = self.steps[..step]
             .iter()
             .filter(|s| match s.kind {
                 StepKind::Shadow(k) => !matches!(
-                    tree.nodes[s.node].shadow_rays[k].outcome,
+                    self.tree.nodes[s.node].shadow_rays[k].outcome,
                     ShadowOutcomeRecord::FacesAway
                 ),
                 _ => false,
             })
-            .filter(drawn);
-        if loaded.script.player.no_shadows {
+            .filter(|s| self.drawn(s));
+        if self.no_shadows {
             0
         } else {
             cast.count() as u64
         }
-    };
+    }
+}
+
+/// At every stop, forward through them all and back by the key to the
+/// first, the diagram shows the rays the trace has spawned, the tree lists
+/// as many, and every listed shadow ray is drawn.
+fn check_stops(
+    name: &str,
+    player: &Value,
+    walk: &lesson::StepThrough,
+    drawn: &Drawn,
+) -> Vec<String> {
+    let mut out = Vec::new();
     let seen = player["seen"].as_array().unwrap();
     let n = walk.stops.len();
     // Forward through every stop, then back by the key to the first.
@@ -206,65 +248,77 @@ fn check_player(
     }
     for (look, &stop) in seen.iter().zip(&order) {
         let step = walk.stops[stop].step;
-        let mut want = spawned_by(step);
-        want.sort_unstable();
-        let listed = want.len();
-        let shown: Vec<u64> = look["rays"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|r| r.as_u64().unwrap())
-            .collect();
-        if look["stop"] != stop || look["step"] != step {
-            out.push(format!(
-                "{name}: expected stop {} (step {step}), the player is at {look}",
-                stop + 1
-            ));
-        } else if shown != want {
-            out.push(format!(
-                "{name}: at stop {} (step {step}) the diagram shows rays {shown:?}, but the trace has spawned {want:?} by then",
-                stop + 1
-            ));
-        } else if look["tree"] != listed {
-            out.push(format!(
-                "{name}: at stop {} the tree lists {} rays, not the {listed} drawn",
-                stop + 1,
-                look["tree"],
-            ));
-        } else if look["shadows"] != look["shadowsShown"]
-            || look["shadows"]
-                .as_u64()
-                .is_none_or(|n| n > shadows_by(step))
-        {
-            // Every listed shadow ray is drawn, and none the trace has not cast.
-            out.push(format!(
-                "{name}: at stop {} the tree lists {} shadow rays, the diagram shows {}, the trace has cast {}",
-                stop + 1,
-                look["shadows"],
-                look["shadowsShown"],
-                shadows_by(step)
-            ));
-        }
+        out.extend(check_stop(name, look, stop, step, drawn));
     }
-    // A shadow ray clicked in the list shows its own line, and the diagram
-    // marks that shadow ray alone.
+    out
+}
+
+/// What the player showed at one stop (`look`), held to the trace.
+fn check_stop(name: &str, look: &Value, stop: usize, step: usize, drawn: &Drawn) -> Option<String> {
+    let mut want = drawn.spawned_by(step);
+    want.sort_unstable();
+    let listed = want.len();
+    let shown: Vec<u64> = look["rays"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|r| r.as_u64().unwrap())
+        .collect();
+    if look["stop"] != stop || look["step"] != step {
+        Some(format!(
+            "{name}: expected stop {} (step {step}), the player is at {look}",
+            stop + 1
+        ))
+    } else if shown != want {
+        Some(format!(
+            "{name}: at stop {} (step {step}) the diagram shows rays {shown:?}, but the trace has spawned {want:?} by then",
+            stop + 1
+        ))
+    } else if look["tree"] != listed {
+        Some(format!(
+            "{name}: at stop {} the tree lists {} rays, not the {listed} drawn",
+            stop + 1,
+            look["tree"],
+        ))
+    } else if look["shadows"] != look["shadowsShown"]
+        || look["shadows"]
+            .as_u64()
+            .is_none_or(|n| n > drawn.shadows_by(step))
+    {
+        // Every listed shadow ray is drawn, and none the trace has not cast.
+        Some(format!(
+            "{name}: at stop {} the tree lists {} shadow rays, the diagram shows {}, the trace has cast {}",
+            stop + 1,
+            look["shadows"],
+            look["shadowsShown"],
+            drawn.shadows_by(step)
+        ))
+    } else {
+        None
+    }
+}
+
+/// A shadow ray clicked in the list shows its own line, and the diagram
+/// marks that shadow ray alone.
+fn check_shadow_click(name: &str, player: &Value) -> Option<String> {
+    let seen = player["seen"].as_array().unwrap();
     let listed = seen.iter().any(|l| l["shadows"].as_u64() > Some(0));
     let shadow = &player["shadow"];
-    if listed
-        && !(shadow["shows"]
-            .as_str()
-            .is_some_and(|s| s.starts_with("shadow ray to '"))
-            && shadow["marked"].as_u64().is_some_and(|m| m > 0)
-            && shadow["markedShadow"] == true)
-    {
-        out.push(format!(
+    let shows = shadow["shows"]
+        .as_str()
+        .is_some_and(|s| s.starts_with("shadow ray to '"))
+        && shadow["marked"].as_u64().is_some_and(|m| m > 0)
+        && shadow["markedShadow"] == true;
+    (listed && !shows).then(|| {
+        format!(
             "{name}: clicking the last listed shadow ray gave {shadow}, not its line and its mark in the diagram"
-        ));
-    }
-    if tree.nodes.is_empty() {
-        out.push(format!("{name}: the traced pixel has no rays"));
-    }
-    // A ray clicked, in the tree or in the diagram, shows its own numbers.
+        )
+    })
+}
+
+/// A ray clicked, in the tree or in the diagram, shows its own numbers.
+fn check_ray_clicks(name: &str, player: &Value, tree: &RayTree) -> Vec<String> {
+    let mut out = Vec::new();
     let clicked = player["clicked"].as_array().cloned().unwrap_or_default();
     if clicked.len() != 2 {
         out.push(format!(
@@ -288,6 +342,17 @@ fn check_player(
         }
     }
     out
+}
+
+/// Adds the probe to a built page, as the last script of its body: it runs
+/// after the book's scripts, once they have started the page.
+fn add_probe(page: &Path) {
+    let html = std::fs::read_to_string(page).unwrap();
+    let at = html
+        .rfind("</body>")
+        .unwrap_or_else(|| panic!("{}: no </body>", page.display()));
+    let probed = format!("{}<script>\n{PROBE}</script>\n{}", &html[..at], &html[at..]);
+    std::fs::write(page, probed).unwrap();
 }
 
 /// Every question said wrong to a wrong answer and right to raytree's.

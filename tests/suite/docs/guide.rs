@@ -2,22 +2,37 @@
 
 use std::path::Path;
 
-use raytree::course::guide::{narrate, parse};
+use raytree::course::guide::{Script, narrate, parse};
+use raytree::tree::document::TraceDocument;
 use raytree::tree::ray_tree::Branch;
 use raytree::tree::steps::StepKind;
 use raytree::views::numbers::degrees;
 
-#[test]
-fn a_stop_at_total_internal_reflection_quotes_the_angles_of_the_trace() {
+/// Pixel 416,209 of the Whitted scene, which meets total internal reflection.
+fn tir_pixel() -> TraceDocument {
     let scene = raytree::scene::loader::whitted();
-    let trace = raytree::tree::record::pixel(
+    raytree::tree::record::pixel(
         &scene,
         raytree::scene::source::SceneSource::new("scenes/whitted.json", ""),
         416,
         209,
         None,
     )
-    .unwrap();
+    .unwrap()
+}
+
+/// A script of the given stops at pixel 416,209, named `s.toml`.
+fn stops_at(stops: &[(usize, &str)]) -> Script {
+    let mut text = "scene = \"x\"\npixel = [416, 209]\n".to_owned();
+    for (step, say) in stops {
+        text.push_str(&format!("[[stop]]\nstep = {step}\nsay = \"{say}\"\n"));
+    }
+    parse(Path::new("s.toml"), &text).unwrap()
+}
+
+#[test]
+fn a_stop_at_total_internal_reflection_quotes_the_angles_of_the_trace() {
+    let trace = tir_pixel();
     let steps = trace.steps(0);
     let nodes = &trace.samples[0].tree.nodes;
     let tir = steps
@@ -55,49 +70,45 @@ fn a_stop_at_total_internal_reflection_quotes_the_angles_of_the_trace() {
             degrees(refraction.critical.unwrap())
         )
     );
-    // A number the step does not have is named, with what it has.
-    let wrong = parse(
-        Path::new("s.toml"),
-        "scene = \"x\"\npixel = [416, 209]\n[[stop]]\nstep = 1\nsay = \"{theta1}\"\n",
-    )
-    .unwrap();
-    let e = narrate(&wrong, &trace).unwrap_err();
+}
+
+/// A number the step does not have is named, with what it has.
+#[test]
+fn a_number_the_step_lacks_is_named_with_those_it_has() {
+    let trace = tir_pixel();
+    let e = narrate(&stops_at(&[(1, "{theta1}")]), &trace).unwrap_err();
     assert!(
         e.starts_with("s.toml: stop 1 (step 1): no number {theta1} here; this step has "),
         "{e}"
     );
-    let past = parse(
-        Path::new("s.toml"),
-        "scene = \"x\"\npixel = [416, 209]\n[[stop]]\nstep = 9999\nsay = \"\"\n",
-    )
-    .unwrap();
-    let e = narrate(&past, &trace).unwrap_err();
+}
+
+#[test]
+fn a_stop_past_the_pixels_last_step_is_refused() {
+    let trace = tir_pixel();
+    let steps = trace.steps(0).len();
+    let e = narrate(&stops_at(&[(9999, "")]), &trace).unwrap_err();
     assert_eq!(
         e,
-        format!(
-            "s.toml: stop 1: step 9999 is past the pixel's {} steps",
-            steps.len()
-        )
+        format!("s.toml: stop 1: step 9999 is past the pixel's {steps} steps")
     );
-    // Stops go forward; but a step past the end is named first, wherever it
-    // is written (it was hidden behind the order of the stops after it).
-    let script = |first: usize, second: usize| {
-        let text = format!(
-            "scene = \"x\"\npixel = [416, 209]\n[[stop]]\nstep = {first}\nsay = \"\"\n\
-             [[stop]]\nstep = {second}\nsay = \"\"\n"
-        );
-        narrate(&parse(Path::new("s.toml"), &text).unwrap(), &trace).unwrap_err()
-    };
+}
+
+/// Stops go forward; but a step past the end is named first, wherever it
+/// is written (it was hidden behind the order of the stops after it).
+#[test]
+fn stops_go_forward_and_a_step_past_the_end_is_named_first() {
+    let trace = tir_pixel();
+    let steps = trace.steps(0).len();
+    let refused =
+        |first: usize, second: usize| narrate(&stops_at(&[(first, ""), (second, "")]), &trace);
     assert_eq!(
-        script(2, 2),
+        refused(2, 2).unwrap_err(),
         "s.toml: stop 2: step 2 does not come after step 2; stops go forward"
     );
     assert_eq!(
-        script(9999, 11),
-        format!(
-            "s.toml: stop 1: step 9999 is past the pixel's {} steps",
-            steps.len()
-        )
+        refused(9999, 11).unwrap_err(),
+        format!("s.toml: stop 1: step 9999 is past the pixel's {steps} steps")
     );
 }
 

@@ -1,5 +1,5 @@
 //! Every file of the repository that a lesson or a doc names (`format:
-//! src/course/guide.rs`, `see docs/commands.md`) exists: thirteen scripts
+//! src/course/guide/script.rs`, `see docs/commands.md`) exists: thirteen scripts
 //! once pointed their readers to a guide.rs that had moved.
 
 use std::path::{Path, PathBuf};

@@ -5,7 +5,7 @@
 use std::path::Path;
 
 use glam::{DVec2, DVec3};
-use raytree::course::lesson_spec;
+use raytree::course::spec;
 use raytree::figure::canvas::Figure;
 use raytree::figure::pen::palette;
 use raytree::math::ray::Ray;
@@ -24,7 +24,7 @@ fn root() -> &'static Path {
 
 /// A figure's command line (after `raytree`) and caption, from its lesson.
 fn figure(lesson: &str, name: &str) -> (Vec<String>, String) {
-    let spec = lesson_spec::load(&root().join("lessons").join(lesson).join("lesson.toml")).unwrap();
+    let spec = spec::load(&root().join("lessons").join(lesson).join("lesson.toml")).unwrap();
     let f = &spec.figures[name];
     (f.command.args.clone(), f.caption.clone())
 }

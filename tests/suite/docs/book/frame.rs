@@ -1,10 +1,11 @@
-//! Each lesson's frame (`raytree::course::lesson_frame`): what a learner can
+//! Each lesson's frame (`raytree::course::spec::frame`): what a learner can
 //! do after it and how long it takes, in every lesson, honest about the
 //! chapter's length, shown under the chapter's heading and by `raytree
 //! lesson`; lesson 13 marked as going beyond the lecture.
 
 use raytree::course::learner::vectors;
-use raytree::course::{lesson, lesson_frame};
+use raytree::course::lesson;
+use raytree::course::spec::frame::{BEYOND_LECTURE, OBJECTIVES};
 
 use super::run::root;
 
@@ -20,7 +21,7 @@ fn every_lesson_has_a_frame_true_to_its_chapter() {
         let frame = &e.spec.frame;
         let at = &e.name;
         assert!(
-            lesson_frame::OBJECTIVES.contains(&frame.objectives.len()),
+            OBJECTIVES.contains(&frame.objectives.len()),
             "{at}: {:?}",
             frame.objectives
         );
@@ -76,7 +77,7 @@ fn the_frame_opens_the_chapter_and_raytree_lesson() {
             m.sentence()
         );
         let want = if e.spec.frame.beyond_lecture {
-            format!("> {}\n\n{want}", lesson_frame::BEYOND_LECTURE)
+            format!("> {}\n\n{want}", BEYOND_LECTURE)
         } else {
             want
         };

@@ -6,8 +6,9 @@
 use std::fmt::Write;
 use std::path::Path;
 
-use raytree::course::lesson_frame::{self, Frame};
-use raytree::course::{lesson, lesson_spec, player};
+use raytree::course::spec;
+use raytree::course::spec::frame::{self, Frame};
+use raytree::course::{lesson, player};
 
 use super::page::{self, Input, Quoted};
 use super::run;
@@ -114,7 +115,7 @@ pub fn book() -> Result<Vec<File>, String> {
     }
     for (name, _) in PAGES.iter().chain(AFTER) {
         let spec_path = format!("book/pages/{name}.toml");
-        let spec = lesson_spec::load(&run::root().join(&spec_path))?;
+        let spec = spec::load(&run::root().join(&spec_path))?;
         let input = Input {
             text: &format!("book/pages/{name}.md"),
             spec_path: &spec_path,
@@ -153,7 +154,7 @@ pub fn book() -> Result<Vec<File>, String> {
 fn frame(frame: &Frame) -> String {
     let mut out = String::new();
     if frame.beyond_lecture {
-        let _ = write!(out, "> {}\n\n", lesson_frame::BEYOND_LECTURE);
+        let _ = write!(out, "> {}\n\n", frame::BEYOND_LECTURE);
     }
     if !frame.objectives.is_empty() {
         out.push_str("**After this lesson you can**\n\n");

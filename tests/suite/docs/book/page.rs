@@ -8,7 +8,8 @@ use std::fmt::Write;
 use std::path::Path;
 
 use raytree::course::lesson::StepThrough;
-use raytree::course::lesson_spec::{Source, Spec};
+use raytree::course::number::Source;
+use raytree::course::spec::Spec;
 
 mod questions;
 
@@ -168,57 +169,12 @@ impl Page<'_> {
         Ok(out)
     }
 
+    /// What one `{{…}}` stands for: a figure, a figure's number, an
+    /// excerpt, the step-through, the exercises or a number.
     fn directive(&mut self, inner: &str, top: bool) -> Result<String, String> {
-        let spec = self.src.spec;
         let mut words = inner.split_whitespace();
-        let (kind, name) = (words.next().unwrap_or(""), words.next());
-        let unknown = |what: &str, have: Vec<&String>| {
-            let have: Vec<&str> = have.into_iter().map(String::as_str).collect();
-            format!(
-                "no {what} '{}' in {} (it has: {})",
-                name.unwrap_or(""),
-                self.src.spec_path,
-                have.join(", ")
-            )
-        };
-        match (kind, name) {
-            ("figure", Some(name)) => {
-                let figure = spec
-                    .figures
-                    .get(name)
-                    .ok_or_else(|| unknown("figure", spec.figures.keys().collect()))?;
-                self.used.insert(format!("figure {name}"));
-                let caption = self.fill(
-                    &figure.caption,
-                    &format!("{} (figure {name})", self.src.spec_path),
-                    false,
-                )?;
-                let lacks = self.files.missing_for(name);
-                let png = if lacks.is_empty() {
-                    Some(self.files.png(name)?)
-                } else {
-                    self.unmade.push(format!("figure {name}.png"));
-                    self.missing.extend(lacks);
-                    None
-                };
-                let command = format!("{} -o {name}.png", figure.command.text);
-                self.figures
-                    .push((format!("{name}.png"), png, command.clone()));
-                let number = self.figures.len();
-                let alt = caption.replace(['[', ']', '\n'], " ");
-                // What it reads first, a command a line, so a learner can make it all.
-                let commands: String = self
-                    .files
-                    .making(&figure.command)
-                    .iter()
-                    .chain([&command])
-                    .map(|c| format!(" <br>`{c}`"))
-                    .collect();
-                Ok(format!(
-                    "![{alt}]({}{name}.png)\n\n**Figure {number}.** {}{commands}",
-                    self.src.figures, caption
-                ))
-            }
+        match (words.next().unwrap_or(""), words.next()) {
+            ("figure", Some(name)) => self.figure(name),
             // A figure shown above, by its number, without showing it again.
             ("see", Some(name)) => {
                 let file = format!("{name}.png");
@@ -228,49 +184,15 @@ impl Page<'_> {
                     })?;
                 Ok(format!("Figure {}", number + 1))
             }
-            ("excerpt", Some(name)) => {
-                let x = spec
-                    .excerpts
-                    .get(name)
-                    .ok_or_else(|| unknown("excerpt", spec.excerpts.keys().collect()))?;
-                self.used.insert(format!("excerpt {name}"));
-                let run = &spec.runs[&x.run].command;
-                let command = &run.text;
-                let (shown, body) = match &self.outputs[&x.run] {
-                    Output::Trace(_, text) => (
-                        format!("{command} --steps"),
-                        run::trace_steps(text, x.range),
-                    ),
-                    Output::Text(text) => (command.clone(), run::text_lines(text, x.range)),
-                    Output::Unmade => (command.clone(), Ok(HOLE.to_owned())),
-                };
-                let body = body.map_err(|e| format!("excerpt {name}: {e}"))?;
-                let body = raytree::views::wrap::text(&body, super::make::CODE_WIDTH);
-                if body == HOLE {
-                    self.unmade.push(format!("excerpt {name}"));
-                    self.missing.extend(self.files.missing(run));
-                } else {
-                    self.blocks.push((format!("excerpt {name}"), body.clone()));
-                }
-                let making: String = self
-                    .files
-                    .making(run)
-                    .iter()
-                    .map(|c| format!("$ {c}\n"))
-                    .collect();
-                // An excerpt not made here is a hole on a line of its own, so
-                // the closing fence still starts its line (the book's code
-                // blocks are found by their fences).
-                let end = if body.ends_with('\n') { "" } else { "\n" };
-                Ok(format!("```text\n{making}$ {shown}\n{body}{end}```"))
-            }
+            ("excerpt", Some(name)) => self.excerpt(name),
             ("steps", None) if top => self.steps(),
             ("exercises", None) if top => self.exercises(),
             (name, None) if !name.is_empty() => {
+                let spec = self.src.spec;
                 let value = self
                     .numbers
                     .get(name)
-                    .ok_or_else(|| unknown("number", spec.numbers.keys().collect()))?;
+                    .ok_or_else(|| self.unknown("number", name, spec.numbers.keys()))?;
                 self.used.insert(format!("number {name}"));
                 Ok(value.clone())
             }
@@ -278,6 +200,102 @@ impl Page<'_> {
                 "{{{{{inner}}}}} is not a directive: {{{{NAME}}}}, {{{{figure NAME}}}}, {{{{see NAME}}}}, {{{{excerpt NAME}}}}, {{{{steps}}}} or {{{{exercises}}}}"
             )),
         }
+    }
+
+    /// A name the spec does not have, with those it has.
+    fn unknown<'k>(
+        &self,
+        what: &str,
+        name: &str,
+        have: impl Iterator<Item = &'k String>,
+    ) -> String {
+        let have: Vec<&str> = have.map(String::as_str).collect();
+        format!(
+            "no {what} '{name}' in {} (it has: {})",
+            self.src.spec_path,
+            have.join(", ")
+        )
+    }
+
+    /// `{{figure NAME}}`: the image, numbered, its caption, and the commands
+    /// that make it (what it reads first, a command a line).
+    fn figure(&mut self, name: &str) -> Result<String, String> {
+        let spec = self.src.spec;
+        let figure = spec
+            .figures
+            .get(name)
+            .ok_or_else(|| self.unknown("figure", name, spec.figures.keys()))?;
+        self.used.insert(format!("figure {name}"));
+        let caption = self.fill(
+            &figure.caption,
+            &format!("{} (figure {name})", self.src.spec_path),
+            false,
+        )?;
+        let lacks = self.files.missing_for(name);
+        let png = if lacks.is_empty() {
+            Some(self.files.png(name)?)
+        } else {
+            self.unmade.push(format!("figure {name}.png"));
+            self.missing.extend(lacks);
+            None
+        };
+        let command = format!("{} -o {name}.png", figure.command.text);
+        self.figures
+            .push((format!("{name}.png"), png, command.clone()));
+        let number = self.figures.len();
+        let alt = caption.replace(['[', ']', '\n'], " ");
+        // What it reads first, a command a line, so a learner can make it all.
+        let commands: String = self
+            .files
+            .making(&figure.command)
+            .iter()
+            .chain([&command])
+            .map(|c| format!(" <br>`{c}`"))
+            .collect();
+        Ok(format!(
+            "![{alt}]({}{name}.png)\n\n**Figure {number}.** {}{commands}",
+            self.src.figures, caption
+        ))
+    }
+
+    /// `{{excerpt NAME}}`: part of a run's output as a code block, under the
+    /// commands that make it.
+    fn excerpt(&mut self, name: &str) -> Result<String, String> {
+        let spec = self.src.spec;
+        let x = spec
+            .excerpts
+            .get(name)
+            .ok_or_else(|| self.unknown("excerpt", name, spec.excerpts.keys()))?;
+        self.used.insert(format!("excerpt {name}"));
+        let run = &spec.runs[&x.run].command;
+        let command = &run.text;
+        let (shown, body) = match &self.outputs[&x.run] {
+            Output::Trace(_, text) => (
+                format!("{command} --steps"),
+                run::trace_steps(text, x.range),
+            ),
+            Output::Text(text) => (command.clone(), run::text_lines(text, x.range)),
+            Output::Unmade => (command.clone(), Ok(HOLE.to_owned())),
+        };
+        let body = body.map_err(|e| format!("excerpt {name}: {e}"))?;
+        let body = raytree::views::wrap::text(&body, super::make::CODE_WIDTH);
+        if body == HOLE {
+            self.unmade.push(format!("excerpt {name}"));
+            self.missing.extend(self.files.missing(run));
+        } else {
+            self.blocks.push((format!("excerpt {name}"), body.clone()));
+        }
+        let making: String = self
+            .files
+            .making(run)
+            .iter()
+            .map(|c| format!("$ {c}\n"))
+            .collect();
+        // An excerpt not made here is a hole on a line of its own, so
+        // the closing fence still starts its line (the book's code
+        // blocks are found by their fences).
+        let end = if body.ends_with('\n') { "" } else { "\n" };
+        Ok(format!("```text\n{making}$ {shown}\n{body}{end}```"))
     }
 
     fn steps(&mut self) -> Result<String, String> {
@@ -383,7 +401,7 @@ impl Page<'_> {
 }
 
 /// Where a number came from, in words a learner can retrace.
-fn origin(spec: &Spec, n: &raytree::course::lesson_spec::Number) -> String {
+fn origin(spec: &Spec, n: &raytree::course::spec::Number) -> String {
     let command = &spec.runs[&n.run].command.text;
     match &n.source {
         Source::Step { step, value } => format!("`{command}`, step {step}, `{value}`"),

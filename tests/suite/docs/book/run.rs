@@ -6,8 +6,8 @@ use std::collections::BTreeMap;
 use std::path::Path;
 use std::process::Command as Process;
 
-use raytree::course::lesson_spec::{Command, Number, Run, Source, Spec};
-use raytree::course::spec_number;
+use raytree::course::number::{self, Source};
+use raytree::course::spec::{Command, Number, Run, Spec};
 use raytree::tree::document::TraceDocument;
 use raytree::views::text;
 
@@ -207,11 +207,11 @@ fn output(run: &Run, name: &str, files: &Files) -> Result<Output, String> {
 }
 
 /// A number's value, written as the trace writes numbers (a trace's as
-/// `raytree lesson N` reads it, [`spec_number::from_trace`]).
+/// `raytree lesson N` reads it, [`number::from_trace`]).
 pub fn number(n: &Number, out: &Output) -> Result<String, String> {
     match (&n.source, out) {
         (Source::Step { .. } | Source::Json(_), Output::Trace(doc, _)) => {
-            spec_number::from_trace(&n.source, doc)
+            number::from_trace(&n.source, doc)
         }
         (Source::After(before), Output::Text(text)) => {
             let at = text

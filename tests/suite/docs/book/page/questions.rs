@@ -1,11 +1,11 @@
 //! A chapter's checked questions, written where its exercises go: each a
-//! box `player.js` turns into an answer field, checked against the value
-//! raytree printed in this build; without JavaScript (and on GitHub) the
-//! hint and the worked answer are folds, as the exercises are.
+//! box `book/player/questions.js` turns into an answer field, checked
+//! against the value raytree printed in this build; without JavaScript (and
+//! on GitHub) the hint and the worked answer are folds, as the exercises are.
 
 use std::fmt::Write;
 
-use raytree::course::question::{self, Question};
+use raytree::course::spec::question::{self, Question};
 
 use super::{HOLE, Page};
 
@@ -61,7 +61,7 @@ impl Page<'_> {
 /// characters (4, −3) are too common to tell.
 pub(super) fn not_shown_before(
     body: &str,
-    spec: &raytree::course::lesson_spec::Spec,
+    spec: &raytree::course::spec::Spec,
     numbers: &std::collections::BTreeMap<String, String>,
 ) -> Result<(), String> {
     let boxes: Vec<usize> = body

@@ -171,7 +171,7 @@ pub fn text(frame: &Frame) -> String {
 mod tests {
     use std::path::Path;
 
-    use crate::course::lesson_spec::parse;
+    use crate::course::spec::parse;
 
     const TOP: &str = "title = \"T\"\nsummary = \"S\"\n";
 

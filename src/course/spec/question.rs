@@ -171,13 +171,13 @@ pub fn tolerance_reason(q: &Question) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::course::lesson_spec;
+    use crate::course::spec::Spec;
 
-    fn spec(questions: &str) -> Result<lesson_spec::Spec, String> {
+    fn spec(questions: &str) -> Result<Spec, String> {
         let text = format!(
             "[run.p]\ncommand = \"raytree trace scenes/whitted.json --pixel 1,1\"\n[number]\nt = {{ run = \"p\", step = 7, value = \"t\" }}\n{questions}"
         );
-        lesson_spec::parse(std::path::Path::new("l.toml"), &text)
+        crate::course::spec::parse(std::path::Path::new("l.toml"), &text)
     }
 
     #[test]

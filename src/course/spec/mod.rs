@@ -7,7 +7,7 @@
 //! ```toml
 //! title = "The camera and the image plane"
 //! summary = "eye, u, v, n and the image plane; a pixel's (r, c) → (u_c, v_r) → P(r, c)"
-//! objectives = ["…", "…"]                    # the frame: crate::course::lesson_frame
+//! objectives = ["…", "…"]                    # the frame: crate::course::spec::frame
 //! minutes = { reading = 20, exercises = 15, build = 30 }
 //!
 //! [run.pixel]      # a raytree command; a `raytree trace` is run with --json
@@ -36,16 +36,24 @@
 //! answer = "raytree says {{u_c}}."
 //! ```
 
+pub mod command; // a spec's command lines, and the images and figures each one reads
+pub(crate) mod file; // a spec file's TOML as serde reads it
+pub mod frame; // what a lesson lets a learner do, how long it takes, whether it is optional
+pub mod question; // checked questions: predict a number, checked against raytree's own
+
 use std::collections::BTreeMap;
+use std::fmt::Display;
+use std::ops::Range;
 use std::path::Path;
 
-use crate::course::lesson_frame::{self, Frame, FrameFile};
-use crate::course::question::{self, Question};
-use crate::course::spec_file::{NumberFile, SpecFile};
-
-pub use crate::course::lesson_command::Command;
-use crate::course::lesson_command::command;
+use crate::course::number::Source;
+use crate::course::spec::file::{ExcerptFile, SpecFile};
+use crate::course::spec::frame::{Frame, FrameFile};
+use crate::course::spec::question::Question;
 use crate::course::teacher_file::{self, line_of};
+
+pub use crate::course::spec::command::Command;
+use crate::course::spec::command::command;
 
 /// A spec file, read and checked: every name it refers to exists.
 #[derive(Clone, Debug, PartialEq)]
@@ -113,24 +121,6 @@ pub struct Excerpt {
     pub line: usize,
 }
 
-/// Where a number comes from.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Source {
-    /// A name the step-through scripts use (`course::guide::values`) at a step of a trace.
-    Step {
-        /// The step, 1-based.
-        step: usize,
-        /// The name, e.g. `u_c`, `discriminant`, `theta1`.
-        value: String,
-    },
-    /// A field of the trace document, by JSON pointer (`/camera/eye`).
-    Json(String),
-    /// The word after this text in a run's output.
-    After(String),
-    /// The word before this text in a run's output (`17  reached a pixel`).
-    Before(String),
-}
-
 /// A number the text quotes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Number {
@@ -164,138 +154,31 @@ pub fn load(path: &Path) -> Result<Spec, String> {
 
 /// Parses a spec's text (`path` names it in messages).
 pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
-    let at = path.display();
     let file: SpecFile = teacher_file::parse(path, text)?;
-    let line = |s: std::ops::Range<usize>| line_of(text, s.start);
-    let fail = |l: usize, what: String| format!("{at}: line {l}: {what}");
+    let at = Where { path, text };
     let frame = FrameFile {
         objectives: file.objectives.clone(),
         minutes: file.minutes.clone(),
         beyond_lecture: file.beyond_lecture,
     };
-    let frame = lesson_frame::check(frame, text).map_err(|(l, e)| fail(l, e))?;
-    for name in file
-        .run
-        .keys()
-        .chain(file.figure.keys())
-        .chain(file.image.keys())
-        .chain(file.excerpt.keys())
-    {
-        check_name(name, false).map_err(|e| format!("{at}: {e}"))?;
-    }
-    for name in file.number.keys() {
-        check_name(name, true).map_err(|e| format!("{at}: {e}"))?;
-    }
-    let mut runs = BTreeMap::new();
-    for (name, r) in &file.run {
-        let l = line(r.span());
-        let command = command(&r.get_ref().command, false)
-            .map_err(|e| fail(l, format!("run {name}: {e}")))?;
-        runs.insert(name.clone(), Run { command, line: l });
-    }
-    let mut figures = BTreeMap::new();
-    for (name, f) in &file.figure {
-        let l = line(f.span());
-        let command = command(&f.get_ref().command, true)
-            .map_err(|e| fail(l, format!("figure {name}: {e}")))?;
-        let caption = f.get_ref().caption.trim().to_owned();
-        figures.insert(
-            name.clone(),
-            Figure {
-                command,
-                caption,
-                line: l,
-            },
-        );
-    }
-    let mut images = BTreeMap::new();
-    for (name, i) in &file.image {
-        let l = line(i.span());
-        if figures.contains_key(name) {
-            return Err(fail(l, format!("image {name}: a figure has that name")));
-        }
-        let command = command(&i.get_ref().command, true)
-            .map_err(|e| fail(l, format!("image {name}: {e}")))?;
-        images.insert(name.clone(), Image { command, line: l });
-    }
-    let run_of = |what: &str, run: &str, l: usize| -> Result<&Run, String> {
-        runs.get(run).ok_or_else(|| {
-            let have: Vec<&str> = runs.keys().map(String::as_str).collect();
-            fail(
-                l,
-                format!("{what}: no run '{run}' (runs: {})", have.join(", ")),
-            )
-        })
-    };
-    let mut excerpts = BTreeMap::new();
-    for (name, x) in &file.excerpt {
-        let l = line(x.span());
-        let x = x.get_ref();
-        let run = run_of(&format!("excerpt {name}"), &x.run, l)?;
-        let range = match (run.command.is_trace(), x.steps, x.lines) {
-            (_, Some(_), Some(_)) => {
-                return Err(fail(l, format!("excerpt {name}: steps or lines, not both")));
-            }
-            (true, _, Some(_)) => {
-                return Err(fail(
-                    l,
-                    format!("excerpt {name}: a trace is cut by steps, not lines"),
-                ));
-            }
-            (false, Some(_), _) => {
-                return Err(fail(
-                    l,
-                    format!(
-                        "excerpt {name}: only a trace has steps; cut run '{}' by lines",
-                        x.run
-                    ),
-                ));
-            }
-            (_, s, ls) => s.or(ls),
-        };
-        if let Some([a, b]) = range
-            && (a == 0 || b < a)
-        {
-            return Err(fail(
-                l,
-                format!("excerpt {name}: [{a}, {b}] is not a range counted from 1"),
-            ));
-        }
-        excerpts.insert(
-            name.clone(),
-            Excerpt {
-                run: x.run.clone(),
-                range: range.map(|[a, b]| (a, b)),
-                line: l,
-            },
-        );
-    }
-    let mut numbers = BTreeMap::new();
-    for (name, n) in &file.number {
-        let l = line(n.span());
-        let n = n.get_ref();
-        let run = run_of(&format!("number {name}"), &n.run, l)?;
-        let source = source(n, run.command.is_trace())
-            .map_err(|e| fail(l, format!("number {name}: {e}")))?;
-        numbers.insert(
-            name.clone(),
-            Number {
-                run: n.run.clone(),
-                source,
-                line: l,
-            },
-        );
-    }
+    let frame = frame::check(frame, text).map_err(|(l, e)| at.fail(l, e))?;
+    check_names(&file).map_err(|e| format!("{}: {e}", path.display()))?;
+    let runs = runs(&file, &at)?;
+    let figures = figures(&file, &at)?;
+    let images = images(&file, &figures, &at)?;
+    let excerpts = excerpts(&file, &runs, &at)?;
+    let numbers = numbers(&file, &runs, &at)?;
     let exercises = file
         .exercise
         .iter()
         .map(|e| Exercise {
             task: e.get_ref().task.trim().to_owned(),
             answer: e.get_ref().answer.trim().to_owned(),
-            line: line(e.span()),
+            line: at.line(e.span()),
         })
         .collect();
-    let questions = question::read(&file.question, &numbers, line).map_err(|(l, e)| fail(l, e))?;
+    let questions =
+        question::read(&file.question, &numbers, |s| at.line(s)).map_err(|(l, e)| at.fail(l, e))?;
     let mut spec = Spec {
         title: file.title,
         summary: file.summary,
@@ -308,8 +191,183 @@ pub fn parse(path: &Path, text: &str) -> Result<Spec, String> {
         exercises,
         questions,
     };
-    resolve_reads(&mut spec).map_err(|(l, e)| fail(l, e))?;
+    resolve_reads(&mut spec).map_err(|(l, e)| at.fail(l, e))?;
     Ok(spec)
+}
+
+/// The spec being read, to name a line of it in an error.
+struct Where<'a> {
+    path: &'a Path,
+    text: &'a str,
+}
+
+impl Where<'_> {
+    /// The line a table or field starts on.
+    fn line(&self, span: Range<usize>) -> usize {
+        line_of(self.text, span.start)
+    }
+
+    /// `PATH: line L: what`.
+    fn fail(&self, line: usize, what: impl Display) -> String {
+        format!("{}: line {line}: {what}", self.path.display())
+    }
+}
+
+/// Every name of a run, figure, image, excerpt and number is one the text
+/// can write between braces.
+fn check_names(file: &SpecFile) -> Result<(), String> {
+    for name in file
+        .run
+        .keys()
+        .chain(file.figure.keys())
+        .chain(file.image.keys())
+        .chain(file.excerpt.keys())
+    {
+        check_name(name, false)?;
+    }
+    for name in file.number.keys() {
+        check_name(name, true)?;
+    }
+    Ok(())
+}
+
+/// The `[run.NAME]` commands.
+fn runs(file: &SpecFile, at: &Where) -> Result<BTreeMap<String, Run>, String> {
+    let mut runs = BTreeMap::new();
+    for (name, r) in &file.run {
+        let l = at.line(r.span());
+        let command = command(&r.get_ref().command, false)
+            .map_err(|e| at.fail(l, format!("run {name}: {e}")))?;
+        runs.insert(name.clone(), Run { command, line: l });
+    }
+    Ok(runs)
+}
+
+/// The `[figure.NAME]` commands and their captions.
+fn figures(file: &SpecFile, at: &Where) -> Result<BTreeMap<String, Figure>, String> {
+    let mut figures = BTreeMap::new();
+    for (name, f) in &file.figure {
+        let l = at.line(f.span());
+        let command = command(&f.get_ref().command, true)
+            .map_err(|e| at.fail(l, format!("figure {name}: {e}")))?;
+        let caption = f.get_ref().caption.trim().to_owned();
+        figures.insert(
+            name.clone(),
+            Figure {
+                command,
+                caption,
+                line: l,
+            },
+        );
+    }
+    Ok(figures)
+}
+
+/// The `[image.NAME]` commands: no image takes a figure's name, since both
+/// are read as `NAME.png`.
+fn images(
+    file: &SpecFile,
+    figures: &BTreeMap<String, Figure>,
+    at: &Where,
+) -> Result<BTreeMap<String, Image>, String> {
+    let mut images = BTreeMap::new();
+    for (name, i) in &file.image {
+        let l = at.line(i.span());
+        if figures.contains_key(name) {
+            return Err(at.fail(l, format!("image {name}: a figure has that name")));
+        }
+        let command = command(&i.get_ref().command, true)
+            .map_err(|e| at.fail(l, format!("image {name}: {e}")))?;
+        images.insert(name.clone(), Image { command, line: l });
+    }
+    Ok(images)
+}
+
+/// The run `what` (on line `l`) quotes; an error lists the runs there are.
+fn run_of<'r>(
+    runs: &'r BTreeMap<String, Run>,
+    what: &str,
+    run: &str,
+    l: usize,
+    at: &Where,
+) -> Result<&'r Run, String> {
+    runs.get(run).ok_or_else(|| {
+        let have: Vec<&str> = runs.keys().map(String::as_str).collect();
+        at.fail(
+            l,
+            format!("{what}: no run '{run}' (runs: {})", have.join(", ")),
+        )
+    })
+}
+
+/// The `[excerpt.NAME]` entries: a trace is cut by steps, any other run's
+/// output by lines.
+fn excerpts(
+    file: &SpecFile,
+    runs: &BTreeMap<String, Run>,
+    at: &Where,
+) -> Result<BTreeMap<String, Excerpt>, String> {
+    let mut excerpts = BTreeMap::new();
+    for (name, x) in &file.excerpt {
+        let l = at.line(x.span());
+        let x = x.get_ref();
+        let run = run_of(runs, &format!("excerpt {name}"), &x.run, l, at)?;
+        let range = excerpt_range(x, run.command.is_trace())
+            .map_err(|e| at.fail(l, format!("excerpt {name}: {e}")))?;
+        excerpts.insert(
+            name.clone(),
+            Excerpt {
+                run: x.run.clone(),
+                range,
+                line: l,
+            },
+        );
+    }
+    Ok(excerpts)
+}
+
+/// An excerpt's steps (of a trace) or lines (of another run), counted from 1.
+fn excerpt_range(x: &ExcerptFile, trace: bool) -> Result<Option<(usize, usize)>, String> {
+    let range = match (trace, x.steps, x.lines) {
+        (_, Some(_), Some(_)) => return Err("steps or lines, not both".to_owned()),
+        (true, _, Some(_)) => return Err("a trace is cut by steps, not lines".to_owned()),
+        (false, Some(_), _) => {
+            return Err(format!(
+                "only a trace has steps; cut run '{}' by lines",
+                x.run
+            ));
+        }
+        (_, s, ls) => s.or(ls),
+    };
+    match range {
+        Some([a, b]) if a == 0 || b < a => Err(format!("[{a}, {b}] is not a range counted from 1")),
+        r => Ok(r.map(|[a, b]| (a, b))),
+    }
+}
+
+/// The `[number]` entries, each read from a run by where it stands there.
+fn numbers(
+    file: &SpecFile,
+    runs: &BTreeMap<String, Run>,
+    at: &Where,
+) -> Result<BTreeMap<String, Number>, String> {
+    let mut numbers = BTreeMap::new();
+    for (name, n) in &file.number {
+        let l = at.line(n.span());
+        let n = n.get_ref();
+        let run = run_of(runs, &format!("number {name}"), &n.run, l, at)?;
+        let source = Source::from_file(n, run.command.is_trace())
+            .map_err(|e| at.fail(l, format!("number {name}: {e}")))?;
+        numbers.insert(
+            name.clone(),
+            Number {
+                run: n.run.clone(),
+                source,
+                line: l,
+            },
+        );
+    }
+    Ok(numbers)
 }
 
 /// Names are what the text writes between braces and what files are called:
@@ -327,32 +385,6 @@ fn check_name(name: &str, number: bool) -> Result<(), String> {
         ));
     }
     Ok(())
-}
-
-fn source(n: &NumberFile, trace: bool) -> Result<Source, String> {
-    match (&n.step, &n.value, &n.json, &n.after, &n.before) {
-        (Some(0), ..) => Err("steps count from 1".to_owned()),
-        (Some(step), Some(value), None, None, None) if trace => Ok(Source::Step {
-            step: *step,
-            value: value.clone(),
-        }),
-        (None, None, Some(json), None, None) if trace => {
-            if json.starts_with('/') {
-                Ok(Source::Json(json.clone()))
-            } else {
-                Err(format!(
-                    "json = '{json}' is not a JSON pointer (it starts with /)"
-                ))
-            }
-        }
-        (None, None, None, Some(after), None) if !trace => Ok(Source::After(after.clone())),
-        (None, None, None, None, Some(before)) if !trace => Ok(Source::Before(before.clone())),
-        _ if trace => Err("a trace's number is step + value, or json".to_owned()),
-        _ => Err(
-            "a number from a run other than a trace is after = \"text before it\" or before = \"text after it\""
-                .to_owned(),
-        ),
-    }
 }
 
 /// Finds the files each command reads (an argument `NAME.png` naming an image

@@ -1,4 +1,4 @@
-//! The commands of a lesson's spec ([`crate::course::lesson_spec`]): a command
+//! The commands of a lesson's spec ([`crate::course::spec`]): a command
 //! line split into arguments, and which of the spec's images and figures
 //! each one reads (an argument `NAME.png`), so the book can make those first.
 
@@ -109,7 +109,7 @@ pub(crate) fn command(text: &str, figure: bool) -> Result<Command, String> {
 mod tests {
     use std::path::Path;
 
-    use crate::course::lesson_spec::{Spec, parse};
+    use crate::course::spec::{Spec, parse};
 
     fn spec(text: &str) -> Result<Spec, String> {
         parse(Path::new("lessons/03-x/lesson.toml"), text)

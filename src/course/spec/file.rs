@@ -1,4 +1,4 @@
-//! A spec file's TOML as serde reads it, before [`crate::course::lesson_spec`]
+//! A spec file's TOML as serde reads it, before [`crate::course::spec`]
 //! checks it: every table and field with its span, so an error can name the
 //! line.
 
@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 use serde::Deserialize;
 use toml::Spanned;
 
-use crate::course::lesson_frame::Minutes;
+use crate::course::spec::frame::Minutes;
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -30,7 +30,7 @@ pub(crate) struct SpecFile {
     #[serde(default)]
     pub(crate) exercise: Vec<Spanned<ExerciseFile>>,
     #[serde(default)]
-    pub(crate) question: Vec<Spanned<crate::course::question::QuestionFile>>,
+    pub(crate) question: Vec<Spanned<crate::course::spec::question::QuestionFile>>,
 }
 
 #[derive(Deserialize)]
