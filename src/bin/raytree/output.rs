@@ -23,7 +23,8 @@ use std::sync::{Mutex, MutexGuard};
 
 use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use raytree::io::image_file::{self, Format};
+use raytree::io::image;
+use raytree::io::image::file::Format;
 pub use raytree::io::output::commit_all;
 use raytree::io::output::{self, PendingFile};
 use raytree::scene::strict::printable;
@@ -240,7 +241,7 @@ pub fn require_png(path: &Path, what: &str) -> Result<()> {
 /// The image format an output's name asks for (.png or .ppm); any other
 /// name is a usage error.
 pub fn image_format(path: &Path) -> Result<Format> {
-    image_file::format_of(path).map_err(|e| usage(format_args!("{e:#}")))
+    image::file::format_of(path).map_err(|e| usage(format_args!("{e:#}")))
 }
 
 /// Whether `path` ends in `.extension` (in any case).

@@ -4,7 +4,7 @@ use std::path::PathBuf;
 use std::time::Instant;
 
 use anyhow::{Context, Result};
-use raytree::io::image_file;
+use raytree::io::image;
 use raytree::methods::Accel;
 use raytree::trace::accelerator::Structure;
 use raytree::trace::progress::Progress;
@@ -116,7 +116,7 @@ pub fn run(args: &Args) -> Result<()> {
     };
     let rendering = started.elapsed().as_secs_f64();
     progress.finish_and_clear();
-    pending.commit(&image_file::encode(&image, format)?)?;
+    pending.commit(&image::file::encode(&image, format)?)?;
     if !args.quiet {
         // Each time named by what it covers: the scene's reading, then the
         // rendering (starting the threads, building the hierarchy, tracing);

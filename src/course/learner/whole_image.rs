@@ -7,7 +7,7 @@
 //! clearly closer to it than to raytree's.
 
 use crate::io::image::Image;
-use crate::io::image_diff::per_pixel;
+use crate::io::image::diff::per_pixel;
 
 /// The whole-image mistakes: the id, and what to fix in one plain sentence.
 pub const IMAGE_MISTAKES: [(&str, &str); 4] = [
