@@ -6,8 +6,6 @@
 pub mod input; // regular files only, size checked before reading, text that is text
 pub mod headroom; // whether a file will fit in memory once loaded
 pub mod sizes; // sizes in words: 3.4 MB, 1 GiB
-pub mod image; // linear RGB, and the one conversion to 8-bit sRGB
-pub mod image_file; // PNG and PPM
+pub mod image; // linear RGB, and the one conversion to 8-bit sRGB; PNG and PPM; differences
 pub mod output; // files written atomically
-pub mod image_diff; // how far apart two images are
 pub mod postscript; // the lecture's PostScript ray tracer, its transcription slips repaired

@@ -15,9 +15,7 @@ pub mod scene_error; // why a scene file could not be read, in one line
 pub mod loader; // the scene file, checked, into a Scene
 mod object_file; // its objects: shapes, transforms, mesh files
 pub mod obj; // OBJ meshes
-pub mod nff; // NFF scenes (the Standard Procedural Databases), read as scene JSON
-mod nff_json; // an NFF scene written as scene JSON
-mod nff_shapes; // NFF's objects read in NFF's terms: negative radii, a polygon's plane and its convex first corner
+pub mod nff; // NFF scenes (the Standard Procedural Databases), read into the format's parts, written as scene JSON
 pub mod source; // which scene file, by name and hash
 pub mod generate; // scenes made by program
 pub mod vary; // one numeric field of a scene file, varied (filmstrips)

@@ -1,10 +1,10 @@
 //! A filmstrip's frames, rendered one after the other (each on all cores),
 //! each with how much it changed from the frame before: the share of pixels
 //! where some channel moved by more than 3 of 255 levels, as `raytree diff`
-//! counts ([`crate::io::image_diff`]).
+//! counts ([`crate::io::image::diff`]).
 
+use crate::io::image::diff;
 use crate::io::image::to_rgb8;
-use crate::io::image_diff;
 use crate::scene::Scene;
 use crate::trace::progress::Progress;
 use crate::trace::render;
@@ -56,7 +56,7 @@ impl Frames<'_> {
         let changed = match &self.previous {
             None => None,
             Some(before) => Some(
-                image_diff::difference(before, &now)
+                diff::difference(before, &now)
                     .map_err(|e| format!("{e:#}"))?
                     .share_over_3,
             ),

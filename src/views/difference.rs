@@ -5,7 +5,7 @@
 //! a lesson can show where a textbook method, or another renderer, departs.
 
 use crate::figure::canvas::Figure;
-use crate::io::image_diff::{Difference, per_pixel};
+use crate::io::image::diff::{Difference, per_pixel};
 use crate::views::aov_figure::{BAR_TEXT, MAX_STEPS, Range, bar_caption, draw_bar};
 use crate::views::filmstrip::{self, Frame};
 use crate::views::numbers::num;
@@ -124,7 +124,7 @@ pub fn draw(a: &Side, b: &Side, width: u32, height: u32, d: &Difference) -> Opti
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::io::image_diff::difference;
+    use crate::io::image::diff::difference;
 
     #[test]
     fn the_difference_frame_maps_each_pixels_largest_channel_difference() {

@@ -9,10 +9,11 @@ use raytree::trace::aov_render;
 use raytree::trace::progress::Progress;
 use raytree::views::aov_figure;
 
-use crate::args::usage;
+use crate::args::{thread_pool, threads_word, usage};
 use crate::output;
-use crate::render::{Args, thread_pool};
+use crate::render::Args;
 
+/// `raytree render --aov NAME`: what `main` runs for `render` with `--aov`.
 pub fn run(args: &Args, name: &str) -> Result<()> {
     let (scene, source) = args.scene.load()?;
     let aov = Aov::parse(name, &scene).map_err(|e| usage(format_args!("--aov: {e}")))?;
@@ -62,7 +63,7 @@ pub fn run(args: &Args, name: &str) -> Result<()> {
             s.width,
             s.height,
             started.elapsed().as_secs_f64(),
-            crate::render::threads_word(threads)
+            threads_word(threads)
         ))?;
     }
     Ok(())

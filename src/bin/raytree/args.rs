@@ -1,10 +1,11 @@
 //! Argument groups several commands share (the scene with its overrides, the
-//! pixel or ray to trace), the parsers of their values, and [`Usage`], the
-//! error of a command line that parses but asks for what cannot be.
+//! pixel or ray to trace), the parsers of their values, the pool of worker
+//! threads `--threads` asks for, and [`Usage`], the error of a command line
+//! that parses but asks for what cannot be.
 
 use std::path::PathBuf;
 
-use anyhow::Result;
+use anyhow::{Context, Result};
 use glam::DVec3;
 use raytree::math::ray::Ray;
 use raytree::methods::{Accel, Antialiasing, Weights};
@@ -273,4 +274,38 @@ fn parse_numbers<const N: usize>(s: &str) -> Result<[f64; N], String> {
             .ok_or_else(|| format!("'{p}' is not a finite number"))?;
     }
     Ok(out)
+}
+
+/// Most worker threads: more only costs time on any machine of today (each
+/// thread's start-up and memory) and thousands stall it.
+const MAX_THREADS: usize = 256;
+
+/// "1 thread", "2 threads".
+pub fn threads_word(threads: usize) -> String {
+    if threads == 1 {
+        "1 thread".to_owned()
+    } else {
+        format!("{threads} threads")
+    }
+}
+
+/// `--threads N`: 1 to [`MAX_THREADS`].
+pub fn parse_threads(s: &str) -> Result<usize, String> {
+    s.trim()
+        .parse::<usize>()
+        .ok()
+        .filter(|n| (1..=MAX_THREADS).contains(n))
+        .ok_or_else(|| format!("must be a whole number from 1 to {MAX_THREADS}"))
+}
+
+/// A pool of `threads` workers ([`parse_threads`] checked the number; one
+/// per core by default), and how many.
+pub fn thread_pool(threads: Option<usize>) -> Result<(rayon::ThreadPool, usize)> {
+    let threads =
+        threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .context("cannot start worker threads")?;
+    Ok((pool, threads))
 }

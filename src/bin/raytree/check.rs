@@ -9,7 +9,7 @@ use std::process::ExitCode;
 
 use anyhow::Result;
 use raytree::course::learner::{check, image};
-use raytree::io::{image_diff, image_file};
+use raytree::io::image::{diff, file};
 use raytree::scene::overrides::Overrides;
 use raytree::trace::progress::Progress;
 use raytree::trace::render;
@@ -144,7 +144,7 @@ fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result
         )?),
         None => None,
     };
-    let theirs = image_file::read_rgb8(yours)?;
+    let theirs = file::read_rgb8(yours)?;
     let names = (
         args.scene.display().to_string(),
         yours.display().to_string(),
@@ -164,7 +164,7 @@ fn run_image(args: &Args, scene: &raytree::scene::Scene, yours: &Path) -> Result
     if let (Some(pending), Some(path)) = (pending, &args.output) {
         let ours = ::image::RgbImage::from_raw(check.width, check.height, check.ours.clone())
             .expect("a render of the image's size");
-        let d = image_diff::difference(&theirs, &ours)?;
+        let d = diff::difference(&theirs, &ours)?;
         let figure = difference::draw(
             &Side {
                 rgb: theirs.as_raw(),

@@ -1,10 +1,14 @@
 //! `raytree diagram`: one pixel's (or one ray's) ray tree drawn over the scene.
 
-use std::path::PathBuf;
+use std::ffi::OsString;
+use std::path::{Path, PathBuf};
 
 use anyhow::{Context, Result};
 use glam::DVec2;
+use raytree::figure::canvas::Figure;
 use raytree::figure::labels::Label;
+use raytree::scene::Scene;
+use raytree::tree::document::TraceDocument;
 use raytree::views::diagram::options::{Fit, Labels, Options};
 use raytree::views::diagram::projection::View;
 use raytree::views::diagram::{self, camera_view, object_view};
@@ -106,20 +110,45 @@ fn parse_window(s: &str) -> Result<(DVec2, DVec2), String> {
 
 pub fn run(args: &Args) -> Result<()> {
     let (scene, source) = args.scene.load()?;
-    // Each kind of figure has a name of its own, so that drawing the
-    // vectors or the graph of a pixel keeps its diagram.
-    let path = output::name_or(&args.output, || {
-        let kind = match (args.vectors, args.graph) {
-            (Some(k), _) => format!("vectors-P{k}"),
-            (None, true) => "graph".to_owned(),
-            (None, false) => "diagram".to_owned(),
-        };
-        let at = match args.target.pixel {
-            Some((x, y)) => format!("{x}-{y}"),
-            None => "ray".to_owned(),
-        };
-        output::stem_and(args.scene.stem(), &format!("-{kind}-{at}.png"))
-    });
+    let path = output::name_or(&args.output, || default_name(args));
+    let svg = is_svg(args, &path)?;
+    let pending = output::create(&path, &args.scene.inputs(&scene))?;
+    let trace = args.target.record(&scene, source)?;
+    let figure = if let Some(k) = args.vectors {
+        hit_figure(&trace, k, args.size)?
+    } else if args.graph {
+        graph_figure(&trace, args.size)?
+    } else {
+        diagram_figure(args, &trace, &scene, svg)?
+    };
+    match figure.svg().filter(|_| svg) {
+        Some(text) => pending.commit(text.as_bytes())?,
+        None => pending.commit(&figure.png())?,
+    }
+    let (w, h) = figure.size();
+    output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
+    Ok(())
+}
+
+/// The figure's default name: the scene's, the kind of figure and the pixel
+/// (each kind has a name of its own, so that drawing the vectors or the
+/// graph of a pixel keeps its diagram).
+fn default_name(args: &Args) -> OsString {
+    let kind = match (args.vectors, args.graph) {
+        (Some(k), _) => format!("vectors-P{k}"),
+        (None, true) => "graph".to_owned(),
+        (None, false) => "diagram".to_owned(),
+    };
+    let at = match args.target.pixel {
+        Some((x, y)) => format!("{x}-{y}"),
+        None => "ray".to_owned(),
+    };
+    output::stem_and(args.scene.stem(), &format!("-{kind}-{at}.png"))
+}
+
+/// Whether `path` asks for an SVG (else a PNG): any other name, or an SVG
+/// of a figure drawn as PNG only, is a usage error.
+fn is_svg(args: &Args, path: &Path) -> Result<bool> {
     let extension = path.extension().map(|e| e.to_ascii_lowercase());
     let svg = extension.as_ref().is_some_and(|e| e == "svg");
     if !svg && extension.as_ref().is_none_or(|e| e != "png") {
@@ -139,8 +168,69 @@ pub fn run(args: &Args) -> Result<()> {
             }
         )));
     }
-    let pending = output::create(&path, &args.scene.inputs(&scene))?;
-    let trace = args.target.record(&scene, source)?;
+    Ok(svg)
+}
+
+/// `--vectors K`: hit P`k` enlarged, with its vectors.
+fn hit_figure(trace: &TraceDocument, k: u32, (width, height): (u32, u32)) -> Result<Figure> {
+    let sample = trace.samples.first().context("the trace has no sample")?;
+    let hits: Vec<_> = sample
+        .tree
+        .nodes
+        .iter()
+        .filter_map(|n| n.hit.as_ref())
+        .collect();
+    let hit = hits.get(k as usize - 1).ok_or_else(|| {
+        usage(format_args!(
+            "--vectors {k}: no hit P{k}: the tree has {} hits",
+            hits.len()
+        ))
+    })?;
+    let name = format!("P{k} on '{}'", hit.name);
+    let title = match &trace.pixel {
+        Some(p) => format!("{}, pixel {},{}, {name}", trace.scene.file, p.x, p.y),
+        None => format!("{}, the given ray, {name}", trace.scene.file),
+    };
+    let drawn = hit_vectors::draw_with_labels(hit, &name, &title, width, height).context(
+        "the ray meets the surface head-on (nothing to split), or the figure size is too small",
+    )?;
+    no_room(&drawn.left_out)?;
+    Ok(drawn.figure)
+}
+
+/// `--graph`: the ray tree as a graph of boxes and edges.
+fn graph_figure(trace: &TraceDocument, (width, height): (u32, u32)) -> Result<Figure> {
+    let sample = trace.samples.first().context("the trace has no sample")?;
+    let title = match &trace.pixel {
+        Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),
+        None => format!("{}, the given ray", trace.scene.file),
+    };
+    let drawn = tree_graph::draw_with_labels(&sample.tree, &title, width, height)
+        .context("the figure size is too small for this tree")?;
+    no_room(&drawn.left_out)?;
+    Ok(drawn.figure)
+}
+
+/// The ray diagram over the scene: in the world, beside the hit object's
+/// own space, or the camera's view; recording an SVG too when `svg`.
+fn diagram_figure(args: &Args, trace: &TraceDocument, scene: &Scene, svg: bool) -> Result<Figure> {
+    let options = options(args, svg);
+    let mut left_out = Vec::new();
+    let figure = match (args.view, args.space) {
+        (ViewArg::Camera, _) => camera_view::draw(trace, args.size.0, args.size.1),
+        (_, Space::Object) => object_view::draw(trace, scene, &options),
+        (_, Space::World) => diagram::draw::draw_with_labels(trace, scene, &options).map(|d| {
+            left_out = d.left_out;
+            d.figure
+        }),
+    }
+    .map_err(anyhow::Error::msg)?;
+    no_room(&left_out)?;
+    Ok(figure)
+}
+
+/// The diagram's options, as the flags set them.
+fn options(args: &Args, svg: bool) -> Options {
     let view = match args.view {
         ViewArg::Auto => View::Auto,
         ViewArg::Top => View::Top,
@@ -148,7 +238,7 @@ pub fn run(args: &Args) -> Result<()> {
         ViewArg::Front => View::Front,
         ViewArg::Camera => View::Auto,
     };
-    let options = Options {
+    Options {
         width: args.size.0,
         height: args.size.1,
         view,
@@ -164,70 +254,7 @@ pub fn run(args: &Args) -> Result<()> {
         until_step: None,
         boxes: args.boxes,
         svg,
-    };
-    if let Some(k) = args.vectors {
-        let sample = trace.samples.first().context("the trace has no sample")?;
-        let hits: Vec<_> = sample
-            .tree
-            .nodes
-            .iter()
-            .filter_map(|n| n.hit.as_ref())
-            .collect();
-        let hit = hits.get(k as usize - 1).ok_or_else(|| {
-            usage(format_args!(
-                "--vectors {k}: no hit P{k}: the tree has {} hits",
-                hits.len()
-            ))
-        })?;
-        let name = format!("P{k} on '{}'", hit.name);
-        let title = match &trace.pixel {
-            Some(p) => format!("{}, pixel {},{}, {name}", trace.scene.file, p.x, p.y),
-            None => format!("{}, the given ray, {name}", trace.scene.file),
-        };
-        let drawn = hit_vectors::draw_with_labels(hit, &name, &title, args.size.0, args.size.1)
-            .context(
-                "the ray meets the surface head-on (nothing to split), or the figure size is too small",
-            )?;
-        no_room(&drawn.left_out)?;
-        let figure = drawn.figure;
-        pending.commit(&figure.png())?;
-        let (w, h) = figure.size();
-        output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
-        return Ok(());
     }
-    if args.graph {
-        let sample = trace.samples.first().context("the trace has no sample")?;
-        let title = match &trace.pixel {
-            Some(p) => format!("{}, pixel {},{}", trace.scene.file, p.x, p.y),
-            None => format!("{}, the given ray", trace.scene.file),
-        };
-        let drawn = tree_graph::draw_with_labels(&sample.tree, &title, args.size.0, args.size.1)
-            .context("the figure size is too small for this tree")?;
-        no_room(&drawn.left_out)?;
-        let figure = drawn.figure;
-        pending.commit(&figure.png())?;
-        let (w, h) = figure.size();
-        output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
-        return Ok(());
-    }
-    let mut left_out = Vec::new();
-    let figure = match (args.view, args.space) {
-        (ViewArg::Camera, _) => camera_view::draw(&trace, args.size.0, args.size.1),
-        (_, Space::Object) => object_view::draw(&trace, &scene, &options),
-        (_, Space::World) => diagram::draw::draw_with_labels(&trace, &scene, &options).map(|d| {
-            left_out = d.left_out;
-            d.figure
-        }),
-    }
-    .map_err(anyhow::Error::msg)?;
-    no_room(&left_out)?;
-    match figure.svg().filter(|_| svg) {
-        Some(text) => pending.commit(text.as_bytes())?,
-        None => pending.commit(&figure.png())?,
-    }
-    let (w, h) = figure.size();
-    output::note(&format!("wrote {} ({w}×{h})", path.display()))?;
-    Ok(())
 }
 
 /// A note naming the labels that found no room, the optional ones (ticks,

@@ -7,7 +7,7 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use anyhow::{Context, Result};
-use raytree::io::{image_diff, image_file};
+use raytree::io::image;
 use raytree::views::difference::{self, Side};
 
 use crate::output;
@@ -40,9 +40,9 @@ pub fn run(args: &Args) -> Result<ExitCode> {
     if let Some(path) = &args.output {
         output::require_png(path, "a difference figure")?;
     }
-    let a = image_file::read_rgb8(&args.a)?;
-    let b = image_file::read_rgb8(&args.b)?;
-    let d = image_diff::difference(&a, &b)?;
+    let a = image::file::read_rgb8(&args.a)?;
+    let b = image::file::read_rgb8(&args.b)?;
+    let d = image::diff::difference(&a, &b)?;
     let pending = (args.output.as_deref())
         .map(|path| output::create(path, &[args.a.clone(), args.b.clone()]))
         .transpose()?;

@@ -11,9 +11,8 @@ use raytree::trace::progress::Progress;
 use raytree::trace::render;
 use raytree::views::forward_figure;
 
-use crate::args::SceneArgs;
+use crate::args::{SceneArgs, parse_threads, thread_pool};
 use crate::output;
-use crate::render::{parse_threads, thread_pool};
 
 #[derive(clap::Args)]
 pub struct Args {

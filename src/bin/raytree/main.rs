@@ -1,7 +1,8 @@
 //! The `raytree` command line: parse, dispatch to the command's file, report.
-//! Each command lives in a file of its own; the argument groups they share are
-//! in `args.rs`; everything printed and every file written goes through
-//! `output.rs`, the one door out (which the lint below keeps the only one).
+//! Each command lives in a file of its own; the argument groups they share
+//! (and the worker threads) are in `args.rs`; everything printed and every
+//! file written goes through `output.rs`, the one door out (which the lint
+//! below keeps the only one); what a signal ends is in `signals.rs`.
 
 // `print!` and `eprint!` panic on a closed pipe: write through `output` instead.
 #![deny(clippy::print_stdout, clippy::print_stderr)]
@@ -22,6 +23,7 @@ mod memory;
 mod output;
 mod postscript;
 mod render;
+mod signals;
 mod strip;
 mod structures;
 mod trace;
@@ -84,9 +86,12 @@ fn main() -> ExitCode {
         Ok(cli) => cli,
         Err(e) => return usage_error(&e),
     };
-    output::clean_up_on_signals();
+    signals::clean_up_on_signals();
     let result = match cli.command {
-        Command::Render(args) => render::run(&args),
+        Command::Render(args) => match &args.aov {
+            Some(name) => aov::run(&args, name),
+            None => render::run(&args),
+        },
         Command::Trace(args) => trace::run(&args),
         Command::Diagram(args) => diagram::run(&args),
         Command::Inspect(args) => inspect::run(&args),

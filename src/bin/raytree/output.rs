@@ -9,21 +9,18 @@
 //! closed pipe always arrives as that error.
 //!
 //! Every file a command writes is a pending file (`raytree::io::output`) until
-//! it is committed, never one of the command's inputs; an outside program a
-//! command runs (Ghostscript) is a [`Helper`]; SIGINT, SIGTERM, SIGHUP and
-//! SIGQUIT end the helper, remove its folder and every pending file and give the
-//! terminal back; default output names; progress bars.
+//! it is committed, never one of the command's inputs (a signal removes it:
+//! `signals.rs`); default output names; progress bars.
 
 use std::ffi::{OsStr, OsString};
 use std::io::{self, IsTerminal, Write};
 use std::path::{Path, PathBuf};
-use std::process::{Child, ExitStatus, Output};
 use std::sync::atomic::{AtomicBool, Ordering};
-use std::sync::{Mutex, MutexGuard};
 
 use anyhow::{Result, bail};
 use indicatif::{ProgressBar, ProgressDrawTarget, ProgressStyle};
-use raytree::io::image_file::{self, Format};
+use raytree::io::image;
+use raytree::io::image::file::Format;
 pub use raytree::io::output::commit_all;
 use raytree::io::output::{self, PendingFile};
 use raytree::scene::strict::printable;
@@ -51,6 +48,15 @@ pub fn note(line: &str) -> io::Result<()> {
 /// cannot be written there is nothing left to do, and the exit code says it.
 pub fn last_word(line: &str) {
     let _ = note(line);
+}
+
+/// The last word of a program a signal ends, on a line of its own: below the
+/// line a progress bar may be drawn on.
+pub fn last_word_below_bar(line: &str) {
+    if BAR_SHOWN.load(Ordering::Relaxed) {
+        let _ = write_all(io::stderr().lock(), "error", b"\n");
+    }
+    last_word(line);
 }
 
 /// clap's help or version text, where clap sends it (standard error for a
@@ -107,111 +113,6 @@ pub fn create(path: &Path, inputs: &[PathBuf]) -> Result<PendingFile> {
     PendingFile::create(path)
 }
 
-/// On SIGINT, SIGTERM, SIGHUP or SIGQUIT: give the terminal back, remove every pending
-/// file, say so in one line and exit with 128 + the signal's number (130 for
-/// Ctrl-C), as shells do.
-pub fn clean_up_on_signals() {
-    use signal_hook::consts::{SIGHUP, SIGINT, SIGQUIT, SIGTERM};
-    // SIGQUIT too: its default (a core dump) would leave the inspector's
-    // terminal raw, and pending files behind.
-    let Ok(mut signals) = signal_hook::iterator::Signals::new([SIGINT, SIGTERM, SIGHUP, SIGQUIT])
-    else {
-        return;
-    };
-    std::thread::spawn(move || {
-        if let Some(signal) = signals.forever().next() {
-            raytree::inspector::restore();
-            // Held until the exit: the command's thread, waiting on the
-            // helper, must not see it end and report that as its error.
-            let _helper = end_helper();
-            output::remove_pending();
-            let what = match signal {
-                SIGINT => "interrupted",
-                SIGTERM => "terminated (SIGTERM)",
-                SIGQUIT => "quit (SIGQUIT)",
-                _ => "hung up (SIGHUP)",
-            };
-            // Below the bar's line, when a bar may be drawn on it.
-            if BAR_SHOWN.load(Ordering::Relaxed) {
-                let _ = write_all(io::stderr().lock(), "error", b"\n");
-            }
-            last_word(&format!("{what}: no output written"));
-            std::process::exit(128 + signal);
-        }
-    });
-}
-
-/// The outside program running for the command, and the temporary folder it
-/// works in. The signal handler's exit skips every destructor, so without this
-/// a signal would leave the program running as an orphan (forever, on a
-/// program that loops) and its folder behind.
-struct Running {
-    /// `None` once it has ended and its output is being read.
-    child: Option<Child>,
-    /// Removed when dropped.
-    _folder: tempfile::TempDir,
-}
-
-static HELPER: Mutex<Option<Running>> = Mutex::new(None);
-
-fn helper() -> MutexGuard<'static, Option<Running>> {
-    HELPER.lock().unwrap_or_else(|e| e.into_inner())
-}
-
-/// Kills the helper, if one runs, waits for it and removes its folder;
-/// returns the lock, still held.
-fn end_helper() -> MutexGuard<'static, Option<Running>> {
-    let mut slot = helper();
-    // Dropping what was taken removes the folder.
-    if let Some(child) = slot.take().as_mut().and_then(|r| r.child.as_mut()) {
-        let _ = child.kill();
-        let _ = child.wait();
-    }
-    slot
-}
-
-/// An outside program (Ghostscript) that a command runs in a temporary
-/// folder: a signal kills it and removes the folder, as does dropping this
-/// (an error carried up with `?`). One at a time.
-pub struct Helper(());
-
-impl Helper {
-    /// Registers `child`, just spawned, working in `folder`.
-    pub fn start(child: Child, folder: tempfile::TempDir) -> Helper {
-        let mut slot = helper();
-        debug_assert!(slot.is_none(), "one helper at a time");
-        *slot = Some(Running {
-            child: Some(child),
-            _folder: folder,
-        });
-        Helper(())
-    }
-
-    /// The program's exit status, if it has ended (without waiting).
-    pub fn try_wait(&self) -> io::Result<Option<ExitStatus>> {
-        match helper().as_mut().and_then(|r| r.child.as_mut()) {
-            Some(child) => child.try_wait(),
-            None => Err(io::Error::other("the helper program is gone")),
-        }
-    }
-
-    /// Everything the program wrote, once it has ended ([`Helper::try_wait`]
-    /// said so); its folder stays until this is dropped.
-    pub fn output(&self) -> io::Result<Output> {
-        let child = helper().as_mut().and_then(|r| r.child.take());
-        match child {
-            Some(child) => child.wait_with_output(),
-            None => Err(io::Error::other("the helper program is gone")),
-        }
-    }
-}
-
-impl Drop for Helper {
-    fn drop(&mut self) {
-        drop(end_helper());
-    }
-}
-
 /// `given`, or `default` (a name in the current folder).
 pub fn name_or(given: &Option<PathBuf>, default: impl FnOnce() -> OsString) -> PathBuf {
     given.clone().unwrap_or_else(|| PathBuf::from(default()))
@@ -240,7 +141,7 @@ pub fn require_png(path: &Path, what: &str) -> Result<()> {
 /// The image format an output's name asks for (.png or .ppm); any other
 /// name is a usage error.
 pub fn image_format(path: &Path) -> Result<Format> {
-    image_file::format_of(path).map_err(|e| usage(format_args!("{e:#}")))
+    image::file::format_of(path).map_err(|e| usage(format_args!("{e:#}")))
 }
 
 /// Whether `path` ends in `.extension` (in any case).

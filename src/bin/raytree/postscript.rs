@@ -16,6 +16,7 @@ use raytree::io::input::read_text;
 use raytree::io::postscript::{self, SLIPS};
 
 use crate::output;
+use crate::signals;
 
 /// Where the course keeps the lecture, beside the repository.
 const LECTURE: &str = "shared/lecture-raytracing.md";
@@ -144,7 +145,7 @@ fn ghostscript(program: &str, deep: bool, timeout: Duration) -> Result<Vec<u8>> 
         })?;
     let stdin = child.stdin.take();
     // From here a signal, or an error, ends Ghostscript and removes the folder.
-    let gs = output::Helper::start(child, dir);
+    let gs = signals::Helper::start(child, dir);
     if let Some(mut stdin) = stdin {
         // A program that stops reading early is Ghostscript's error to report.
         let _ = stdin.write_all(program.as_bytes());

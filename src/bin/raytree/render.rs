@@ -1,24 +1,23 @@
 //! `raytree render`: every pixel of a scene, on all cores, to a PNG or PPM file.
 
+use std::collections::TryReserveError;
 use std::path::PathBuf;
 use std::time::Instant;
 
-use anyhow::{Context, Result};
+use anyhow::Result;
+use raytree::Image;
+use raytree::io::image;
 use raytree::geometry::structures::Structure;
-use raytree::io::image_file;
 use raytree::methods::Accel;
+use raytree::scene::Scene;
 use raytree::trace::progress::Progress;
 use raytree::trace::recorder::RayCounter;
 use raytree::trace::render;
 use raytree::trace::tracer::Tracer;
 use raytree::views::numbers::{num, thousands};
 
-use crate::args::SceneArgs;
+use crate::args::{SceneArgs, parse_threads, thread_pool, threads_word};
 use crate::output;
-
-/// Most worker threads: more only costs time on any machine of today (each
-/// thread's start-up and memory) and thousands stall it.
-const MAX_THREADS: usize = 256;
 
 #[derive(clap::Args)]
 pub struct Args {
@@ -51,7 +50,7 @@ pub struct Args {
 /// What a scene lacks that an image needs to show anything but the
 /// background or the ambient light: not an error (a teacher may start from
 /// an empty scene), but an image with no word would look like a bug.
-pub fn missing(scene: &raytree::scene::Scene) -> Option<&'static str> {
+pub fn missing(scene: &Scene) -> Option<&'static str> {
     match (scene.objects.is_empty(), scene.lights.is_empty()) {
         (true, true) => Some("has no objects and no lights: every pixel is the background"),
         (true, false) => Some("has no objects: every pixel is the background"),
@@ -60,10 +59,9 @@ pub fn missing(scene: &raytree::scene::Scene) -> Option<&'static str> {
     }
 }
 
+/// `raytree render` without `--aov` (which `main` sends to `aov.rs`): the
+/// image, and with `--stats` the counts of its rays and tests.
 pub fn run(args: &Args) -> Result<()> {
-    if let Some(name) = &args.aov {
-        return crate::aov::run(args, name);
-    }
     // The SPD's preprocessing: reading the file, then building what the rays need.
     let reading = Instant::now();
     let (scene, _) = args.scene.load()?;
@@ -80,41 +78,21 @@ pub fn run(args: &Args) -> Result<()> {
     );
     let s = &scene.settings;
     let no_memory = |_| anyhow::anyhow!("not enough memory for a {}×{} image", s.width, s.height);
-    let (image, rays) = if args.stats {
-        let building = Instant::now();
-        let tracer = pool.install(|| Tracer::new(&scene));
-        let build_seconds = building.elapsed().as_secs_f64();
-        let structure = tracer.accelerator().kind();
-        // What was built, in the structure's own numbers (a grid's cells per
-        // side, a tree's nodes and leaves); the BVH has none to show.
-        let built = tracer
-            .accelerator()
-            .structure()
-            .and_then(Structure::describe);
-        let tracing = Instant::now();
-        let (image, rays) = pool
-            .install(|| {
-                render::render_counting_with(
-                    &tracer,
-                    &Progress::reporting(&output::on_bar(&progress)),
-                )
-            })
-            .map_err(no_memory)?;
-        let times = Times {
-            reading: read_seconds,
-            building: build_seconds,
-            tracing: tracing.elapsed().as_secs_f64(),
-        };
-        (image, Some((rays, times, structure, built)))
+    let on_bar = output::on_bar(&progress);
+    let report = Progress::reporting(&on_bar);
+    let (image, counted) = if args.stats {
+        let (image, counted) =
+            render_counting(&pool, &scene, report, read_seconds).map_err(no_memory)?;
+        (image, Some(counted))
     } else {
         let image = pool
-            .install(|| render::render(&scene, &Progress::reporting(&output::on_bar(&progress))))
+            .install(|| render::render(&scene, &report))
             .map_err(no_memory)?;
         (image, None)
     };
     let rendering = started.elapsed().as_secs_f64();
     progress.finish_and_clear();
-    pending.commit(&image_file::encode(&image, format)?)?;
+    pending.commit(&image::file::encode(&image, format)?)?;
     if !args.quiet {
         // Each time named by what it covers: the scene's reading, then the
         // rendering (starting the threads, building the hierarchy, tracing);
@@ -130,9 +108,21 @@ pub fn run(args: &Args) -> Result<()> {
             seconds(rendering),
             threads_word(threads)
         ))?;
+        // After the image is written: a note, not a reason to stop.
+        note_missing(args, &scene)?;
     }
-    // After the image is written: a note, not a reason to stop.
-    if let Some(what) = missing(&scene).filter(|_| !args.quiet) {
+    if let Some(counted) = counted {
+        // The counts are what --stats asked for: standard output, as strip and
+        // forward print their figures; notes stay on standard error.
+        output::print(counted.text())?;
+    }
+    Ok(())
+}
+
+/// A note naming what the scene lacks for an image to show anything
+/// ([`missing`]), if it lacks it.
+fn note_missing(args: &Args, scene: &Scene) -> Result<()> {
+    if let Some(what) = missing(scene) {
         output::note(&format!(
             "note: {} {what}",
             args.scene
@@ -142,16 +132,63 @@ pub fn run(args: &Args) -> Result<()> {
                 .display()
         ))?;
     }
-    if let Some((r, times, structure, built)) = rays {
-        // The counts are what --stats asked for: standard output, as strip and
-        // forward print their figures; notes stay on standard error.
-        let mut text = stats(&r, &times, structure);
-        if let Some(built) = built {
+    Ok(())
+}
+
+/// What `--stats` counted: the rays and their tests, where the time went,
+/// and the structure the rays went through, in its own numbers.
+struct Counted {
+    rays: RayCounter,
+    times: Times,
+    structure: Accel,
+    /// What was built, in the structure's own numbers (a grid's cells per
+    /// side, a tree's nodes and leaves); the BVH's are in `raytree memory`.
+    built: Option<String>,
+}
+
+impl Counted {
+    /// What `--stats` prints: [`stats`], and what was built.
+    fn text(&self) -> String {
+        let mut text = stats(&self.rays, &self.times, self.structure);
+        if let Some(built) = &self.built {
             text.push_str(&format!("built: {built}\n"));
         }
-        output::print(text)?;
+        text
     }
-    Ok(())
+}
+
+/// The render with its rays counted on `pool`, the structure built first
+/// and timed apart from the tracing; the scene took `read_seconds` to read.
+fn render_counting(
+    pool: &rayon::ThreadPool,
+    scene: &Scene,
+    report: Progress,
+    read_seconds: f64,
+) -> Result<(Image, Counted), TryReserveError> {
+    let building = Instant::now();
+    let tracer = pool.install(|| Tracer::new(scene));
+    let build_seconds = building.elapsed().as_secs_f64();
+    let structure = tracer.accelerator().kind();
+    // What was built, in the structure's own numbers (a grid's cells per
+    // side, a tree's nodes and leaves); the BVH has none to show.
+    let built = tracer
+        .accelerator()
+        .structure()
+        .and_then(Structure::describe);
+    let tracing = Instant::now();
+    let (image, rays) = pool.install(|| render::render_counting_with(&tracer, &report))?;
+    let times = Times {
+        reading: read_seconds,
+        building: build_seconds,
+        tracing: tracing.elapsed().as_secs_f64(),
+    };
+    let counted = Counted {
+        rays,
+        times,
+        structure,
+        built,
+    };
+    Ok((image, counted))
 }
 
 /// Where a counted render's time went, in seconds, split as the SPD asks:
@@ -216,34 +253,4 @@ fn stats(r: &RayCounter, t: &Times, structure: Accel) -> String {
 /// Seconds to the millisecond.
 fn seconds(s: f64) -> String {
     format!("{s:.3}")
-}
-
-/// "1 thread", "2 threads".
-pub fn threads_word(threads: usize) -> String {
-    if threads == 1 {
-        "1 thread".to_owned()
-    } else {
-        format!("{threads} threads")
-    }
-}
-
-/// `--threads N`: 1 to [`MAX_THREADS`].
-pub fn parse_threads(s: &str) -> Result<usize, String> {
-    s.trim()
-        .parse::<usize>()
-        .ok()
-        .filter(|n| (1..=MAX_THREADS).contains(n))
-        .ok_or_else(|| format!("must be a whole number from 1 to {MAX_THREADS}"))
-}
-
-/// A pool of `threads` workers ([`parse_threads`] checked the number; one
-/// per core by default), and how many.
-pub fn thread_pool(threads: Option<usize>) -> Result<(rayon::ThreadPool, usize)> {
-    let threads =
-        threads.unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()));
-    let pool = rayon::ThreadPoolBuilder::new()
-        .num_threads(threads)
-        .build()
-        .context("cannot start worker threads")?;
-    Ok((pool, threads))
 }

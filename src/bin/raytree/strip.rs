@@ -9,9 +9,8 @@ use raytree::scene::{loader, nff};
 use raytree::trace::frames;
 use raytree::views::filmstrip::{self, Frame};
 
-use crate::args::{SceneArgs, usage};
+use crate::args::{SceneArgs, parse_threads, thread_pool, usage};
 use crate::output;
-use crate::render::{parse_threads, thread_pool};
 
 #[derive(clap::Args)]
 pub struct Args {

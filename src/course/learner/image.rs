@@ -9,8 +9,8 @@ use std::fmt::Write;
 use serde_json::json;
 
 use crate::course::learner::mistakes::image::{Explained, explain};
+use crate::io::image::diff::per_pixel;
 use crate::io::image::{Image, to_rgb8};
-use crate::io::image_diff::per_pixel;
 use crate::methods::Antialiasing;
 use crate::scene::settings::RenderSettings;
 

@@ -45,6 +45,8 @@ fn refused_at_once(code: i32, files: &[(&str, &[u8])], args: &[&str]) -> String 
     stderr.trim_end().to_owned()
 }
 
+/// Settings that could not finish: refused before any work, the flags' as a
+/// usage error (2), a scene file's as the file's (1).
 #[test]
 fn settings_that_could_not_finish_are_refused_up_front() {
     // Rays double a level where a glass surface reflects and refracts: 2^1000.
@@ -82,8 +84,12 @@ fn settings_that_could_not_finish_are_refused_up_front() {
         e.starts_with("error: --max-depth: 300 with cutoff 0"),
         "{e}"
     );
-    // Within the render's bound, beyond what a trace holds and is read back:
-    // the settings asked are too many for a trace, a usage error too.
+}
+
+/// Within the render's bound, beyond what a trace holds and is read back:
+/// the settings asked are too many for a trace, a usage error too.
+#[test]
+fn settings_too_many_for_a_trace_are_refused_up_front() {
     assert_eq!(
         refused_at_once(
             2,
@@ -138,7 +144,10 @@ fn settings_that_could_not_finish_are_refused_up_front() {
         e.starts_with("error: the ray may record up to 2097151 rays"),
         "{e}"
     );
-    // The deepest trace allowed without a cutoff is recorded and read back.
+}
+
+#[test]
+fn the_deepest_trace_without_a_cutoff_is_recorded_and_read_back() {
     let dir = tempfile::tempdir().unwrap();
     let deepest = ["--pixel", "416,209", "--max-depth", "20", "--cutoff", "0"];
     crate::commands::cli::succeeds(

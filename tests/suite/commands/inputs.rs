@@ -162,82 +162,86 @@ fn the_strict_format_has_no_holes() {
     }
 }
 
+/// Numbers outside the limits that keep every computed number finite, and a
+/// left-handed frame: each case's name, the scene's text, and the message's
+/// start after the file's name.
+const OUT_OF_LIMITS: &[(&str, &str, &str)] = &[
+    (
+        "far",
+        r#"{"objects": [{"sphere": {"center": [2e9, 0, 0]}}]}"#,
+        ": objects[0].sphere.center: every coordinate must be within ±1e9, got [2e9, 0, 0]",
+    ),
+    (
+        "bright",
+        r#"{"lights": [{"position": [0, 5, 0], "color": [1e7, 1e7, 1e7]}]}"#,
+        ": lights[0].color: a color's components must be from 0 to 1e6",
+    ),
+    (
+        "more-than-all",
+        r#"{"materials": {"m": {"reflective": 0.6, "transparent": 0.6}}}"#,
+        ": materials.m: reflective + transparent must be at most 1",
+    ),
+    (
+        "ior",
+        r#"{"materials": {"m": {"ior": 1e-5}}}"#,
+        ": materials.m.ior: a refractive index must be from 0.01 to 100, got 1e-5",
+    ),
+    (
+        "tiny-sphere",
+        r#"{"objects": [{"sphere": {"radius": 1e-12}}]}"#,
+        ": objects[0].sphere.radius: must be from 1e-9 to 1e9, got 1e-12",
+    ),
+    (
+        "far-transform",
+        r#"{"objects": [{"sphere": {}, "transform": [{"scale": [1e-9, 1e-9, 1e-9]}, {"translate": [1e9, 0, 0]}]}]}"#,
+        ": objects[0].transform: scales or moves too far",
+    ),
+    (
+        "obj-far",
+        r#"{"camera": {"fov": 0.0001}}"#,
+        ": camera.fov: must be from 0.001 to 179.999 degrees, got 0.0001",
+    ),
+    // A number is echoed as short as it reads, not as 300 digits (issue 29).
+    (
+        "fov-tiny",
+        r#"{"camera": {"fov": 1e-300}}"#,
+        ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e-300",
+    ),
+    (
+        "fov-huge",
+        r#"{"camera": {"fov": 1e300}}"#,
+        ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e300",
+    ),
+    (
+        "reflective-tiny",
+        r#"{"materials": {"m": {"reflective": -1e-300}}}"#,
+        ": materials.m.reflective: must be from 0 to 1, got -1e-300",
+    ),
+    (
+        "shininess-huge",
+        r#"{"materials": {"m": {"shininess": 1e300}}}"#,
+        ": materials.m.shininess: must be from 0 to 1e6, got 1e300",
+    ),
+    (
+        "cutoff-tiny",
+        r#"{"render": {"cutoff": -1e-300}}"#,
+        ": render.cutoff: must be a number from 0 up to (not including) 1, got -1e-300",
+    ),
+    (
+        "epsilon-tiny",
+        r#"{"render": {"offset": {"epsilon": -1e-300}}}"#,
+        ": render.offset: an epsilon must be a number > 0, got -1e-300",
+    ),
+    (
+        "left-handed",
+        r#"{"camera": {"u": [-1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 1}}"#,
+        ": camera.n: makes a left-handed frame (u × v = -n), which would mirror the image",
+    ),
+];
+
 #[test]
 fn numbers_outside_the_limits_and_left_handed_frames_are_refused() {
-    let cases = [
-        (
-            "far",
-            r#"{"objects": [{"sphere": {"center": [2e9, 0, 0]}}]}"#,
-            ": objects[0].sphere.center: every coordinate must be within ±1e9, got [2e9, 0, 0]",
-        ),
-        (
-            "bright",
-            r#"{"lights": [{"position": [0, 5, 0], "color": [1e7, 1e7, 1e7]}]}"#,
-            ": lights[0].color: a color's components must be from 0 to 1e6",
-        ),
-        (
-            "more-than-all",
-            r#"{"materials": {"m": {"reflective": 0.6, "transparent": 0.6}}}"#,
-            ": materials.m: reflective + transparent must be at most 1",
-        ),
-        (
-            "ior",
-            r#"{"materials": {"m": {"ior": 1e-5}}}"#,
-            ": materials.m.ior: a refractive index must be from 0.01 to 100, got 1e-5",
-        ),
-        (
-            "tiny-sphere",
-            r#"{"objects": [{"sphere": {"radius": 1e-12}}]}"#,
-            ": objects[0].sphere.radius: must be from 1e-9 to 1e9, got 1e-12",
-        ),
-        (
-            "far-transform",
-            r#"{"objects": [{"sphere": {}, "transform": [{"scale": [1e-9, 1e-9, 1e-9]}, {"translate": [1e9, 0, 0]}]}]}"#,
-            ": objects[0].transform: scales or moves too far",
-        ),
-        (
-            "obj-far",
-            r#"{"camera": {"fov": 0.0001}}"#,
-            ": camera.fov: must be from 0.001 to 179.999 degrees, got 0.0001",
-        ),
-        // A number is echoed as short as it reads, not as 300 digits (issue 29).
-        (
-            "fov-tiny",
-            r#"{"camera": {"fov": 1e-300}}"#,
-            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e-300",
-        ),
-        (
-            "fov-huge",
-            r#"{"camera": {"fov": 1e300}}"#,
-            ": camera.fov: must be from 0.001 to 179.999 degrees, got 1e300",
-        ),
-        (
-            "reflective-tiny",
-            r#"{"materials": {"m": {"reflective": -1e-300}}}"#,
-            ": materials.m.reflective: must be from 0 to 1, got -1e-300",
-        ),
-        (
-            "shininess-huge",
-            r#"{"materials": {"m": {"shininess": 1e300}}}"#,
-            ": materials.m.shininess: must be from 0 to 1e6, got 1e300",
-        ),
-        (
-            "cutoff-tiny",
-            r#"{"render": {"cutoff": -1e-300}}"#,
-            ": render.cutoff: must be a number from 0 up to (not including) 1, got -1e-300",
-        ),
-        (
-            "epsilon-tiny",
-            r#"{"render": {"offset": {"epsilon": -1e-300}}}"#,
-            ": render.offset: an epsilon must be a number > 0, got -1e-300",
-        ),
-        (
-            "left-handed",
-            r#"{"camera": {"u": [-1, 0, 0], "v": [0, 1, 0], "n": [0, 0, 1], "half_width": 1, "half_height": 1}}"#,
-            ": camera.n: makes a left-handed frame (u × v = -n), which would mirror the image",
-        ),
-    ];
-    for (name, text, expected) in cases {
+    for (name, text, expected) in OUT_OF_LIMITS {
         let e = scene_refused(name, text);
         assert!(e.starts_with(expected), "{name}: {e}");
     }

@@ -14,6 +14,7 @@ mod outputs;
 mod pipes;
 mod postscript;
 mod readers;
+mod scene_files;
 mod signals;
 mod strip;
 mod structures;

@@ -397,7 +397,7 @@ fn the_frame_is_taken_as_it_is_so_pictures_are_not_mirrored() {
 /// set, they are made again.
 #[test]
 fn the_spd_renders_in_docs_are_current() {
-    use raytree::io::{image, image_file};
+    use raytree::io::image;
     use raytree::scene::overrides::Protocol;
     if !tools::available("", &[Need::Spd], "the SPD scenes are read from it") {
         return;
@@ -417,12 +417,12 @@ fn the_spd_renders_in_docs_are_current() {
             std::fs::create_dir_all(&docs).unwrap();
             std::fs::write(
                 &path,
-                image_file::encode(&made, image_file::Format::Png).unwrap(),
+                image::file::encode(&made, image::file::Format::Png).unwrap(),
             )
             .unwrap();
             continue;
         }
-        let committed = image_file::read_rgb8(&path)
+        let committed = image::file::read_rgb8(&path)
             .unwrap_or_else(|e| panic!("{}: {e}; bless with RAYTREE_BLESS=1", path.display()))
             .into_raw();
         // One 8-bit level: the same arithmetic, but `powf` (Phong's exponent)

@@ -40,8 +40,8 @@ fn run_closed(args: &[&str], dir: &Path, closed: Closed) -> Output {
 }
 
 /// The files in `dir`, sorted, with their bytes.
-fn files_in(dir: &Path) -> Vec<(String, Vec<u8>)> {
-    let mut files: Vec<(String, Vec<u8>)> = std::fs::read_dir(dir)
+fn files_in(dir: &Path) -> Files {
+    let mut files: Files = std::fs::read_dir(dir)
         .unwrap()
         .map(|e| {
             let e = e.unwrap();
@@ -120,11 +120,41 @@ fn commands() -> Vec<(Vec<&'static str>, Vec<&'static str>)> {
     ]
 }
 
+/// A file's name and bytes.
+type Files = Vec<(String, Vec<u8>)>;
+
 #[test]
 fn a_closed_pipe_ends_every_command_quietly() {
     let lessons = Path::new(env!("CARGO_MANIFEST_DIR")).join("lessons");
     let lessons = lessons.to_str().unwrap();
-    // The two images `diff` compares, made once.
+    let inputs = images_to_diff();
+    let mut failures = Vec::new();
+    for (args, outputs) in commands() {
+        let args: Vec<&str> = args
+            .iter()
+            .map(|&a| if a == "LESSONS" { lessons } else { a })
+            .collect();
+        let line = format!("raytree {}", args.join(" "));
+        // diff's exit status is its answer: 1, these images differ.
+        let answer = if args[0] == "diff" { Some(1) } else { Some(0) };
+        let expected = run_open(&args, &inputs, &line, answer);
+        for closed in [Closed::Stdout, Closed::Both] {
+            failures.extend(closed_run_failures(
+                &args, &inputs, closed, &line, answer, &expected,
+            ));
+            for name in &outputs {
+                assert!(
+                    expected.iter().any(|(n, _)| n == name),
+                    "{line}: the open run wrote no {name}"
+                );
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The two images `diff` compares, made once: their names and bytes.
+fn images_to_diff() -> Files {
     let images = tempfile::tempdir().unwrap();
     for (name, depth) in [("one.png", "1"), ("two.png", "3")] {
         let made = Command::new(env!("CARGO_BIN_EXE_raytree"))
@@ -145,84 +175,89 @@ fn a_closed_pipe_ends_every_command_quietly() {
             .unwrap();
         assert!(made.status.success(), "{made:?}");
     }
-    let inputs = files_in(images.path());
-    let fresh = || {
-        let dir = tempfile::tempdir().unwrap();
-        for (name, bytes) in &inputs {
-            std::fs::write(dir.path().join(name), bytes).unwrap();
-        }
-        dir
-    };
+    files_in(images.path())
+}
+
+/// A fresh folder holding `inputs`.
+fn fresh(inputs: &Files) -> tempfile::TempDir {
+    let dir = tempfile::tempdir().unwrap();
+    for (name, bytes) in inputs {
+        std::fs::write(dir.path().join(name), bytes).unwrap();
+    }
+    dir
+}
+
+/// What a run of `args` (the command `line`) with nobody closing anything
+/// writes, in a fresh folder holding `inputs`: it exits with `answer` and
+/// prints something (else it tests nothing here).
+fn run_open(args: &[&str], inputs: &Files, line: &str, answer: Option<i32>) -> Files {
+    let open = fresh(inputs);
+    let whole = Command::new(env!("CARGO_BIN_EXE_raytree"))
+        .args(args)
+        .current_dir(open.path())
+        .stdin(Stdio::null())
+        .output()
+        .unwrap();
+    assert_eq!(
+        whole.status.code(),
+        answer,
+        "{line}: {}",
+        String::from_utf8_lossy(&whole.stderr)
+    );
+    assert!(
+        !whole.stdout.is_empty() || !whole.stderr.is_empty(),
+        "{line} prints nothing: it tests nothing here"
+    );
+    files_in(open.path())
+}
+
+/// What went wrong in a run of `args` with the streams of `closed` closed:
+/// an exit other than `answer`, a panic, or a file that is not one the open
+/// run wrote (`expected`), whole.
+fn closed_run_failures(
+    args: &[&str],
+    inputs: &Files,
+    closed: Closed,
+    line: &str,
+    answer: Option<i32>,
+    expected: &Files,
+) -> Vec<String> {
     let mut failures = Vec::new();
-    for (args, outputs) in commands() {
-        let args: Vec<&str> = args
-            .iter()
-            .map(|&a| if a == "LESSONS" { lessons } else { a })
-            .collect();
-        let line = format!("raytree {}", args.join(" "));
-        // What a run with nobody closing anything writes.
-        let open = fresh();
-        let whole = Command::new(env!("CARGO_BIN_EXE_raytree"))
-            .args(&args)
-            .current_dir(open.path())
-            .stdin(Stdio::null())
-            .output()
-            .unwrap();
-        // diff's exit status is its answer: 1, these images differ.
-        let answer = if args[0] == "diff" { Some(1) } else { Some(0) };
-        assert_eq!(
-            whole.status.code(),
-            answer,
-            "{line}: {}",
-            String::from_utf8_lossy(&whole.stderr)
-        );
-        assert!(
-            !whole.stdout.is_empty() || !whole.stderr.is_empty(),
-            "{line} prints nothing: it tests nothing here"
-        );
-        let expected = files_in(open.path());
-        for closed in [Closed::Stdout, Closed::Both] {
-            let dir = fresh();
-            let out = run_closed(&args, dir.path(), closed);
-            let stderr = String::from_utf8_lossy(&out.stderr);
-            if out.status.code() != answer || stderr.contains("panicked") {
-                failures.push(format!(
-                    "{line} ({closed:?} closed): exit {:?}, stderr {stderr:?}",
-                    out.status.code()
-                ));
-            }
-            // Whole or absent: each output is what the open run wrote, or missing;
-            // nothing else is left behind (no temporary file).
-            for (name, bytes) in files_in(dir.path()) {
-                let same = expected.iter().find(|(n, _)| *n == name);
-                let whole_file = match same {
-                    // The chart is drawn from test counts, which are exact;
-                    // still, any complete PNG of the right size will do. The
-                    // structures chart shows times, the date and the load,
-                    // which change from run to run.
-                    Some((_, want)) if name == "c.png" || name == "st.png" => {
-                        image::load_from_memory(&bytes).is_ok_and(|i| {
-                            image::load_from_memory(want).unwrap().width() == i.width()
-                        })
-                    }
-                    Some((_, want)) => *want == bytes,
-                    None => false,
-                };
-                if !whole_file {
-                    failures.push(format!(
-                        "{line} ({closed:?} closed): {name} is not a whole output"
-                    ));
-                }
-            }
-            for name in &outputs {
-                assert!(
-                    expected.iter().any(|(n, _)| n == name),
-                    "{line}: the open run wrote no {name}"
-                );
-            }
+    let dir = fresh(inputs);
+    let out = run_closed(args, dir.path(), closed);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    if out.status.code() != answer || stderr.contains("panicked") {
+        failures.push(format!(
+            "{line} ({closed:?} closed): exit {:?}, stderr {stderr:?}",
+            out.status.code()
+        ));
+    }
+    // Whole or absent: each output is what the open run wrote, or missing;
+    // nothing else is left behind (no temporary file).
+    for (name, bytes) in files_in(dir.path()) {
+        if !is_whole(&name, &bytes, expected) {
+            failures.push(format!(
+                "{line} ({closed:?} closed): {name} is not a whole output"
+            ));
         }
     }
-    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    failures
+}
+
+/// Whether file `name` holding `bytes` is one of the open run's outputs
+/// (`expected`), whole.
+fn is_whole(name: &str, bytes: &[u8], expected: &Files) -> bool {
+    let same = expected.iter().find(|(n, _)| *n == name);
+    match same {
+        // The chart is drawn from test counts, which are exact;
+        // still, any complete PNG of the right size will do. The
+        // structures chart shows times, the date and the load,
+        // which change from run to run.
+        Some((_, want)) if name == "c.png" || name == "st.png" => image::load_from_memory(bytes)
+            .is_ok_and(|i| image::load_from_memory(want).unwrap().width() == i.width()),
+        Some((_, want)) => *want == bytes,
+        None => false,
+    }
 }
 
 #[test]

@@ -1,8 +1,8 @@
 //! What every reader refuses the same way, beside each reader's own cases
-//! (`cli.rs` for OBJ meshes, `nff.rs`, `trace_files.rs`, `learner.rs`): a
-//! face OBJ's parser would drop or leave unchecked, a file that is not text
-//! (a byte-order mark, a NUL byte: refused from its first bytes, within a
-//! small memory), and a long word of the input quoted short.
+//! (`scene_files.rs` for OBJ meshes, `nff.rs`, `trace_files.rs`,
+//! `learner.rs`): a face OBJ's parser would drop or leave unchecked, a file
+//! that is not text (a byte-order mark, a NUL byte: refused from its first
+//! bytes, within a small memory), and a long word of the input quoted short.
 
 use std::path::Path;
 

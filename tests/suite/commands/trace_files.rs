@@ -36,9 +36,13 @@ fn node(v: &mut Value, i: usize) -> &mut Value {
     &mut v["samples"][0]["tree"]["nodes"][i]
 }
 
-#[test]
-fn every_broken_trace_is_one_line_and_exit_1() {
-    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+/// A broken trace: its name, its bytes, and what the refusal says.
+type Broken = (&'static str, Vec<u8>, &'static str);
+
+/// Traces whose tree is broken: no samples or nodes, a child or an index
+/// that is not there, a test or a visit that cannot be, a loop, an orphan.
+fn broken_trees() -> Vec<Broken> {
+    vec![
         (
             "no-samples",
             broken(|v| v["samples"] = json!([])),
@@ -106,6 +110,13 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             broken(|v| node(v, 0)["reflected"]["node"] = Value::Null),
             "samples[0].tree.nodes[1]: no node spawns it",
         ),
+    ]
+}
+
+/// Traces whose document is wrong around a sound tree: a name, a pixel or a
+/// setting the scene does not have, JSON of the wrong shape, an old version.
+fn broken_documents() -> Vec<Broken> {
+    vec![
         (
             "renamed-object",
             broken(|v| v["objects"][2]["name"] = json!("bowl")),
@@ -171,7 +182,12 @@ fn every_broken_trace_is_one_line_and_exit_1() {
             }),
             "a raytree-trace version 3 document; this raytree reads raytree-trace version",
         ),
-    ];
+    ]
+}
+
+#[test]
+fn every_broken_trace_is_one_line_and_exit_1() {
+    let cases = [broken_trees(), broken_documents()].concat();
     let scene = whitted_text();
     for (name, text, expected) in &cases {
         let files: [(&str, &[u8]); 2] = [("t.json", text), ("s.json", scene.as_bytes())];

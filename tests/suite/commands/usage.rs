@@ -29,152 +29,156 @@ fn usage_errors(cases: &[(&str, &[&str], &str)]) {
     }
 }
 
+/// Flags whose values are out of their range: a name, the arguments, a part
+/// of the message.
+const FLAGS_OUT_OF_RANGE: &[(&str, &[&str], &str)] = &[
+    (
+        "width-0",
+        &["render", "--width", "0"],
+        "'--width <W>': must be 1 to 32768, got 0",
+    ),
+    (
+        "width-negative",
+        &["render", "--width", "-1"],
+        "'--width <W>': must be 1 to 32768, got -1",
+    ),
+    (
+        "spp-negative",
+        &["render", "--spp", "-4"],
+        "'--spp <N>': must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got -4",
+    ),
+    (
+        "max-depth-huge",
+        &["render", "--max-depth", "99999999999"],
+        "'--max-depth <D>': must be 1 to 1000, got 99999999999",
+    ),
+    (
+        "diagram-depth-0",
+        &["diagram", "--pixel", "1,1", "--depth", "0"],
+        "'--depth <D>': must be 1 or more, got 0",
+    ),
+    (
+        "diagram-vectors-0",
+        &["diagram", "--pixel", "1,1", "--vectors", "0"],
+        "'--vectors <P>': must be 1 or more, got 0",
+    ),
+    (
+        "diff-tolerance-word",
+        &["diff", "a.png", "b.png", "--tolerance", "abc"],
+        "'--tolerance <LEVELS>': 'abc' is not a whole number of 8-bit levels (0 to 255)",
+    ),
+    (
+        "spp-3",
+        &["render", "--spp", "3"],
+        "'--spp <N>': must be a square number of samples",
+    ),
+    (
+        "pixels",
+        &["render", "--width", "32768", "--height", "32768"],
+        "more than the",
+    ),
+    (
+        "depth-with-cutoff",
+        &[
+            "trace",
+            "--pixel",
+            "1,1",
+            "--max-depth",
+            "64",
+            "--cutoff",
+            "0",
+        ],
+        "--max-depth: 64 with cutoff 0",
+    ),
+    (
+        "threads-0",
+        &["render", "--threads", "0"],
+        "'--threads <N>': must be a whole number from 1 to 256",
+    ),
+    (
+        "threads-forward",
+        &["forward", "--threads", "257"],
+        "'--threads <N>': must be a whole number from 1 to 256",
+    ),
+    (
+        "pupil-0",
+        &["forward", "--pupil", "0"],
+        "'--pupil <R>': must be from 1e-9 to 1e9, got 0",
+    ),
+    (
+        "pupil-huge",
+        &["forward", "--pupil", "1e300"],
+        "'--pupil <R>': must be from 1e-9 to 1e9, got 1e300",
+    ),
+    (
+        "photons-0",
+        &["forward", "--photons", "0"],
+        "'--photons <N>'",
+    ),
+    (
+        "vary-unknown",
+        &["strip", "--vary", "bogus=1,2"],
+        "--vary bogus=1: no render setting or scene field 'bogus': the settings are cutoff, height, max_depth, spp, width; the scene's fields are ambient_light,",
+    ),
+    (
+        "vary-empty",
+        &["strip", "--vary", "spp="],
+        "'--vary <PATH=VALUES>'",
+    ),
+    (
+        "pixel-outside",
+        &["trace", "--pixel", "700,1"],
+        "pixel 700,1 is outside the 640×480 image",
+    ),
+    (
+        "sample-outside",
+        &["trace", "--pixel", "1,1", "--spp", "4", "--sample", "5"],
+        "sample 5 does not exist: a pixel has 4 samples (1 to 4)",
+    ),
+    (
+        "diagram-pixel",
+        &["diagram", "--pixel", "9999,1", "-o", "d.png"],
+        "pixel 9999,1 is outside the 640×480 image",
+    ),
+    (
+        "inspect-pixel",
+        &["inspect", "--pixel", "9999,1"],
+        "--pixel 9999,1 is outside the 640×480 image",
+    ),
+    (
+        "aov-unknown",
+        &["render", "--aov", "colour"],
+        "--aov: unknown quantity 'colour'",
+    ),
+    (
+        "lobe-four",
+        &["lobe", "--shininess", "1,2,3,4"],
+        "--shininess: at most three exponents",
+    ),
+    (
+        "icosphere-too-big",
+        &[
+            "generate",
+            "icosphere",
+            "--triangles",
+            "20000000",
+            "-o",
+            "i.json",
+        ],
+        "--triangles 13107200 or fewer",
+    ),
+    (
+        "vectors-hit",
+        &["diagram", "--pixel", "1,1", "--vectors", "9", "-o", "v.png"],
+        "--vectors 9: no hit P9",
+    ),
+];
+
 /// A flag's value out of its range exits 2, as the same flag's parse error
 /// does: `--width -1` and `--width 0`, `--photons 0` and `--pupil 0`.
 #[test]
 fn a_flag_out_of_its_range_is_a_usage_error() {
-    usage_errors(&[
-        (
-            "width-0",
-            &["render", "--width", "0"],
-            "'--width <W>': must be 1 to 32768, got 0",
-        ),
-        (
-            "width-negative",
-            &["render", "--width", "-1"],
-            "'--width <W>': must be 1 to 32768, got -1",
-        ),
-        (
-            "spp-negative",
-            &["render", "--spp", "-4"],
-            "'--spp <N>': must be a square number of samples (1, 4, 9, … up to 1024) for an n×n grid, got -4",
-        ),
-        (
-            "max-depth-huge",
-            &["render", "--max-depth", "99999999999"],
-            "'--max-depth <D>': must be 1 to 1000, got 99999999999",
-        ),
-        (
-            "diagram-depth-0",
-            &["diagram", "--pixel", "1,1", "--depth", "0"],
-            "'--depth <D>': must be 1 or more, got 0",
-        ),
-        (
-            "diagram-vectors-0",
-            &["diagram", "--pixel", "1,1", "--vectors", "0"],
-            "'--vectors <P>': must be 1 or more, got 0",
-        ),
-        (
-            "diff-tolerance-word",
-            &["diff", "a.png", "b.png", "--tolerance", "abc"],
-            "'--tolerance <LEVELS>': 'abc' is not a whole number of 8-bit levels (0 to 255)",
-        ),
-        (
-            "spp-3",
-            &["render", "--spp", "3"],
-            "'--spp <N>': must be a square number of samples",
-        ),
-        (
-            "pixels",
-            &["render", "--width", "32768", "--height", "32768"],
-            "more than the",
-        ),
-        (
-            "depth-with-cutoff",
-            &[
-                "trace",
-                "--pixel",
-                "1,1",
-                "--max-depth",
-                "64",
-                "--cutoff",
-                "0",
-            ],
-            "--max-depth: 64 with cutoff 0",
-        ),
-        (
-            "threads-0",
-            &["render", "--threads", "0"],
-            "'--threads <N>': must be a whole number from 1 to 256",
-        ),
-        (
-            "threads-forward",
-            &["forward", "--threads", "257"],
-            "'--threads <N>': must be a whole number from 1 to 256",
-        ),
-        (
-            "pupil-0",
-            &["forward", "--pupil", "0"],
-            "'--pupil <R>': must be from 1e-9 to 1e9, got 0",
-        ),
-        (
-            "pupil-huge",
-            &["forward", "--pupil", "1e300"],
-            "'--pupil <R>': must be from 1e-9 to 1e9, got 1e300",
-        ),
-        (
-            "photons-0",
-            &["forward", "--photons", "0"],
-            "'--photons <N>'",
-        ),
-        (
-            "vary-unknown",
-            &["strip", "--vary", "bogus=1,2"],
-            "--vary bogus=1: no render setting or scene field 'bogus': the settings are cutoff, height, max_depth, spp, width; the scene's fields are ambient_light,",
-        ),
-        (
-            "vary-empty",
-            &["strip", "--vary", "spp="],
-            "'--vary <PATH=VALUES>'",
-        ),
-        (
-            "pixel-outside",
-            &["trace", "--pixel", "700,1"],
-            "pixel 700,1 is outside the 640×480 image",
-        ),
-        (
-            "sample-outside",
-            &["trace", "--pixel", "1,1", "--spp", "4", "--sample", "5"],
-            "sample 5 does not exist: a pixel has 4 samples (1 to 4)",
-        ),
-        (
-            "diagram-pixel",
-            &["diagram", "--pixel", "9999,1", "-o", "d.png"],
-            "pixel 9999,1 is outside the 640×480 image",
-        ),
-        (
-            "inspect-pixel",
-            &["inspect", "--pixel", "9999,1"],
-            "--pixel 9999,1 is outside the 640×480 image",
-        ),
-        (
-            "aov-unknown",
-            &["render", "--aov", "colour"],
-            "--aov: unknown quantity 'colour'",
-        ),
-        (
-            "lobe-four",
-            &["lobe", "--shininess", "1,2,3,4"],
-            "--shininess: at most three exponents",
-        ),
-        (
-            "icosphere-too-big",
-            &[
-                "generate",
-                "icosphere",
-                "--triangles",
-                "20000000",
-                "-o",
-                "i.json",
-            ],
-            "--triangles 13107200 or fewer",
-        ),
-        (
-            "vectors-hit",
-            &["diagram", "--pixel", "1,1", "--vectors", "9", "-o", "v.png"],
-            "--vectors 9: no hit P9",
-        ),
-    ]);
+    usage_errors(FLAGS_OUT_OF_RANGE);
 }
 
 /// A ray outside a scene's limits (±1e9) is refused naming --ray: traced, it
@@ -225,99 +229,103 @@ fn a_ray_beyond_the_scenes_limits_is_a_usage_error() {
     }
 }
 
+/// Output names of the wrong kind: a name, the arguments, a part of the
+/// message (which names the kind the command writes).
+const OUTPUTS_OF_THE_WRONG_KIND: &[(&str, &[&str], &str)] = &[
+    (
+        "render-txt",
+        &["render", "-o", "foo.txt"],
+        "cannot write foo.txt: the output must end in .png or .ppm",
+    ),
+    (
+        "aov-ppm",
+        &["render", "--aov", "depth", "-o", "d.ppm"],
+        "cannot write d.ppm: a per-pixel quantity is a .png",
+    ),
+    (
+        "convert-txt",
+        &["convert", "x.nff", "-o", "x.txt"],
+        "cannot write x.txt: a scene is written as a .json file",
+    ),
+    (
+        "convert-json",
+        &["convert", "x.json"],
+        "cannot convert x.json: raytree converts NFF files (.nff)",
+    ),
+    (
+        "trace-png",
+        &["trace", "--pixel", "1,1", "-o", "x.png"],
+        "cannot write x.png: a trace is written as .json (the JSON trace, or the learner trace with --learner) or .txt (the text)",
+    ),
+    (
+        "trace-json-as-text",
+        &["trace", "--pixel", "1,1", "--json", "-o", "x.txt"],
+        "cannot write x.txt: --json writes the JSON trace, a .json",
+    ),
+    (
+        "trace-learner-as-text",
+        &["trace", "--pixel", "1,1", "--learner", "-o", "x.txt"],
+        "cannot write x.txt: the learner trace is JSON, a .json",
+    ),
+    (
+        "trace-steps-as-json",
+        &["trace", "--pixel", "1,1", "--steps", "-o", "x.json"],
+        "cannot write x.json: --steps numbers the text trace",
+    ),
+    (
+        "diagram-jpg",
+        &["diagram", "--pixel", "1,1", "-o", "fig.jpg"],
+        "cannot write fig.jpg: a diagram is a .png or an .svg",
+    ),
+    (
+        "graph-svg",
+        &["diagram", "--pixel", "1,1", "--graph", "-o", "g.svg"],
+        "cannot write g.svg: the tree graph is drawn as PNG only",
+    ),
+    (
+        "strip-ppm",
+        &["strip", "--vary", "spp=1,4", "-o", "s.ppm"],
+        "cannot write s.ppm: a strip is a .png",
+    ),
+    (
+        "forward-ppm",
+        &["forward", "-o", "f.ppm"],
+        "cannot write f.ppm: a forward trace is a .png",
+    ),
+    (
+        "chart-csv-is-png",
+        &["chart", "-o", "c.png", "--csv", "c.png"],
+        "cannot write c.png: the CSV figures and the chart need two files",
+    ),
+    (
+        "generate-png",
+        &["generate", "spheres", "--count", "3", "-o", "x.png"],
+        "cannot write x.png: a generated scene is a .json file",
+    ),
+    // The figure of diff and check is a .png: the message says so, not
+    // ".png or .ppm" (a .ppm is refused as well).
+    (
+        "diff-dot",
+        &["diff", "a.png", "b.png", "-o", "."],
+        "cannot write .: a difference figure is a .png",
+    ),
+    (
+        "diff-ppm",
+        &["diff", "a.png", "b.png", "-o", "d.ppm"],
+        "cannot write d.ppm: a difference figure is a .png",
+    ),
+    (
+        "check-dot",
+        &["check", "s.json", "--image", "y.png", "-o", "."],
+        "cannot write .: a difference figure is a .png",
+    ),
+];
+
 /// An output name of the wrong kind is a usage error, before anything is
 /// read or traced; the message names the kind the command writes.
 #[test]
 fn an_output_name_of_the_wrong_kind_is_a_usage_error() {
-    usage_errors(&[
-        (
-            "render-txt",
-            &["render", "-o", "foo.txt"],
-            "cannot write foo.txt: the output must end in .png or .ppm",
-        ),
-        (
-            "aov-ppm",
-            &["render", "--aov", "depth", "-o", "d.ppm"],
-            "cannot write d.ppm: a per-pixel quantity is a .png",
-        ),
-        (
-            "convert-txt",
-            &["convert", "x.nff", "-o", "x.txt"],
-            "cannot write x.txt: a scene is written as a .json file",
-        ),
-        (
-            "convert-json",
-            &["convert", "x.json"],
-            "cannot convert x.json: raytree converts NFF files (.nff)",
-        ),
-        (
-            "trace-png",
-            &["trace", "--pixel", "1,1", "-o", "x.png"],
-            "cannot write x.png: a trace is written as .json (the JSON trace, or the learner trace with --learner) or .txt (the text)",
-        ),
-        (
-            "trace-json-as-text",
-            &["trace", "--pixel", "1,1", "--json", "-o", "x.txt"],
-            "cannot write x.txt: --json writes the JSON trace, a .json",
-        ),
-        (
-            "trace-learner-as-text",
-            &["trace", "--pixel", "1,1", "--learner", "-o", "x.txt"],
-            "cannot write x.txt: the learner trace is JSON, a .json",
-        ),
-        (
-            "trace-steps-as-json",
-            &["trace", "--pixel", "1,1", "--steps", "-o", "x.json"],
-            "cannot write x.json: --steps numbers the text trace",
-        ),
-        (
-            "diagram-jpg",
-            &["diagram", "--pixel", "1,1", "-o", "fig.jpg"],
-            "cannot write fig.jpg: a diagram is a .png or an .svg",
-        ),
-        (
-            "graph-svg",
-            &["diagram", "--pixel", "1,1", "--graph", "-o", "g.svg"],
-            "cannot write g.svg: the tree graph is drawn as PNG only",
-        ),
-        (
-            "strip-ppm",
-            &["strip", "--vary", "spp=1,4", "-o", "s.ppm"],
-            "cannot write s.ppm: a strip is a .png",
-        ),
-        (
-            "forward-ppm",
-            &["forward", "-o", "f.ppm"],
-            "cannot write f.ppm: a forward trace is a .png",
-        ),
-        (
-            "chart-csv-is-png",
-            &["chart", "-o", "c.png", "--csv", "c.png"],
-            "cannot write c.png: the CSV figures and the chart need two files",
-        ),
-        (
-            "generate-png",
-            &["generate", "spheres", "--count", "3", "-o", "x.png"],
-            "cannot write x.png: a generated scene is a .json file",
-        ),
-        // The figure of diff and check is a .png: the message says so, not
-        // ".png or .ppm" (a .ppm is refused as well).
-        (
-            "diff-dot",
-            &["diff", "a.png", "b.png", "-o", "."],
-            "cannot write .: a difference figure is a .png",
-        ),
-        (
-            "diff-ppm",
-            &["diff", "a.png", "b.png", "-o", "d.ppm"],
-            "cannot write d.ppm: a difference figure is a .png",
-        ),
-        (
-            "check-dot",
-            &["check", "s.json", "--image", "y.png", "-o", "."],
-            "cannot write .: a difference figure is a .png",
-        ),
-    ]);
+    usage_errors(OUTPUTS_OF_THE_WRONG_KIND);
     // A text trace is written to a .txt name, the JSON trace to a .json one.
     let dir = tempfile::tempdir().unwrap();
     crate::commands::cli::succeeds(&["trace", "--pixel", "1,1", "-o", "t.txt"], dir.path());
@@ -389,11 +397,9 @@ fn check_refuses_the_flags_that_would_change_nothing() {
     assert!(!help.contains("--spp") && !help.contains("--aa"), "{help}");
 }
 
-/// Flags that do not go together, and the lesson that is not there: usage
-/// errors, in the lesson's folder or out of it.
+/// Flags that do not go together: usage errors.
 #[test]
-fn flag_combinations_and_missing_lessons_are_usage_errors() {
-    let lessons = lessons();
+fn flags_that_do_not_go_together_are_usage_errors() {
     usage_errors(&[
         (
             "structures-accel",
@@ -453,6 +459,14 @@ fn flag_combinations_and_missing_lessons_are_usage_errors() {
             &["render", "--accel", "grid", "--tree-depth", "5"],
             "--tree-depth: sets the octree's or the k-d tree's depth, and the scene is traced with --accel grid; give --accel octree or --accel bsp beside it",
         ),
+    ]);
+}
+
+/// A pixel with a negative coordinate: a usage error naming the edge it
+/// counts from, whichever command is given it.
+#[test]
+fn a_negative_pixel_is_a_usage_error() {
+    usage_errors(&[
         (
             "trace-pixel-negative",
             &["trace", "--pixel", "-1,5"],
@@ -473,6 +487,15 @@ fn flag_combinations_and_missing_lessons_are_usage_errors() {
             &["inspect", "--pixel", "-2,0"],
             "x -2 is outside the image",
         ),
+    ]);
+}
+
+/// The lesson that is not there, or a lessons folder that is not one: usage
+/// errors, in the lesson's folder or out of it.
+#[test]
+fn a_missing_lesson_is_a_usage_error() {
+    let lessons = lessons();
+    usage_errors(&[
         (
             "lesson-99",
             &["lesson", "99", "--lessons", &lessons],

@@ -56,7 +56,8 @@ fn readme_image_is_the_builtin_scene_as_rendered_today() {
     if std::env::var_os("RAYTREE_BLESS").is_some() {
         std::fs::write(
             path,
-            raytree::io::image_file::encode(&image, raytree::io::image_file::Format::Png).unwrap(),
+            raytree::io::image::file::encode(&image, raytree::io::image::file::Format::Png)
+                .unwrap(),
         )
         .unwrap();
         return;

@@ -257,6 +257,62 @@ fn every_field_is_documented() {
         "/book/src/trace-format.md"
     ))
     .unwrap();
+    let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
+    for t in &sample_traces() {
+        collect(&serde_json::to_value(t).unwrap(), &mut keys, &mut tags);
+    }
+    let missing: Vec<_> = keys
+        .iter()
+        .filter(|k| !doc.contains(&format!("`{k}`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "fields missing from book/src/trace-format.md: {missing:?}"
+    );
+    let missing: Vec<_> = tags
+        .iter()
+        .filter(|v| !doc.contains(&format!("`\"{v}\"`")))
+        .collect();
+    assert!(
+        missing.is_empty(),
+        "values missing from book/src/trace-format.md: {missing:?}"
+    );
+    for tag in TAGS_SHOWN {
+        assert!(tags.contains(tag), "the sample traces should show {tag}");
+    }
+}
+
+/// The tag values the sample traces must show between them: the tests'
+/// methods, what became of each root, what t counts, and why a ray stops.
+const TAGS_SHOWN: [&str; 23] = [
+    "quadratic",
+    "plane",
+    "slabs",
+    "crossing",
+    "parallel",
+    "barycentric",
+    "face",
+    "cone_quadratic",
+    "onto_cone",
+    "chosen",
+    "farther",
+    "behind",
+    "image_plane",
+    "direction",
+    "distance",
+    "stable_quadratic",
+    "plane_equation",
+    "watertight",
+    "crossing_number",
+    "faces_away",
+    "max_depth",
+    "total_internal_reflection",
+    "weight_cutoff",
+];
+
+/// Traces that between them hold every field and tag: pixels and a ray of
+/// the Whitted scene (one at max depth 2), and every kind of test.
+fn sample_traces() -> Vec<TraceDocument> {
     let scene = raytree::scene::loader::whitted();
     let src = source("whitted.json");
     let mut traces: Vec<TraceDocument> = [(8, 8), (440, 376), (168, 296), (264, 200), (416, 209)]
@@ -274,7 +330,14 @@ fn every_field_is_documented() {
     let mut shallow = scene.clone();
     shallow.settings.max_depth = 2;
     traces.push(raytree::tree::record::pixel(&shallow, src.clone(), 416, 209, None).unwrap());
-    // Transformed spheres, a mesh, a cone, a box, a triangle and a polygon: every kind of test.
+    traces.extend(shape_traces(&src));
+    traces
+}
+
+/// Transformed spheres, a mesh, a cone, a box, a triangle and a polygon:
+/// every kind of test.
+fn shape_traces(src: &SceneSource) -> Vec<TraceDocument> {
+    let mut traces = Vec::new();
     for (name, x, y) in [
         ("ellipsoids.json", 320, 240),
         ("gaspra.json", 320, 240),
@@ -295,53 +358,7 @@ fn every_field_is_documented() {
     for (x, y) in [(4, 4), (5, 3), (2, 6), (1, 5)] {
         traces.push(raytree::tree::record::pixel(&shapes, src.clone(), x, y, None).unwrap());
     }
-    let (mut keys, mut tags) = (BTreeSet::new(), BTreeSet::new());
-    for t in &traces {
-        collect(&serde_json::to_value(t).unwrap(), &mut keys, &mut tags);
-    }
-    let missing: Vec<_> = keys
-        .iter()
-        .filter(|k| !doc.contains(&format!("`{k}`")))
-        .collect();
-    assert!(
-        missing.is_empty(),
-        "fields missing from book/src/trace-format.md: {missing:?}"
-    );
-    let missing: Vec<_> = tags
-        .iter()
-        .filter(|v| !doc.contains(&format!("`\"{v}\"`")))
-        .collect();
-    assert!(
-        missing.is_empty(),
-        "values missing from book/src/trace-format.md: {missing:?}"
-    );
-    for tag in [
-        "quadratic",
-        "plane",
-        "slabs",
-        "crossing",
-        "parallel",
-        "barycentric",
-        "face",
-        "cone_quadratic",
-        "onto_cone",
-        "chosen",
-        "farther",
-        "behind",
-        "image_plane",
-        "direction",
-        "distance",
-        "stable_quadratic",
-        "plane_equation",
-        "watertight",
-        "crossing_number",
-        "faces_away",
-        "max_depth",
-        "total_internal_reflection",
-        "weight_cutoff",
-    ] {
-        assert!(tags.contains(tag), "the sample traces should show {tag}");
-    }
+    traces
 }
 
 /// Collects object keys, and the string values of the enum-like fields.

@@ -10,7 +10,7 @@
 use serde::{Serialize, Serializer};
 
 use crate::io::image::Image;
-use crate::io::image_diff::per_pixel;
+use crate::io::image::diff::per_pixel;
 
 /// A mistake in writing the whole image.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

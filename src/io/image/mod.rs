@@ -1,5 +1,9 @@
 //! An image in linear RGB, and the one conversion from linear RGB to 8-bit sRGB
-//! that every written image, swatch and figure goes through.
+//! that every written image, swatch and figure goes through; its files and
+//! the difference between two images beside it.
+
+pub mod file; // PNG and PPM
+pub mod diff; // how far apart two images are
 
 use glam::DVec3;
 

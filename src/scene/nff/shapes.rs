@@ -13,14 +13,14 @@
 //! [`plane_normal`]'s, which the scene JSON's polygons share).
 
 use glam::DVec3;
-use serde_json::{Value, json};
 
 use crate::geometry::cone::cone_object;
 use crate::geometry::polygon::Polygon;
 use crate::geometry::polygon_plane::{PlaneError, plane_normal};
+use crate::scene::format::{ConeFile, ObjectFile, PolygonFile, SphereFile};
 use crate::scene::limits;
-use crate::scene::nff::{Line, MAX_POLYGON_VERTICES, Reader};
-use crate::scene::nff_json::xyz;
+use crate::scene::nff::MAX_POLYGON_VERTICES;
+use crate::scene::nff::reader::{Line, Reader};
 use crate::scene::quote::quote;
 use crate::scene::scene_error::SceneError;
 
@@ -32,7 +32,8 @@ fn distance(x: f64) -> String {
 }
 
 impl Reader<'_> {
-    pub(super) fn sphere(&self, line: &Line) -> Result<Value, SceneError> {
+    /// `s X Y Z R`.
+    pub(super) fn sphere(&self, line: &Line) -> Result<ObjectFile, SceneError> {
         let [_, _, _, r] = self.numbers(line)?;
         let center = self.point(line, 1, "a sphere's center")?;
         let column = line.words[4].0;
@@ -41,16 +42,20 @@ impl Reader<'_> {
         }
         let r = limits::length(r)
             .map_err(|e| self.error(line.number, column, format!("a sphere's radius {e}")))?;
-        Ok(json!({
-            "name": format!("sphere at line {}", line.number),
-            "sphere": { "center": xyz(center), "radius": r },
-        }))
+        Ok(ObjectFile {
+            name: Some(format!("sphere at line {}", line.number)),
+            sphere: Some(SphereFile {
+                center: Some(center),
+                radius: Some(r),
+            }),
+            ..ObjectFile::default()
+        })
     }
 
     /// `c` and the base `X Y Z R` and the apex `X Y Z R`: eight numbers on its
     /// own line (as the SPD's generators write it) or on the two lines after
     /// it (as NFF's description does).
-    pub(super) fn cone(&mut self, line: &Line) -> Result<Value, SceneError> {
+    pub(super) fn cone(&mut self, line: &Line) -> Result<ObjectFile, SceneError> {
         // Each end's center, radius, and where its radius is (line, column).
         let end = |words: &Line, first: usize, which: &str| {
             let center = self.point(words, first, &format!("the cone's {which}"))?;
@@ -117,15 +122,16 @@ impl Reader<'_> {
         if let Err(e) = cone_object(name.clone(), base, base_radius, apex, apex_radius, 0) {
             return refuse(format!("a cone (c): {e}"));
         }
-        Ok(json!({
-            "name": name,
-            "cone": {
-                "base": xyz(base),
-                "base_radius": base_radius,
-                "apex": xyz(apex),
-                "apex_radius": apex_radius,
-            },
-        }))
+        Ok(ObjectFile {
+            name: Some(name),
+            cone: Some(ConeFile {
+                base,
+                base_radius,
+                apex,
+                apex_radius,
+            }),
+            ..ObjectFile::default()
+        })
     }
 
     /// `p N` then N lines `X Y Z`, or `pp N` then N lines `X Y Z NX NY NZ`.
@@ -134,12 +140,40 @@ impl Reader<'_> {
         line: &Line,
         patch: bool,
         transparent: bool,
-    ) -> Result<Value, SceneError> {
+    ) -> Result<ObjectFile, SceneError> {
+        let count = self.vertex_count(line, patch)?;
+        let what = if patch {
+            "polygonal patch (pp)"
+        } else {
+            "polygon (p)"
+        };
+        let outline = self.outline(line, count, patch, what)?;
+        plane_normal(&outline.vertices)
+            .map_err(|e| self.plane_error(e, &outline.at, what, line.number))?;
+        let normals: Option<Vec<DVec3>> = patch.then_some(outline.normals);
+        let one_sided = !patch && !transparent;
+        let column = line.words[1].0;
+        Polygon::new(outline.vertices.clone(), normals.clone(), one_sided)
+            .map_err(|e| self.error(line.number, column, format!("a polygon: {e}")))?;
+        let kind = if patch { "patch" } else { "polygon" };
+        Ok(ObjectFile {
+            name: Some(format!("{kind} at line {}", line.number)),
+            polygon: Some(PolygonFile {
+                vertices: outline.vertices,
+                normals,
+                one_sided: one_sided.then_some(true),
+            }),
+            ..ObjectFile::default()
+        })
+    }
+
+    /// The vertex count after `p` or `pp` (`patch`) on `line`: 3 to
+    /// [`MAX_POLYGON_VERTICES`].
+    fn vertex_count(&self, line: &Line, patch: bool) -> Result<usize, SceneError> {
         self.count(line, 1)?;
         let keyword = if patch { "pp" } else { "p" };
         let (column, word) = line.words[1];
-        let count = word
-            .parse::<usize>()
+        word.parse::<usize>()
             .ok()
             .filter(|n| (3..=MAX_POLYGON_VERTICES).contains(n))
             .ok_or_else(|| {
@@ -151,17 +185,24 @@ impl Reader<'_> {
                         quote(word, "'")
                     ),
                 )
-            })?;
-        let what = if patch {
-            "polygonal patch (pp)"
-        } else {
-            "polygon (p)"
-        };
+            })
+    }
+
+    /// The `count` vertex lines after `line`, the polygon or patch (`patch`)
+    /// named `what`: each a point, and for a patch a normal that is not zero.
+    fn outline(
+        &mut self,
+        line: &Line,
+        count: usize,
+        patch: bool,
+        what: &str,
+    ) -> Result<Outline, SceneError> {
         let per_line = if patch { 6 } else { 3 };
-        let mut vertices = Vec::with_capacity(count);
-        let mut normals = Vec::with_capacity(if patch { count } else { 0 });
-        // Where each vertex is: its line and its first column.
-        let mut at = Vec::with_capacity(count);
+        let mut outline = Outline {
+            vertices: Vec::with_capacity(count),
+            normals: Vec::with_capacity(if patch { count } else { 0 }),
+            at: Vec::with_capacity(count),
+        };
         for k in 1..=count {
             let v = self.next_for(what, line.number)?;
             let vertex = format!(
@@ -169,7 +210,7 @@ impl Reader<'_> {
                 line.number
             );
             self.expect_numbers(&v, per_line, &vertex)?;
-            vertices.push(self.point(&v, 0, "a vertex")?);
+            outline.vertices.push(self.point(&v, 0, "a vertex")?);
             if patch {
                 let n = self.point(&v, 3, "a normal")?;
                 limits::direction(n).map_err(|e| {
@@ -179,17 +220,29 @@ impl Reader<'_> {
                         format!("the normal of {vertex} {e}"),
                     )
                 })?;
-                normals.push(n);
+                outline.normals.push(n);
             }
-            at.push((v.number, v.words[0].0));
+            outline.at.push((v.number, v.words[0].0));
         }
-        plane_normal(&vertices).map_err(|e| match e {
+        Ok(outline)
+    }
+
+    /// Why the outline's vertices give the polygon named `what`, begun on
+    /// line `from`, no plane NFF can use, at the vertex at fault (`at`: each
+    /// vertex's line and column).
+    fn plane_error(
+        &self,
+        e: PlaneError,
+        at: &[(usize, usize)],
+        what: &str,
+        from: usize,
+    ) -> SceneError {
+        match e {
             PlaneError::Collinear => self.error(
                 at[2].0,
                 at[2].1,
                 format!(
-                    "vertices 1 to 3 of the {what} on line {} lie on one line: they give it no plane (NFF takes the plane from them)",
-                    line.number
+                    "vertices 1 to 3 of the {what} on line {from} lie on one line: they give it no plane (NFF takes the plane from them)"
                 ),
             ),
             PlaneError::OffPlane {
@@ -200,9 +253,8 @@ impl Reader<'_> {
                 at[vertex].0,
                 at[vertex].1,
                 format!(
-                    "vertex {} of the {what} on line {} lies {} off the plane of vertices 1 to 3 (allowed: {})",
+                    "vertex {} of the {what} on line {from} lies {} off the plane of vertices 1 to 3 (allowed: {})",
                     vertex + 1,
-                    line.number,
                     distance(off),
                     distance(allowed)
                 ),
@@ -211,30 +263,19 @@ impl Reader<'_> {
                 at[1].0,
                 at[1].1,
                 format!(
-                    "the {what} on line {} has a reflex first corner, at vertex 2: NFF takes the normal from the first two edges, which must make a convex angle, and these turn it away from the outline's own winding (start the outline at a convex corner)",
-                    line.number
+                    "the {what} on line {from} has a reflex first corner, at vertex 2: NFF takes the normal from the first two edges, which must make a convex angle, and these turn it away from the outline's own winding (start the outline at a convex corner)"
                 ),
             ),
-        })?;
-        let normals: Option<Vec<DVec3>> = patch.then_some(normals);
-        let one_sided = !patch && !transparent;
-        Polygon::new(vertices.clone(), normals.clone(), one_sided)
-            .map_err(|e| self.error(line.number, column, format!("a polygon: {e}")))?;
-        let kind = if patch { "patch" } else { "polygon" };
-        let mut polygon = json!({
-            "vertices": vertices.iter().map(|&v| xyz(v)).collect::<Vec<_>>(),
-        });
-        if let Some(normals) = normals {
-            polygon["normals"] = json!(normals.iter().map(|&n| xyz(n)).collect::<Vec<_>>());
         }
-        if one_sided {
-            polygon["one_sided"] = json!(true);
-        }
-        Ok(json!({
-            "name": format!("{kind} at line {}", line.number),
-            "polygon": polygon,
-        }))
     }
+}
+
+/// A polygon's vertices as read, its normals (a patch's), and where each
+/// vertex is: its line and its first column.
+struct Outline {
+    vertices: Vec<DVec3>,
+    normals: Vec<DVec3>,
+    at: Vec<(usize, usize)>,
 }
 
 /// The refusal of a negative radius, which NFF gives an object seen only
