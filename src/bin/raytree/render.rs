@@ -6,8 +6,8 @@ use std::time::Instant;
 
 use anyhow::Result;
 use raytree::Image;
-use raytree::io::image;
 use raytree::geometry::structures::Structure;
+use raytree::io::image;
 use raytree::methods::Accel;
 use raytree::scene::Scene;
 use raytree::trace::progress::Progress;
