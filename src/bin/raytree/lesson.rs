@@ -26,7 +26,17 @@ pub struct Args {
     text: bool,
 }
 
-pub fn run(args: &Args) -> Result<()> {
+/// How the binary reads a spec's command lines (the words after `raytree`),
+/// handed in by `main.rs`, whose grammar holds every command, this one too:
+/// so this file never names the crate's root and no import runs in a circle.
+pub struct SpecCommands {
+    /// Whether the words parse as the command line a learner would type.
+    pub check: fn(&[String]) -> Result<(), String>,
+    /// The trace document a `raytree trace …` run records, its paths relative to the folder given.
+    pub trace: fn(&[String], &Path) -> Result<TraceDocument>,
+}
+
+pub fn run(args: &Args, commands: &SpecCommands) -> Result<()> {
     let entries = lessons_in(&args.lessons, "lesson")?;
     let text = match args.number {
         None => {
@@ -38,7 +48,7 @@ pub fn run(args: &Args) -> Result<()> {
         Some(n) => {
             held(&args.lessons, &entries, n)?;
             let loaded = lesson::load(&args.lessons, n).map_err(anyhow::Error::msg)?;
-            makeable(&loaded.entry, &args.lessons)?;
+            makeable(&loaded.entry, &args.lessons, commands)?;
             let walk = lesson::step_through(&loaded).map_err(anyhow::Error::msg)?;
             if !args.text && output::stdout_is_terminal() {
                 return guided(loaded);
@@ -103,7 +113,7 @@ pub fn held(dir: &Path, entries: &[lesson::Entry], n: u32) -> Result<()> {
 /// trace` would, typed in the folder holding `lessons` (the repository,
 /// for its `lessons/`); the other commands run, and the questions are made,
 /// only with the book.
-fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
+fn makeable(entry: &lesson::Entry, lessons: &Path, read: &SpecCommands) -> Result<()> {
     // `--lessons .` or `..` has no parent to name: its `..` is.
     let root = match (lessons.file_name(), lessons.parent()) {
         (Some(_), Some(parent)) => parent.to_owned(),
@@ -123,7 +133,7 @@ fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
                 .map(|(n, i)| ("image", n, i.line, &i.command)),
         );
     for (what, name, line, command) in commands {
-        crate::parse_words(&command.args).map_err(|e| {
+        (read.check)(&command.args).map_err(|e| {
             anyhow!(
                 "{}: line {line}: {what} {name}: `{}`: {e}",
                 spec.display(),
@@ -138,7 +148,7 @@ fn makeable(entry: &lesson::Entry, lessons: &Path) -> Result<()> {
             continue;
         }
         if !traces.contains_key(number.run.as_str()) {
-            let doc = crate::trace::document(&run.command.args, &root).map_err(|e| {
+            let doc = (read.trace)(&run.command.args, &root).map_err(|e| {
                 anyhow!(
                     "{}: line {}: run {}: `{}`: {e:#}",
                     spec.display(),

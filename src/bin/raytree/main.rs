@@ -33,6 +33,7 @@ use std::process::ExitCode;
 
 use clap::{CommandFactory, FromArgMatches, Parser, Subcommand};
 use raytree::scene::strict::printable;
+use raytree::tree::document::TraceDocument;
 
 /// A Whitted-style ray tracer that shows its work.
 #[derive(Parser)]
@@ -100,7 +101,7 @@ fn main() -> ExitCode {
         Command::Strip(args) => strip::run(&args),
         Command::Forward(args) => forward::run(&args),
         Command::Lobe(args) => lobe::run(&args),
-        Command::Lesson(args) => lesson::run(&args),
+        Command::Lesson(args) => lesson::run(&args, &SPEC_COMMANDS),
         // Its exit status is its answer (1: the images differ), so its
         // errors are 2, as cmp's and diff's are.
         Command::Diff(args) => {
@@ -238,6 +239,21 @@ fn parse_words(args: &[String]) -> Result<Option<Command>, String> {
         }
         Err(e) => Err(one_line(&e)),
     }
+}
+
+/// A spec's command lines read by this grammar, for `raytree lesson`.
+const SPEC_COMMANDS: lesson::SpecCommands = lesson::SpecCommands {
+    check: |words| parse_words(words).map(|_| ()),
+    trace: spec_trace,
+};
+
+/// The trace document a spec's `raytree trace …` run records, its paths
+/// relative to `root`.
+fn spec_trace(words: &[String], root: &std::path::Path) -> anyhow::Result<TraceDocument> {
+    let Some(Command::Trace(args)) = parse_words(words).map_err(anyhow::Error::msg)? else {
+        return Err(anyhow::anyhow!("not a raytree trace"));
+    };
+    trace::document(args, root)
 }
 
 /// The subcommands named first on the command line, e.g. `raytree generate

@@ -58,18 +58,13 @@ pub fn run(args: &Args) -> Result<()> {
     }
 }
 
-/// The trace a spec's run (`raytree trace ARGS…`, the words after
-/// `raytree`) prints, recorded here as the command would record it typed
-/// in `root`, the repository its paths are relative to.
+/// The trace a spec's run (`raytree trace ARGS…`, read by the binary's
+/// grammar into `args`) prints, recorded here as the command would record it
+/// typed in `root`, the repository its paths are relative to.
 pub fn document(
-    args: &[String],
+    mut args: Args,
     root: &std::path::Path,
 ) -> Result<raytree::tree::document::TraceDocument> {
-    let Some(crate::Command::Trace(mut args)) =
-        crate::parse_words(args).map_err(anyhow::Error::msg)?
-    else {
-        return Err(anyhow::anyhow!("not a raytree trace"));
-    };
     args.scene.scene = args.scene.scene.map(|p| root.join(p));
     let (scene, source) = args.scene.load()?;
     args.target.record(&scene, source)
