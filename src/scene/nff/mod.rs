@@ -62,9 +62,12 @@ use crate::scene::scene_error::SceneError;
 /// beyond this is refused before any vertex is read.
 pub const MAX_POLYGON_VERTICES: usize = 65_536;
 
-/// Most words (keywords and numbers) an NFF file may hold, some 800,000
-/// spheres (the SPD's scenes hold under 300,000): each object is a JSON value
-/// of some hundred bytes before the scene loads, so memory stays bounded.
+/// Most words (keywords and numbers) one NFF file may hold: about 4.2
+/// million, some 800,000 spheres or 300,000 triangles (the SPD's scenes hold
+/// under 300,000 words). Each object becomes a typed entry, then a line of
+/// scene JSON of some hundred bytes, before the scene loads, so this bounds
+/// the memory a file can take to a few hundred megabytes; the words are
+/// counted before anything is built, and a file past the limit is refused.
 pub const MAX_WORDS: usize = 1 << 22;
 
 /// Whether `file` names an NFF file (by its extension, in any case).
